@@ -1,0 +1,63 @@
+// The physics view of one entity: plain data, decoded once from a plist and
+// compared field by field afterwards to find what a frame changed.
+#pragma once
+#include <cstdint>
+
+#include "number.hpp"
+
+namespace ds {
+
+// The seed's skip symbols (#:skip-pipelines), one bit each.
+enum Skip : uint16_t {
+    kSkipAcceleration = 1u << 0,
+    kSkipGravity = 1u << 1,
+    kSkipVelocityX = 1u << 2,
+    kSkipVelocityY = 1u << 3,
+    kSkipTileX = 1u << 4,
+    kSkipTileY = 1u << 5,
+    kSkipOnSolid = 1u << 6,
+    kSkipEntityCollisions = 1u << 7,
+    kSkipTweens = 1u << 8,
+};
+
+// Returns the bit for a skip symbol's name, or 0 for a name physics does not know.
+uint16_t skip_bit(const char* name);
+// The symbol name of one skip bit (for messages and stats).
+const char* skip_name(uint16_t bit);
+
+// Fields a step may write; a frame reports the changed ones as a mask of these.
+enum Field : uint32_t {
+    kFieldX = 1u << 0,
+    kFieldY = 1u << 1,
+    kFieldVx = 1u << 2,
+    kFieldVy = 1u << 3,
+    kFieldAy = 1u << 4,
+    kFieldOnGround = 1u << 5,
+    kFieldWidth = 1u << 6,   // only tweens write sizes and group offsets
+    kFieldHeight = 1u << 7,
+    kFieldLocalX = 1u << 8,
+    kFieldLocalY = 1u << 9,
+};
+
+struct Body {
+    Num x, y, w, h;          // top-left corner and size; the box is [x, x+w) × [y, y+h)
+    Num vx, vy, ay;          // px/frame, and the one-shot vertical acceleration
+    Num local_x, local_y;    // #:group-local-x / -y
+    bool gravity = false;    // #:gravity?
+    bool on_ground = false;  // #:on-ground?
+    bool solid = false;      // #:solid?
+    bool immovable = false;  // #:immovable?
+    bool group_origin = false;
+    uint16_t skip = 0;       // Skip bits
+    // Identity tags assigned by the caller: equal #:id (or #:group-id) values
+    // share a tag; 0 means the key is absent (or #f for the group).
+    int64_t id = 0;
+    int64_t group = 0;
+
+    bool skips(uint16_t bit) const { return (skip & bit) != 0; }
+};
+
+// Which Fields differ between two states of one body (value or exactness).
+uint32_t changed_fields(const Body& before, const Body& after);
+
+}  // namespace ds

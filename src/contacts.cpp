@@ -1,0 +1,91 @@
+#include "contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ds {
+
+namespace {
+
+// One axis of a body, so both push directions share one routine.
+struct Span1 {
+    Num& pos;
+    Num& vel;
+    Num size;
+    // Twice the centre: keeps centre comparisons exact for integer boxes.
+    double centre2() const { return 2 * pos.v + size.v; }
+};
+
+Span1 along_x(Body& b) { return {b.x, b.vx, b.w}; }
+Span1 along_y(Body& b) { return {b.y, b.vy, b.h}; }
+
+double overlap(Num p1, Num s1, Num p2, Num s2) {
+    return std::min(p1.v + s1.v, p2.v + s2.v) - std::max(p1.v, p2.v);
+}
+
+// A movable body against an immovable one. Landing wins while the mover's
+// centre is still above the solid's, so a narrow side overlap on a platform
+// edge does not shove it sideways; otherwise the shallower axis.
+void push_off_immovable(Body& m, const Body& s, double ox, double oy) {
+    if (2 * m.y.v + m.h.v < 2 * s.y.v + s.h.v) {
+        m.y = s.y - m.h;
+        m.vy = Num::integer(0);
+    } else if (ox < oy) {
+        m.x = (2 * m.x.v + m.w.v < 2 * s.x.v + s.w.v) ? s.x - m.w : s.x + s.w;
+        m.vx = Num::integer(0);
+    } else {
+        m.y = s.y + s.h;
+        m.vy = Num::integer(0);
+    }
+}
+
+// Two movable bodies share the overlap along one axis. `a` is the earlier in
+// list order: it moves negative on a tie and takes the larger integer half.
+void push_apart(Span1 a, Span1 b, double o) {
+    const bool exact = a.pos.exact && a.size.exact && b.pos.exact && b.size.exact;
+    const double a_share = exact ? std::ceil(o / 2) : o / 2;
+    const double b_share = exact ? o - a_share : o / 2;
+    const bool a_negative = !(b.centre2() < a.centre2());
+    a.pos = a.pos + Num{a_negative ? -a_share : a_share, exact};
+    b.pos = b.pos + Num{a_negative ? b_share : -b_share, exact};
+    a.vel = Num::integer(a_negative ? -1 : 1);
+    b.vel = Num::integer(a_negative ? 1 : -1);
+}
+
+}  // namespace
+
+bool aabb_overlap(double x1, double y1, double w1, double h1, double x2, double y2, double w2,
+                  double h2) {
+    return x1 < x2 + w2 && x2 < x1 + w1 && y1 < y2 + h2 && y2 < y1 + h1;
+}
+
+bool aabb_overlap(const Body& a, const Body& b) {
+    return aabb_overlap(a.x.v, a.y.v, a.w.v, a.h.v, b.x.v, b.y.v, b.w.v, b.h.v);
+}
+
+bool collision_eligible(const Body& a, const Body& b) {
+    return a.solid && b.solid && !a.skips(kSkipEntityCollisions) &&
+           !b.skips(kSkipEntityCollisions) && aabb_overlap(a, b);
+}
+
+void resolve_pair(Body& a, Body& b) {
+    if (a.immovable && b.immovable) return;
+    const double ox = overlap(a.x, a.w, b.x, b.w);
+    const double oy = overlap(a.y, a.h, b.y, b.h);
+    if (a.immovable || b.immovable) {
+        push_off_immovable(a.immovable ? b : a, a.immovable ? a : b, ox, oy);
+    } else if (ox < oy) {
+        push_apart(along_x(a), along_x(b), ox);
+    } else {
+        push_apart(along_y(a), along_y(b), oy);
+    }
+}
+
+void resolve_entity_collisions(std::span<Body> bodies) {
+    const size_t n = bodies.size();
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j)
+            if (collision_eligible(bodies[i], bodies[j])) resolve_pair(bodies[i], bodies[j]);
+}
+
+}  // namespace ds

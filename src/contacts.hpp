@@ -1,0 +1,26 @@
+// Entity against entity: the overlap test and the sequential push-apart pass.
+#pragma once
+#include <span>
+
+#include "body.hpp"
+
+namespace ds {
+
+// Strict overlap of [x1, x1+w1) × [y1, y1+h1) and [x2, x2+w2) × [y2, y2+h2):
+// touching edges do not overlap.
+bool aabb_overlap(double x1, double y1, double w1, double h1, double x2, double y2,
+                  double w2, double h2);
+bool aabb_overlap(const Body& a, const Body& b);
+
+// Whether a pair takes part in push-apart: both solid, neither skips
+// 'entity-collisions, and the boxes overlap strictly.
+bool collision_eligible(const Body& a, const Body& b);
+
+// Pushes one eligible pair apart (a is the earlier in list order).
+void resolve_pair(Body& a, Body& b);
+
+// One pass over the pairs (i, j), i < j, in list order; each pair sees what
+// earlier pairs produced.
+void resolve_entity_collisions(std::span<Body> bodies);
+
+}  // namespace ds

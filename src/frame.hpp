@@ -1,0 +1,75 @@
+// One whole engine pass, the composition of default-engine-update (SPEC §5):
+// tweens; per-entity motion and tile steps against the frame-start scene;
+// then entity push-apart; then groups.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "body.hpp"
+#include "tile_grid.hpp"
+#include "tiles.hpp"
+#include "tween.hpp"
+
+namespace ds {
+
+// Property ids a tween can drive directly on a body. Ids from kFirstUserKey up
+// name properties physics does not know; their values are handed back.
+enum Key : uint32_t {
+    kKeyX, kKeyY, kKeyWidth, kKeyHeight, kKeyVx, kKeyVy, kKeyAy,
+    kKeyLocalX, kKeyLocalY,
+    kFirstUserKey = 16,
+};
+
+// The body field a physics key names, or nullptr for a user key.
+Num* body_field(Body& b, uint32_t key);
+
+struct TweenTrack {
+    uint32_t body = 0;  // index into World::bodies
+    std::vector<TweenProp> props;
+    TweenTiming timing;
+    Ease ease = Ease::Linear;
+    double elapsed = 0;
+};
+
+struct UserWrite {  // a tween's value for a key physics does not hold
+    uint32_t body;
+    uint32_t key;
+    Num value;
+};
+
+struct World {
+    std::vector<Body> bodies;
+    std::vector<TweenTrack> tweens;  // at most one per body
+    const TileGrid* grid = nullptr;  // none: tile steps do nothing
+};
+
+struct FrameOptions {
+    CollisionMode mode = CollisionMode::Swept;
+    double dt = 1000.0 / 60.0;  // ms; only tweens use it
+};
+
+// What a frame did besides moving bodies.
+struct FrameReport {
+    std::vector<UserWrite> user_writes;
+    std::vector<uint32_t> completed;  // bodies whose tween finished this frame
+};
+
+// Runs frames; keeps its scratch memory between them, so a warm Frame does
+// not allocate.
+class Frame {
+public:
+    // The whole pass over a world.
+    const FrameReport& step(World& world, const FrameOptions& opts);
+
+    // Everything after step-tweens, for callers that run tweens themselves.
+    void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts);
+
+private:
+    void step_tweens(World& world, double dt);
+
+    std::vector<Body> start_;  // the frame-start scene detect-on-solid reads
+    FrameReport report_;
+};
+
+}  // namespace ds

@@ -1,0 +1,13 @@
+// Rigid groups: members follow their group's origin entity.
+#pragma once
+#include <span>
+
+#include "body.hpp"
+
+namespace ds {
+
+// For each group tag, the first body with group_origin is the origin; every
+// other body of that group is placed at origin + (local_x, local_y).
+void sync_groups(std::span<Body> bodies);
+
+}  // namespace ds

@@ -1,0 +1,63 @@
+// The solid-cell grid physics reads: which cells of a tile map block bodies.
+// Built from a loaded Tiled map or directly from a gid vector; knows nothing
+// of XML. Cells outside the grid are empty.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "number.hpp"
+
+namespace ds {
+
+// A half-open run of cell indices [first, last]; empty when last < first.
+struct CellRange {
+    int64_t first = 0;
+    int64_t last = -1;
+    bool empty() const { return last < first; }
+};
+
+// The cells along one axis that the interval [pos, pos+size) overlaps, with
+// cells of `tile` pixels: ⌊pos/tile⌋ … ⌈(pos+size)/tile⌉−1. Touching a cell
+// edge is not overlapping; size ≤ 0 overlaps nothing. Exact positions use
+// integer arithmetic so huge coordinates do not lose cells.
+CellRange cells_of(Num pos, Num size, int tile);
+// ⌊pos/tile⌋ on its own (the ground probe's row).
+int64_t cell_of(Num pos, int tile);
+
+class TileGrid {
+public:
+    TileGrid() = default;
+    // cols × rows cells of tile_w × tile_h px; solid is row-major, cols*rows long.
+    // origin_col/row is the map cell of solid[0] (negative for infinite maps
+    // whose chunks start left of or above the origin).
+    TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8_t> solid,
+             int64_t origin_col = 0, int64_t origin_row = 0);
+
+    int cols() const { return cols_; }
+    int rows() const { return rows_; }
+    int tile_width() const { return tile_w_; }
+    int tile_height() const { return tile_h_; }
+    int64_t origin_col() const { return origin_col_; }
+    int64_t origin_row() const { return origin_row_; }
+
+    bool solid(int64_t col, int64_t row) const {
+        col -= origin_col_;
+        row -= origin_row_;
+        if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return false;
+        return solid_[static_cast<size_t>(row * cols_ + col)] != 0;
+    }
+
+    // The part of a column (row) range that lies inside the grid: physics
+    // never walks cells that cannot be solid, however large the box or move.
+    CellRange clip_cols(CellRange r) const { return clip(r, origin_col_, cols_); }
+    CellRange clip_rows(CellRange r) const { return clip(r, origin_row_, rows_); }
+
+private:
+    static CellRange clip(CellRange r, int64_t origin, int count);
+
+    int cols_ = 0, rows_ = 0, tile_w_ = 1, tile_h_ = 1;
+    int64_t origin_col_ = 0, origin_row_ = 0;
+    std::vector<uint8_t> solid_;
+};
+
+}  // namespace ds

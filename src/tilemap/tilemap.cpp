@@ -1,0 +1,160 @@
+#include "tilemap.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <limits>
+#include <unordered_map>
+
+namespace ds {
+
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+std::string where(const std::string& file, int line) {
+    return line > 0 ? file + ":" + std::to_string(line) : file;
+}
+
+struct Bounds {
+    int64_t col0 = 0, row0 = 0, col1 = 0, row1 = 0;  // half-open
+    bool empty = true;
+
+    void add(const TileLayer& l) {
+        if (l.width <= 0 || l.height <= 0) return;
+        const int64_t c1 = l.origin_col + l.width, r1 = l.origin_row + l.height;
+        if (empty) {
+            *this = {l.origin_col, l.origin_row, c1, r1, false};
+            return;
+        }
+        col0 = std::min(col0, l.origin_col);
+        row0 = std::min(row0, l.origin_row);
+        col1 = std::max(col1, c1);
+        row1 = std::max(row1, r1);
+    }
+};
+
+}  // namespace
+
+const Property* find_property(const Properties& props, std::string_view name) {
+    for (const Property& p : props)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+bool property_is_true(const Property& p) { return iequals(p.value, "true") || p.value == "1"; }
+
+const TileInfo* Tileset::tile(uint32_t local_id) const {
+    const auto it = std::lower_bound(tiles.begin(), tiles.end(), local_id,
+                                     [](const TileInfo& t, uint32_t id) { return t.id < id; });
+    return it != tiles.end() && it->id == local_id ? &*it : nullptr;
+}
+
+bool Tileset::tile_solid(uint32_t local_id) const {
+    const TileInfo* t = tile(local_id);
+    if (!t) return false;
+    if (t->has_collision_shapes) return true;
+    for (const char* name : {"solid", "collision", "collides"})
+        if (const Property* p = find_property(t->properties, name); p && property_is_true(*p))
+            return true;
+    return false;
+}
+
+uint32_t TileLayer::raw_gid(int64_t col, int64_t row) const {
+    col -= origin_col;
+    row -= origin_row;
+    if (col < 0 || row < 0 || col >= width || row >= height) return 0;
+    return cells[static_cast<size_t>(row * width + col)];
+}
+
+const Tileset* Tilemap::tileset_for(uint32_t gid) const {
+    gid &= kGidMask;
+    if (gid == 0) return nullptr;
+    const auto it = std::upper_bound(tilesets.begin(), tilesets.end(), gid,
+                                     [](uint32_t g, const Tileset& t) { return g < t.firstgid; });
+    return it == tilesets.begin() ? nullptr : &*std::prev(it);
+}
+
+bool Tilemap::gid_solid(uint32_t gid) const {
+    gid &= kGidMask;
+    if (gid == 0) return false;
+    for (const uint32_t s : extra_solid_gids)
+        if ((s & kGidMask) == gid) return true;
+    const Tileset* ts = tileset_for(gid);
+    return ts && ts->tile_solid(gid - ts->firstgid);
+}
+
+bool Tilemap::cell_solid(int64_t col, int64_t row) const {
+    for (const TileLayer& layer : layers) {
+        if (layer.solidity == LayerSolidity::None) continue;
+        const uint32_t gid = layer.raw_gid(col, row) & kGidMask;
+        if (gid == 0) continue;
+        if (layer.solidity == LayerSolidity::All || gid_solid(gid)) return true;
+    }
+    return false;
+}
+
+TileGrid Tilemap::solid_grid() const {
+    Bounds b;
+    for (const TileLayer& l : layers) b.add(l);
+    const int64_t cols = b.col1 - b.col0, rows = b.row1 - b.row0;
+    if (cols > std::numeric_limits<int>::max() || rows > std::numeric_limits<int>::max())
+        throw std::length_error("tilemap: solid grid wider or taller than an int");
+    std::vector<uint8_t> solid(static_cast<size_t>(cols) * static_cast<size_t>(rows), 0);
+    // Layer by layer rather than cell_solid per cell: one pass over each
+    // layer's own cells, with each distinct gid's metadata looked up once.
+    std::unordered_map<uint32_t, bool> gid_cache;
+    for (const TileLayer& l : layers) {
+        if (l.solidity == LayerSolidity::None) continue;
+        for (int r = 0; r < l.height; ++r) {
+            for (int c = 0; c < l.width; ++c) {
+                const uint32_t gid = l.cells[static_cast<size_t>(r) * l.width + c] & kGidMask;
+                if (gid == 0) continue;
+                bool is_solid = l.solidity == LayerSolidity::All;
+                if (!is_solid) {
+                    auto [it, fresh] = gid_cache.try_emplace(gid, false);
+                    if (fresh) it->second = gid_solid(gid);
+                    is_solid = it->second;
+                }
+                if (!is_solid) continue;
+                const int64_t gc = l.origin_col + c - b.col0, gr = l.origin_row + r - b.row0;
+                solid[static_cast<size_t>(gr * cols + gc)] = 1;
+            }
+        }
+    }
+    return TileGrid(static_cast<int>(cols), static_cast<int>(rows), tile_width, tile_height,
+                    std::move(solid), b.col0, b.row0);
+}
+
+MapError::MapError(const std::string& file, int line, const std::string& message)
+    : std::runtime_error(where(file, line) + ": " + message), file_(file), line_(line) {}
+
+Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
+                     std::vector<uint32_t> solid_gids) {
+    if (width <= 0 || height <= 0 || tile_w <= 0 || tile_h <= 0)
+        throw std::invalid_argument("make_tilemap: sizes must be positive");
+    if (gids.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
+        throw std::invalid_argument("make_tilemap: " + std::to_string(gids.size()) +
+                                    " gids for a " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " map");
+    Tilemap map;
+    map.width = width;
+    map.height = height;
+    map.tile_width = tile_w;
+    map.tile_height = tile_h;
+    TileLayer layer;
+    layer.name = "tiles";
+    layer.width = width;
+    layer.height = height;
+    layer.cells = std::move(gids);
+    map.layers.push_back(std::move(layer));
+    // No tilesets: extra_solid_gids alone decides, exactly as the caller listed.
+    map.extra_solid_gids = std::move(solid_gids);
+    return map;
+}
+
+}  // namespace ds

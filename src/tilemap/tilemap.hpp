@@ -1,0 +1,137 @@
+// A Tiled map in memory: tilesets, tile layers (raw gids, flip bits kept for
+// drawing), object layers, and the solidity rules of SPEC §7 that turn it
+// into the TileGrid physics reads.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "../tile_grid.hpp"
+
+namespace ds {
+
+// The four high bits of a gid: horizontal, vertical and diagonal flip, and
+// hexagonal 120° rotation. The rest is the tile's global id.
+constexpr uint32_t kFlipHorizontal = 0x80000000u;
+constexpr uint32_t kFlipVertical = 0x40000000u;
+constexpr uint32_t kFlipDiagonal = 0x20000000u;
+constexpr uint32_t kRotateHex120 = 0x10000000u;
+constexpr uint32_t kGidMask = 0x0FFFFFFFu;
+
+// A Tiled custom property, its value kept as written; type is Tiled's name
+// ("string", "int", "float", "bool", "color", "file", "object", "class").
+struct Property {
+    std::string name;
+    std::string type = "string";
+    std::string value;
+};
+using Properties = std::vector<Property>;
+
+const Property* find_property(const Properties& props, std::string_view name);
+// "true"/"1" (any case) — Tiled writes bools as true/false.
+bool property_is_true(const Property& p);
+
+struct TileInfo {  // a tileset's <tile> that carries something
+    uint32_t id = 0;  // local id within its tileset
+    std::string type; // type= (Tiled ≤1.8) or class= (≥1.9)
+    Properties properties;
+    bool has_collision_shapes = false;  // a non-empty <objectgroup>
+};
+
+struct Tileset {
+    uint32_t firstgid = 1;
+    std::string name;
+    std::string source;  // the .tsx path as written, or empty when embedded
+    int tile_width = 0, tile_height = 0;
+    int tile_count = 0;  // 0 when the file does not say
+    int columns = 0, spacing = 0, margin = 0;
+    std::string image;   // as written, relative to the file that names it
+    int image_width = 0, image_height = 0;
+    std::vector<TileInfo> tiles;  // sorted by id
+
+    const TileInfo* tile(uint32_t local_id) const;
+    // Solid by metadata: a true solid/collision/collides property, or collision shapes.
+    bool tile_solid(uint32_t local_id) const;
+};
+
+enum class LayerSolidity : uint8_t {
+    FromTiles,  // no solid/collision property: each tile's metadata decides
+    All,        // property true: every non-empty cell is solid
+    None,       // property false: this layer adds no solidity
+};
+
+struct TileLayer {
+    std::string name;
+    int64_t origin_col = 0, origin_row = 0;  // map cell of cells[0]
+    int width = 0, height = 0;
+    std::vector<uint32_t> cells;  // row-major raw gids, 0 = empty
+    Properties properties;
+    LayerSolidity solidity = LayerSolidity::FromTiles;
+    bool visible = true;
+    double opacity = 1.0;
+
+    uint32_t raw_gid(int64_t col, int64_t row) const;  // 0 outside the layer
+};
+
+struct MapObject {
+    int id = 0;
+    std::string name, type;  // type= or class=
+    double x = 0, y = 0, width = 0, height = 0, rotation = 0;
+    uint32_t gid = 0;  // raw, for tile objects
+    bool visible = true;
+    Properties properties;
+};
+
+struct ObjectLayer {
+    std::string name;
+    Properties properties;
+    std::vector<MapObject> objects;
+};
+
+struct Tilemap {
+    std::string path;  // empty for maps made in memory
+    int width = 0, height = 0;  // in cells (the bounding box of all chunks when infinite)
+    int tile_width = 0, tile_height = 0;
+    bool infinite = false;
+    Properties properties;
+    std::vector<Tileset> tilesets;  // sorted by firstgid
+    std::vector<TileLayer> layers;  // in file order, groups flattened
+    std::vector<ObjectLayer> object_layers;
+    std::vector<uint32_t> extra_solid_gids;  // solid-gids: from the script
+
+    // The tileset a gid (flip bits ignored) belongs to: the largest firstgid ≤ gid.
+    const Tileset* tileset_for(uint32_t gid) const;
+    // Solid by its tileset's metadata or by extra_solid_gids.
+    bool gid_solid(uint32_t gid) const;
+    // Solid when any layer makes it so (SPEC §7).
+    bool cell_solid(int64_t col, int64_t row) const;
+    // The physics grid over the bounding box of every layer.
+    TileGrid solid_grid() const;
+};
+
+// A malformed or unreadable map. what() names the file, and the line where
+// the XML parser gave one.
+class MapError : public std::runtime_error {
+public:
+    MapError(const std::string& file, int line, const std::string& message);
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }
+
+private:
+    std::string file_;
+    int line_;
+};
+
+// Reads a .tmx file and the external .tsx tilesets it names (paths relative
+// to the map). Throws MapError.
+Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {});
+
+// A map made in memory: width × height cells of tile_w × tile_h px, gids
+// row-major (width*height of them), solid exactly where a gid is listed in
+// solid_gids. Throws std::invalid_argument on a size mismatch.
+Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
+                     std::vector<uint32_t> solid_gids);
+
+}  // namespace ds

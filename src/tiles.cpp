@@ -1,0 +1,100 @@
+#include "tiles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "steps.hpp"
+
+namespace ds {
+
+namespace {
+
+// One axis of a body, so x and y share a single resolution routine.
+struct Axis {
+    Num& pos;
+    Num& vel;
+    Num size;
+    int tile;
+};
+
+// The cells to test along the moving axis. Discrete: the box as it is now.
+// Swept: the box plus every cell its leading edge crossed this frame, which
+// equals the box whenever |v| ≤ size.
+CellRange candidates(const Axis& a, CollisionMode mode) {
+    if (mode == CollisionMode::Discrete || !(a.size.v > 0)) return cells_of(a.pos, a.size, a.tile);
+    const Num start = a.pos - a.vel;  // where the box began the move
+    if (a.vel.v > 0) {
+        const Num lead_start = start + a.size;  // the right (bottom) edge before the move
+        const Num lo = lead_start.v < a.pos.v ? lead_start : a.pos;
+        return cells_of(lo, (a.pos + a.size) - lo, a.tile);
+    }
+    const Num hi = start.v > a.pos.v + a.size.v ? start : a.pos + a.size;
+    return cells_of(a.pos, hi - a.pos, a.tile);
+}
+
+// Walks candidate cells from the side the body moves from, so the first
+// solid cell met is the one it reaches first.
+template <typename Solid>
+void resolve_axis(Axis a, CellRange along, CellRange across, Solid solid) {
+    if (along.empty() || across.empty()) return;
+    const bool forward = a.vel.v > 0;
+    for (int64_t i = 0, n = along.last - along.first + 1; i < n; ++i) {
+        const int64_t c = forward ? along.first + i : along.last - i;
+        for (int64_t k = across.first; k <= across.last; ++k) {
+            if (!solid(c, k)) continue;
+            const bool exact = a.pos.exact && a.size.exact;
+            const double edge = static_cast<double>(forward ? c : c + 1) * a.tile;
+            a.pos = forward ? Num{edge - a.size.v, exact} : Num{edge, exact};
+            a.vel = Num::integer(0);
+            return;
+        }
+    }
+}
+
+}  // namespace
+
+void resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode) {
+    if (!grid || b.vx.v == 0 || b.skips(kSkipTileX)) return;
+    Axis a{b.x, b.vx, b.w, grid->tile_width()};
+    const CellRange cols = grid->clip_cols(candidates(a, mode));
+    const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
+    resolve_axis(a, cols, rows,
+                 [&](int64_t c, int64_t r) { return grid->solid(c, r); });
+}
+
+void resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode) {
+    if (!grid || b.vy.v == 0 || b.skips(kSkipTileY)) return;
+    Axis a{b.y, b.vy, b.h, grid->tile_height()};
+    const CellRange rows = grid->clip_rows(candidates(a, mode));
+    const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
+    resolve_axis(a, rows, cols,
+                 [&](int64_t r, int64_t c) { return grid->solid(c, r); });
+}
+
+bool tile_supports(const Body& b, const TileGrid& grid) {
+    const int64_t row = cell_of(b.y + b.h, grid.tile_height());
+    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    for (int64_t c = cols.first; c <= cols.last; ++c)
+        if (grid.solid(c, row)) return true;
+    return false;
+}
+
+bool entity_supports(const Body& b, const Body& o) {
+    if (!o.solid || o.skips(kSkipEntityCollisions)) return false;
+    if (!(b.x.v < o.x.v + o.w.v && o.x.v < b.x.v + b.w.v)) return false;
+    return std::fabs((b.y.v + b.h.v) - o.y.v) <= kOnSolidTolerance &&
+           std::fabs(b.vy.v - o.vy.v) <= kOnSolidTolerance;
+}
+
+void detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
+                     const TileGrid* grid) {
+    if (!b.gravity || b.skips(kSkipOnSolid)) return;
+    bool ground = grid && tile_supports(b, *grid);
+    for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n && !ground; ++k) {
+        if (k == self_slot || (b.id != 0 && scene[k].id == b.id)) continue;
+        ground = entity_supports(b, scene[k]);
+    }
+    b.on_ground = ground;
+}
+
+}  // namespace ds

@@ -1,0 +1,35 @@
+// Bodies against the solid cells of a tile grid: the per-axis snap-out and
+// the ground probe (SPEC §4).
+#pragma once
+#include <span>
+
+#include "body.hpp"
+#include "tile_grid.hpp"
+
+namespace ds {
+
+enum class CollisionMode : uint8_t {
+    Swept,     // also tests every cell the leading edge crossed: nothing tunnels
+    Discrete,  // the seed's rule: only the cells the box overlaps after the move
+};
+
+// Snap out of solid cells along x after apply-velocity-x. No-op without a
+// grid, when vx = 0, or when the body skips 'tile-collisions-x.
+void resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode);
+// The same along y, after apply-velocity-y ('tile-collisions-y).
+void resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode);
+
+// Whether a solid cell lies in row ⌊(y+h)/th⌋ under any column the box spans.
+bool tile_supports(const Body& b, const TileGrid& grid);
+// Whether `other` holds `b` up: solid, not a ghost, overlapping horizontally,
+// its top within the tolerance of b's feet and moving at nearly b's speed.
+// (Identity — "other is not b itself" — is the caller's business.)
+bool entity_supports(const Body& b, const Body& other);
+
+// Sets on_ground from the tiles and from the frame-start scene. self_slot is
+// b's own index in `scene` (or -1); bodies with b's nonzero id are skipped too.
+// Needs #:gravity?; skipped by 'on-solid.
+void detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
+                     const TileGrid* grid);
+
+}  // namespace ds
