@@ -1,0 +1,145 @@
+// The per-entity physics steps and the bulk steps as native procedures.
+// Each: validate and decode → run the core step → encode only what changed.
+#include <cmath>
+
+#include "args.hpp"
+#include "batch.hpp"
+#include "contacts.hpp"
+#include "groups.hpp"
+#include "keys.hpp"
+#include "plist.hpp"
+#include "registry.hpp"
+#include "scm_number.hpp"
+#include "steps.hpp"
+#include "tilemap_type.hpp"
+#include "tiles.hpp"
+
+namespace ds::guile {
+
+namespace {
+
+// Decodes one entity, runs step on its body, encodes what changed.
+template <typename Step>
+SCM step_entity(const char* proc, SCM entity, Step step) {
+    Failure f{.proc = proc};
+    SCM result = entity;
+    {
+        Decoded d;
+        if (decode_entity(entity, d, f)) {
+            const Body before = d.body;
+            step(d.body);
+            Edit edits[16];
+            result = rewrite_plist(entity, edits, field_edits(before, d.body, edits));
+        }
+    }
+    if (f) raise(f);
+    return result;
+}
+
+SCM apply_acceleration_1(SCM e) { return step_entity("apply-acceleration", e, apply_acceleration); }
+SCM apply_gravity_1(SCM e) { return step_entity("apply-gravity", e, apply_gravity); }
+SCM apply_velocity_x_1(SCM e) { return step_entity("apply-velocity-x", e, apply_velocity_x); }
+SCM apply_velocity_y_1(SCM e) { return step_entity("apply-velocity-y", e, apply_velocity_y); }
+SCM apply_velocity_1(SCM e) { return step_entity("apply-velocity", e, apply_velocity); }
+
+template <void (*Resolve)(Body&, const TileGrid*, CollisionMode)>
+SCM resolve_tiles(const char* proc, SCM e, SCM tilemap, SCM mode) {
+    Failure f{.proc = proc};
+    const TileGrid* grid = nullptr;
+    CollisionMode m{};
+    if (!grid_from_scm(tilemap, grid, f) || !mode_from_scm(mode, m, f)) raise(f);
+    return step_entity(proc, e, [&](Body& b) { Resolve(b, grid, m); });
+}
+
+SCM resolve_tile_x_1(SCM e, SCM tm, SCM mode) {
+    return resolve_tiles<resolve_tile_collisions_x>("resolve-tile-collisions-x", e, tm, mode);
+}
+SCM resolve_tile_y_1(SCM e, SCM tm, SCM mode) {
+    return resolve_tiles<resolve_tile_collisions_y>("resolve-tile-collisions-y", e, tm, mode);
+}
+
+// The scene's entities, decoded; the entity's own slot is the first one eq?
+// to it.
+SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
+    Failure f{.proc = "detect-on-solid"};
+    SCM result = e;
+    scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
+    {
+        const TileGrid* grid = nullptr;
+        Batch& scene = lease_batch();
+        std::ptrdiff_t self = -1, index = 0;
+        for (SCM p = entities; scm_is_pair(p) && self < 0; p = SCM_CDR(p), ++index)
+            if (scm_is_eq(SCM_CAR(p), e)) self = index;
+        if (grid_from_scm(tilemap, grid, f) && decode_batch(entities, scene, f)) {
+            result = step_entity("detect-on-solid", e, [&](Body& b) {
+                detect_on_solid(b, scene.bodies, self, grid);
+            });
+        }
+    }
+    scm_dynwind_end();
+    if (f) raise(f);
+    return result;
+}
+
+template <void (*Bulk)(std::span<Body>)>
+SCM bulk_step(const char* proc, SCM entities) {
+    Failure f{.proc = proc};
+    SCM result = entities;
+    scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
+    {
+        Batch& batch = lease_batch();
+        if (decode_batch(entities, batch, f)) {
+            Bulk(batch.bodies);
+            result = encode_batch(entities, batch);
+        }
+    }
+    scm_dynwind_end();
+    if (f) raise(f);
+    return result;
+}
+
+SCM resolve_entity_collisions_n(SCM entities) {
+    return bulk_step<resolve_entity_collisions>("resolve-entity-collisions", entities);
+}
+SCM sync_groups_n(SCM entities) { return bulk_step<sync_groups>("sync-groups", entities); }
+
+SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h2) {
+    Failure f{.proc = "aabb-overlap?"};
+    const SCM args[8] = {x1, y1, w1, h1, x2, y2, w2, h2};
+    double v[8];
+    for (int i = 0; i < 8; ++i) {
+        Num n;
+        if (num_from_scm(args[i], n) != NumCheck::Ok) {
+            fail(f, "wrong-type-arg", scm_list_2(scm_from_int(i + 1), args[i]),
+                 "argument ~S: expected a finite real number, got ~S");
+            raise(f);
+        }
+        v[i] = n.v;
+    }
+    return scm_from_bool(aabb_overlap(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
+}
+
+}  // namespace
+
+void register_entity_procedures() {
+    define_procedure("%apply-acceleration", 1, 0, 0, (Subr)apply_acceleration_1,
+                     "vy += ay, then ay = 0, for a #:gravity? entity.");
+    define_procedure("%apply-gravity", 1, 0, 0, (Subr)apply_gravity_1, "vy += *gravity* for a #:gravity? entity.");
+    define_procedure("%apply-velocity-x", 1, 0, 0, (Subr)apply_velocity_x_1, "x += vx.");
+    define_procedure("%apply-velocity-y", 1, 0, 0, (Subr)apply_velocity_y_1, "y += vy.");
+    define_procedure("%apply-velocity", 1, 0, 0, (Subr)apply_velocity_1, "x += vx and y += vy, each axis skippable.");
+    define_procedure("%resolve-tile-collisions-x", 3, 0, 0, (Subr)resolve_tile_x_1,
+                     "(entity tilemap mode): snap out of solid tiles along x.");
+    define_procedure("%resolve-tile-collisions-y", 3, 0, 0, (Subr)resolve_tile_y_1,
+                     "(entity tilemap mode): snap out of solid tiles along y.");
+    define_procedure("%detect-on-solid", 3, 0, 0, (Subr)detect_on_solid_1,
+                     "(entity tilemap entities): set #:on-ground? from tiles and solid entities.");
+    define_procedure("resolve-entity-collisions", 1, 0, 0, (Subr)resolve_entity_collisions_n,
+                     "Push overlapping solid entities apart: one pass over the pairs in list order.");
+    define_procedure("sync-groups", 1, 0, 0, (Subr)sync_groups_n,
+                     "Place every group member at its origin's position plus its local offset.");
+    define_procedure("aabb-overlap?", 8, 0, 0, (Subr)aabb_overlap_p,
+                     "(aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2): strict overlap of two boxes.");
+}
+
+}  // namespace ds::guile

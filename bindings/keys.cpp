@@ -1,0 +1,44 @@
+#include "keys.hpp"
+
+#include "body.hpp"
+
+namespace ds::guile {
+
+namespace {
+
+constexpr const char* kKeyNames[kPhysKeyCount] = {
+    "x", "y", "width", "height", "vx", "vy", "ay",
+    "gravity?", "on-ground?", "solid?", "immovable?",
+    "skip-pipelines", "tween", "id", "group-id", "group-origin?", "group-local-x",
+    "group-local-y",
+};
+
+Keys storage;
+
+}  // namespace
+
+const Keys* keys = nullptr;
+
+const char* key_name(uint8_t k) { return k < kPhysKeyCount ? kKeyNames[k] : "?"; }
+
+uint8_t Keys::lookup(SCM keyword) const {
+    for (uint8_t k = 0; k < kPhysKeyCount; ++k)
+        if (scm_is_eq(key[k], keyword)) return k;
+    return kNotPhysics;
+}
+
+namespace {
+SCM keep(SCM obj) { return scm_gc_protect_object(obj); }
+}  // namespace
+
+void init_keys() {
+    if (keys) return;
+    for (uint8_t k = 0; k < kPhysKeyCount; ++k) storage.key[k] = keep(scm_from_utf8_keyword(kKeyNames[k]));
+    for (int bit = 0; bit < 9; ++bit)
+        storage.skip_symbol[bit] = keep(scm_from_utf8_symbol(skip_name(static_cast<uint16_t>(1u << bit))));
+    storage.swept = keep(scm_from_utf8_symbol("swept"));
+    storage.discrete = keep(scm_from_utf8_symbol("discrete"));
+    keys = &storage;
+}
+
+}  // namespace ds::guile

@@ -1,0 +1,168 @@
+#include "plist.hpp"
+
+#include "scm_number.hpp"
+
+namespace ds::guile {
+
+namespace {
+
+bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
+    switch (num_from_scm(value, out)) {
+        case NumCheck::Ok: return true;
+        case NumCheck::NotReal:
+            fail(f, "wrong-type-arg", scm_list_2(key, value), "entity key ~S: expected a real number, got ~S");
+            return false;
+        case NumCheck::NotFinite:
+            fail(f, "wrong-type-arg", scm_list_2(key, value), "entity key ~S: expected a finite number, got ~S");
+            return false;
+    }
+    return false;
+}
+
+bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
+    mask = 0;
+    SCM p = list;
+    for (; scm_is_pair(p); p = SCM_CDR(p)) {
+        SCM sym = SCM_CAR(p);
+        if (!scm_is_symbol(sym)) {
+            fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
+            return false;
+        }
+        for (int bit = 0; bit < 9; ++bit)
+            if (scm_is_eq(sym, keys->skip_symbol[bit])) mask |= static_cast<uint16_t>(1u << bit);
+    }
+    if (!scm_is_null(p)) {
+        fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
+        return false;
+    }
+    return true;
+}
+
+bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
+    Body& b = d.body;
+    switch (k) {
+        case kX: return decode_number(key, v, b.x, f);
+        case kY: return decode_number(key, v, b.y, f);
+        case kWidth: return decode_number(key, v, b.w, f);
+        case kHeight: return decode_number(key, v, b.h, f);
+        case kVx: return decode_number(key, v, b.vx, f);
+        case kVy: return decode_number(key, v, b.vy, f);
+        case kAy: return decode_number(key, v, b.ay, f);
+        case kGroupLocalX: return decode_number(key, v, b.local_x, f);
+        case kGroupLocalY: return decode_number(key, v, b.local_y, f);
+        case kGravity: b.gravity = scm_is_true(v); return true;
+        case kOnGround: b.on_ground = scm_is_true(v); return true;
+        case kSolid: b.solid = scm_is_true(v); return true;
+        case kImmovable: b.immovable = scm_is_true(v); return true;
+        case kGroupOrigin: b.group_origin = scm_is_true(v); return true;
+        case kSkipPipelines: return decode_skips(key, v, b.skip, f);
+        case kTween: d.tween = v; return true;
+        case kId: d.id = v; b.id = identity_tag(v); return true;
+        case kGroupId: b.group = identity_tag(v); return true;
+        default: return true;
+    }
+}
+
+}  // namespace
+
+int64_t identity_tag(SCM v) {
+    if (scm_is_false(v)) return 0;
+    // Immediates, symbols and keywords are equal? exactly when eq?.
+    if (SCM_IMP(v) || scm_is_symbol(v) || scm_is_keyword(v))
+        return static_cast<int64_t>(SCM_UNPACK(v));
+    const unsigned long h = scm_ihash(v, 1ul << 60);  // equal?-consistent
+    return static_cast<int64_t>(h | (1ull << 62));
+}
+
+bool decode_entity(SCM plist, Decoded& d, Failure& f) {
+    d = Decoded{};
+    SCM p = plist;
+    for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p))) {
+        SCM key = SCM_CAR(p);
+        if (!scm_is_keyword(key)) {
+            fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: ~S in key position of ~S");
+            return false;
+        }
+        if (!scm_is_pair(SCM_CDR(p))) {
+            fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: key ~S has no value in ~S");
+            return false;
+        }
+        const uint8_t k = keys->lookup(key);
+        if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) continue;  // first occurrence wins
+        d.present |= 1u << k;
+        if (!decode_value(k, key, SCM_CAR(SCM_CDR(p)), d, f)) return false;
+    }
+    if (!scm_is_null(p)) {
+        fail(f, "wrong-type-arg", scm_list_1(plist), "malformed entity: expected a keyword plist, got ~S");
+        return false;
+    }
+    return true;
+}
+
+SCM plist_get(SCM plist, SCM key, SCM fallback) {
+    for (SCM p = plist; scm_is_pair(p) && scm_is_pair(SCM_CDR(p)); p = SCM_CDR(SCM_CDR(p)))
+        if (scm_is_eq(SCM_CAR(p), key)) return SCM_CAR(SCM_CDR(p));
+    return fallback;
+}
+
+SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
+    if (count == 0) return plist;
+    // Pass 1: where is each edited key, and how far must we copy?
+    uint64_t found = 0;  // bit i: edits[i].key occurs
+    size_t last = 0, index = 0;
+    for (SCM p = plist; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p)), ++index)
+        for (size_t i = 0; i < count; ++i)
+            if (!((found >> i) & 1u) && scm_is_eq(SCM_CAR(p), edits[i].key)) {
+                found |= 1ull << i;
+                last = index + 1;
+            }
+    bool appends = false;
+    for (size_t i = 0; i < count; ++i) appends |= !((found >> i) & 1u) && !edits[i].remove;
+    SCM head = SCM_EOL, tail = SCM_BOOL_F;
+    auto emit = [&](SCM key, SCM value) {
+        SCM cell = scm_cons(key, scm_cons(value, SCM_EOL));
+        if (scm_is_false(tail)) head = cell;
+        else scm_set_cdr_x(tail, cell);
+        tail = SCM_CDR(cell);
+    };
+    // Pass 2: copy up to the last edited key (all of it when appending).
+    uint64_t done = 0;
+    SCM p = plist;
+    for (index = 0; scm_is_pair(p) && (appends || index < last); p = SCM_CDR(SCM_CDR(p)), ++index) {
+        SCM key = SCM_CAR(p), value = SCM_CAR(SCM_CDR(p));
+        size_t i = 0;
+        while (i < count && (((done >> i) & 1u) || !scm_is_eq(key, edits[i].key))) ++i;
+        if (i == count) {
+            emit(key, value);
+            continue;
+        }
+        done |= 1ull << i;
+        if (!edits[i].remove) emit(key, edits[i].value);
+    }
+    for (size_t i = 0; i < count; ++i)
+        if (!((found >> i) & 1u) && !edits[i].remove) emit(edits[i].key, edits[i].value);
+    if (scm_is_false(tail)) return p;  // everything before p was removed
+    scm_set_cdr_x(tail, p);
+    return head;
+}
+
+size_t field_edits(const Body& before, const Body& after, Edit* out) {
+    const uint32_t changed = changed_fields(before, after);
+    size_t n = 0;
+    auto num = [&](uint32_t bit, PhysKey k, Num v) {
+        if (changed & bit) out[n++] = {keys->key[k], num_to_scm(v)};
+    };
+    num(kFieldX, kX, after.x);
+    num(kFieldY, kY, after.y);
+    num(kFieldWidth, kWidth, after.w);
+    num(kFieldHeight, kHeight, after.h);
+    num(kFieldVx, kVx, after.vx);
+    num(kFieldVy, kVy, after.vy);
+    num(kFieldAy, kAy, after.ay);
+    num(kFieldLocalX, kGroupLocalX, after.local_x);
+    num(kFieldLocalY, kGroupLocalY, after.local_y);
+    if (changed & kFieldOnGround) out[n++] = {keys->key[kOnGround], scm_from_bool(after.on_ground)};
+    return n;
+}
+
+}  // namespace ds::guile

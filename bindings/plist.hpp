@@ -1,0 +1,52 @@
+// Entity plists ⇄ bodies. Decoding walks a plist once and picks out the
+// physics keys; encoding rewrites only what changed, in place order, and
+// shares the unchanged tail — an unchanged entity comes back as itself.
+#pragma once
+#include <libguile.h>
+
+#include <cstddef>
+#include <cstdint>
+
+#include "body.hpp"
+#include "failure.hpp"
+#include "keys.hpp"
+
+namespace ds::guile {
+
+struct Decoded {
+    Body body;
+    uint32_t present = 0;  // bit k set: PhysKey k occurs in the plist
+    SCM tween = SCM_BOOL_F;
+    SCM id = SCM_BOOL_F;   // the raw #:id, for equal? comparisons
+    bool has(PhysKey k) const { return (present >> k) & 1u; }
+};
+
+// Fills d from an entity plist. On a malformed plist or a wrongly typed
+// value, records a Failure naming the procedure, key and value.
+bool decode_entity(SCM plist, Decoded& d, Failure& f);
+
+// An identity tag for #:id / #:group-id values: equal? values get equal
+// tags; #f and absence give 0.
+int64_t identity_tag(SCM value);
+
+struct Edit {
+    SCM key;
+    SCM value;
+    bool remove = false;
+};
+
+// A new plist with each edit applied to the first occurrence of its key
+// (removed when `remove`), absent keys appended in edit order. Conses only
+// up to the last edited key and shares the rest; returns plist itself when
+// there are no edits.
+SCM rewrite_plist(SCM plist, const Edit* edits, size_t count);
+
+// Collects the edits for the fields that differ between before and after.
+// Returns how many were written to out (room for 16 is enough).
+size_t field_edits(const Body& before, const Body& after, Edit* out);
+
+// The value of the first occurrence of key in plist, or fallback. No checks:
+// for plists already validated by decode_entity.
+SCM plist_get(SCM plist, SCM key, SCM fallback);
+
+}  // namespace ds::guile

@@ -1,0 +1,19 @@
+// Each native procedure is registered next to its definition, with its
+// docstring, into the module being initialised (downstroke native).
+#pragma once
+#include <libguile.h>
+
+namespace ds::guile {
+
+using Subr = scm_t_subr;
+
+// Defines and exports `name` with its docstring.
+void define_procedure(const char* name, int req, int opt, int rest, Subr fn, const char* doc);
+
+// Each file of procedures has one of these; init.cpp calls them all.
+void register_entity_procedures();
+void register_tilemap_procedures();
+void register_tween_procedures();
+void register_frame_procedures();
+
+}  // namespace ds::guile

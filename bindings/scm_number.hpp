@@ -1,0 +1,36 @@
+// Scheme reals ⇄ ds::Num. Fixnums and flonums take a fast path; exactness
+// survives the round trip (SPEC §1).
+#pragma once
+#include <libguile.h>
+
+#include <cmath>
+
+#include "number.hpp"
+
+namespace ds::guile {
+
+enum class NumCheck { Ok, NotReal, NotFinite };
+
+// Exact integers below 2^53 stay exact; larger ones, exact non-integer
+// rationals and flonums become flonums. Non-reals and NaN/±inf are refused.
+inline NumCheck num_from_scm(SCM v, Num& out) {
+    if (SCM_I_INUMP(v)) {
+        const auto i = static_cast<double>(SCM_I_INUM(v));
+        out = {i, std::fabs(i) < kMaxExact};
+        return NumCheck::Ok;
+    }
+    double d;
+    if (SCM_REALP(v)) d = SCM_REAL_VALUE(v);
+    else if (scm_is_real(v)) d = scm_to_double(v);
+    else return NumCheck::NotReal;
+    if (!std::isfinite(d)) return NumCheck::NotFinite;
+    out = Num::flonum(d);
+    return NumCheck::Ok;
+}
+
+inline SCM num_to_scm(Num n) {
+    if (n.exact) return scm_from_int64(static_cast<int64_t>(n.v));
+    return scm_from_double(n.v);
+}
+
+}  // namespace ds::guile

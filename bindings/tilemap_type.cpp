@@ -1,0 +1,259 @@
+#include "tilemap_type.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "failure.hpp"
+#include "registry.hpp"
+
+namespace ds::guile {
+
+namespace {
+
+SCM tilemap_type = SCM_BOOL_F;
+
+void finalize_tilemap(SCM obj) {
+    delete static_cast<MapHandle*>(scm_foreign_object_ref(obj, 0));
+    scm_foreign_object_set_x(obj, 0, nullptr);
+}
+
+SCM wrap(std::unique_ptr<MapHandle> handle) {
+    return scm_make_foreign_object_1(tilemap_type, handle.release());
+}
+
+// Checks a tilemap argument; the Failure names the procedure's argument.
+bool check_map(SCM obj, const char* proc, Failure& f) {
+    f.proc = proc;
+    if (is_tilemap(obj)) return true;
+    fail(f, "wrong-type-arg", scm_list_1(obj), "expected a tilemap, got ~S");
+    return false;
+}
+
+bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f) {
+    SCM p = list;
+    for (; scm_is_pair(p); p = SCM_CDR(p)) {
+        SCM g = SCM_CAR(p);
+        if (!scm_is_unsigned_integer(g, 0, kGidMask)) {
+            fail(f, "wrong-type-arg", scm_list_2(g, list), "%s: expected gids (exact integers ≥ 0), got ~S in ~S", what);
+            return false;
+        }
+        out.push_back(scm_to_uint32(g));
+    }
+    if (!scm_is_null(p)) {
+        fail(f, "wrong-type-arg", scm_list_1(list), "%s: expected a list of gids, got ~S", what);
+        return false;
+    }
+    return true;
+}
+
+// Tiled numbers: integral values come back exact, so 48 stays 48.
+SCM tiled_number(double v) {
+    if (std::trunc(v) == v && std::fabs(v) < kMaxExact) return scm_from_int64(static_cast<int64_t>(v));
+    return scm_from_double(v);
+}
+
+SCM property_value(const Property& p) {
+    const std::string& s = p.value;
+    if (p.type == "bool") return scm_from_bool(property_is_true(p));
+    if (p.type == "int" || p.type == "object") {
+        long long v = 0;
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        if (ec == std::errc() && end == s.data() + s.size()) return scm_from_int64(v);
+    }
+    if (p.type == "float") {
+        char* end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (end && *end == '\0' && std::isfinite(v)) return scm_from_double(v);
+    }
+    return scm_from_utf8_string(s.c_str());
+}
+
+SCM keyword(const std::string& name) { return scm_from_utf8_keyword(name.c_str()); }
+
+SCM object_plist(const MapObject& o) {
+    SCM props = SCM_EOL;
+    for (auto it = o.properties.rbegin(); it != o.properties.rend(); ++it)
+        props = scm_cons(keyword(it->name), scm_cons(property_value(*it), props));
+    SCM type = o.type.empty() ? SCM_BOOL_F : scm_from_utf8_symbol(o.type.c_str());
+    SCM head = scm_list_n(keyword("type"), type, keyword("name"), scm_from_utf8_string(o.name.c_str()),
+                          keyword("id"), scm_from_int(o.id), keyword("x"), tiled_number(o.x),
+                          keyword("y"), tiled_number(o.y), keyword("width"), tiled_number(o.width),
+                          keyword("height"), tiled_number(o.height), SCM_UNDEFINED);
+    return scm_append(scm_list_2(head, props));
+}
+
+SCM load_tilemap(SCM path, SCM solid_gids) {
+    Failure f{.proc = "load-tilemap"};
+    SCM result = SCM_BOOL_F;
+    if (!scm_is_string(path)) {
+        fail(f, "wrong-type-arg", scm_list_1(path), "expected a file name, got ~S");
+    } else {
+        char* cpath = scm_to_utf8_string(path);  // freed below, before any raise
+        {
+            std::vector<uint32_t> gids;
+            std::unique_ptr<MapHandle> handle;
+            if (gid_list(solid_gids, gids, "solid-gids", f)) {
+                guarded(f, nullptr, [&] {
+                    handle = std::make_unique<MapHandle>();
+                    handle->map = ds::load_tilemap(cpath, gids);
+                    handle->grid = handle->map.solid_grid();
+                });
+            }
+            if (handle) result = wrap(std::move(handle));
+        }
+        free(cpath);
+    }
+    if (f) {
+        f.key = "misc-error";  // printed as "In procedure load-tilemap: <file>:<line>: …"
+        raise(f);
+    }
+    return result;
+}
+
+bool positive_int(SCM v, const char* what, int& out, Failure& f) {
+    if (scm_is_signed_integer(v, 1, 1 << 24)) {
+        out = scm_to_int(v);
+        return true;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a positive exact integer, got ~S", what);
+    return false;
+}
+
+SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids) {
+    Failure f{.proc = "make-tilemap"};
+    SCM result = SCM_BOOL_F;
+    {
+        int w = 0, h = 0, tw = 0, th = 0;
+        std::vector<uint32_t> gids, solid;
+        bool ok = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
+                  positive_int(tile_w, "tile-width", tw, f) &&
+                  positive_int(tile_h, "tile-height", th, f);
+        if (ok && scm_is_vector(cells)) {
+            const size_t n = scm_c_vector_length(cells);
+            for (size_t i = 0; ok && i < n; ++i) {
+                SCM g = scm_c_vector_ref(cells, i);
+                ok = scm_is_unsigned_integer(g, 0, 0xFFFFFFFFu);
+                if (ok) gids.push_back(scm_to_uint32(g));
+                else fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(i), g), "cells: element ~S is not a gid: ~S");
+            }
+        } else if (ok) {
+            ok = gid_list(cells, gids, "cells", f);
+        }
+        ok = ok && gid_list(solid_gids, solid, "solid-gids", f);
+        std::unique_ptr<MapHandle> handle;
+        if (ok) {
+            guarded(f, "make-tilemap", [&] {
+                handle = std::make_unique<MapHandle>();
+                handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid));
+                handle->grid = handle->map.solid_grid();
+            });
+        }
+        if (handle) result = wrap(std::move(handle));
+    }
+    if (f) raise(f);
+    return result;
+}
+
+SCM tilemap_p(SCM obj) { return scm_from_bool(is_tilemap(obj)); }
+
+template <typename Get>
+SCM map_accessor(SCM obj, const char* proc, Get get) {
+    Failure f;
+    if (!check_map(obj, proc, f)) raise(f);
+    return get(tilemap_handle(obj).map);
+}
+
+SCM tilemap_width(SCM m) { return map_accessor(m, "tilemap-width", [](const Tilemap& t) { return scm_from_int(t.width); }); }
+SCM tilemap_height(SCM m) { return map_accessor(m, "tilemap-height", [](const Tilemap& t) { return scm_from_int(t.height); }); }
+SCM tilemap_tile_width(SCM m) { return map_accessor(m, "tilemap-tile-width", [](const Tilemap& t) { return scm_from_int(t.tile_width); }); }
+SCM tilemap_tile_height(SCM m) { return map_accessor(m, "tilemap-tile-height", [](const Tilemap& t) { return scm_from_int(t.tile_height); }); }
+
+SCM tilemap_objects(SCM m) {
+    return map_accessor(m, "tilemap-objects", [](const Tilemap& t) {
+        SCM all = SCM_EOL;
+        for (auto layer = t.object_layers.rbegin(); layer != t.object_layers.rend(); ++layer)
+            for (auto o = layer->objects.rbegin(); o != layer->objects.rend(); ++o)
+                all = scm_cons(object_plist(*o), all);
+        return all;
+    });
+}
+
+SCM tilemap_cell_solid_p(SCM m, SCM col, SCM row) {
+    Failure f;
+    if (!check_map(m, "tilemap-cell-solid?", f)) raise(f);
+    for (SCM v : {col, row})
+        if (!scm_is_signed_integer(v, INT64_MIN, INT64_MAX)) {
+            fail(f, "wrong-type-arg", scm_list_1(v), "expected an exact integer cell index, got ~S");
+            raise(f);
+        }
+    return scm_from_bool(tilemap_handle(m).grid.solid(scm_to_int64(col), scm_to_int64(row)));
+}
+
+SCM tilemap_gid(SCM m, SCM layer, SCM col, SCM row) {
+    Failure f;
+    if (!check_map(m, "tilemap-gid", f)) raise(f);
+    const Tilemap& t = tilemap_handle(m).map;
+    if (!scm_is_unsigned_integer(layer, 0, t.layers.empty() ? 0 : t.layers.size() - 1) || t.layers.empty()) {
+        fail(f, "out-of-range", scm_list_1(layer), "no tile layer ~S");
+        raise(f);
+    }
+    for (SCM v : {col, row})
+        if (!scm_is_signed_integer(v, INT64_MIN, INT64_MAX)) {
+            fail(f, "wrong-type-arg", scm_list_1(v), "expected an exact integer cell index, got ~S");
+            raise(f);
+        }
+    return scm_from_uint32(t.layers[scm_to_size_t(layer)].raw_gid(scm_to_int64(col), scm_to_int64(row)));
+}
+
+}  // namespace
+
+void init_tilemap_type() {
+    if (scm_is_true(tilemap_type)) return;
+    tilemap_type = scm_gc_protect_object(scm_make_foreign_object_type(
+        scm_from_utf8_symbol("tilemap"), scm_list_1(scm_from_utf8_symbol("handle")), finalize_tilemap));
+}
+
+bool is_tilemap(SCM obj) {
+    return SCM_STRUCTP(obj) && scm_is_eq(SCM_STRUCT_VTABLE(obj), tilemap_type) &&
+           scm_foreign_object_ref(obj, 0) != nullptr;
+}
+
+const MapHandle& tilemap_handle(SCM obj) {
+    return *static_cast<const MapHandle*>(scm_foreign_object_ref(obj, 0));
+}
+
+bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
+    grid = nullptr;
+    if (scm_is_false(obj)) return true;
+    if (is_tilemap(obj)) {
+        grid = &tilemap_handle(obj).grid;
+        return true;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(obj), "expected a tilemap or #f, got ~S");
+    return false;
+}
+
+void register_tilemap_procedures() {
+    init_tilemap_type();
+    define_procedure("%load-tilemap", 2, 0, 0, (Subr)load_tilemap,
+                     "Loads a Tiled .tmx file (and its .tsx tilesets); the list of gids is solid too.");
+    define_procedure("make-tilemap", 6, 0, 0, (Subr)make_tilemap,
+                     "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
+                     "memory; cells is a vector (or list) of gids, row-major.");
+    define_procedure("tilemap?", 1, 0, 0, (Subr)tilemap_p, "Whether obj is a tilemap.");
+    define_procedure("tilemap-width", 1, 0, 0, (Subr)tilemap_width, "Width in cells.");
+    define_procedure("tilemap-height", 1, 0, 0, (Subr)tilemap_height, "Height in cells.");
+    define_procedure("tilemap-tile-width", 1, 0, 0, (Subr)tilemap_tile_width, "Tile width in px.");
+    define_procedure("tilemap-tile-height", 1, 0, 0, (Subr)tilemap_tile_height, "Tile height in px.");
+    define_procedure("tilemap-cell-solid?", 3, 0, 0, (Subr)tilemap_cell_solid_p,
+                     "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+    define_procedure("tilemap-objects", 1, 0, 0, (Subr)tilemap_objects,
+                     "The objects of every object layer, as entity plists.");
+    define_procedure("tilemap-gid", 4, 0, 0, (Subr)tilemap_gid,
+                     "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
+                     "number layer, 0 when empty.");
+}
+
+}  // namespace ds::guile

@@ -1,0 +1,126 @@
+;;; (downstroke engine) — the game record and its frame loop.
+(define-module (downstroke engine)
+  #:use-module (srfi srfi-1)
+  #:use-module (srfi srfi-9)
+  #:use-module (downstroke entity)
+  #:use-module (downstroke world)
+  #:use-module (downstroke physics)
+  #:export (make-game game? game-title game-width game-height game-frame-delay
+            game-scene game-scene-set! game-input game-frame game-sounds
+            game-collision-mode game-collision-mode-set!
+            game-update game-update-set! game-engine-update game-engine-update-set!
+            input-pressed? input-held? input-released? play-sound
+            default-engine-update camera-follow! game-run!))
+
+;;; Input: what is held this frame, and what was held the frame before.
+(define-record-type <input>
+  (make-input held previous)
+  input?
+  (held input-held-list)
+  (previous input-previous-list))
+
+(define (input-held? input action)
+  "Whether ACTION (a symbol) is held this frame."
+  (and (memq action (input-held-list input)) #t))
+(define (input-pressed? input action)
+  "Whether ACTION went down this frame."
+  (and (input-held? input action) (not (memq action (input-previous-list input)))))
+(define (input-released? input action)
+  "Whether ACTION went up this frame."
+  (and (memq action (input-previous-list input)) (not (input-held? input action))))
+
+(define-record-type <game>
+  (%make-game title width height frame-delay scene update render engine-update
+              collision-mode input input-script frame sounds)
+  game?
+  (title game-title)
+  (width game-width)
+  (height game-height)
+  (frame-delay game-frame-delay)
+  (scene game-scene game-scene-set!)
+  (update game-update game-update-set!)
+  (render game-render)
+  (engine-update game-engine-update game-engine-update-set!)
+  (collision-mode game-collision-mode game-collision-mode-set!)
+  (input game-input game-input-set!)
+  (input-script game-input-script game-input-script-set!)
+  (frame game-frame game-frame-set!)
+  (sounds game-sounds-reversed game-sounds-set!))
+
+(define (default-engine-update game dt)
+  "One physics pass over the game's scene (step-scene), in the game's
+collision mode."
+  (let ((scene (game-scene game)))
+    (when scene
+      (parameterize ((collision-mode (game-collision-mode game)))
+        (game-scene-set! game (step-scene scene dt))))))
+
+(define* (make-game #:key (title "Downstroke") (width 640) (height 480)
+                    (frame-delay 16) (scene #f) (update #f) (render #f)
+                    (engine-update default-engine-update)
+                    (collision-mode 'swept) (input-script '())
+                    #:allow-other-keys)
+  "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
+physics, #f disables it, a procedure (game dt) replaces it."
+  (%make-game title width height frame-delay scene update render engine-update
+              collision-mode (make-input '() '()) input-script 0 '()))
+
+(define (game-sounds game)
+  "The sounds played so far, as (frame . name), oldest first."
+  (reverse (game-sounds-reversed game)))
+
+(define (play-sound game-or-name . rest)
+  "Play a sound. Headless, the sound is recorded with the frame it was played
+in: (play-sound 'jump) uses the running game, (play-sound game 'jump) names it."
+  (let ((game (if (game? game-or-name) game-or-name (current-game)))
+        (name (if (game? game-or-name) (car rest) game-or-name)))
+    (when game
+      (game-sounds-set! game (cons (cons (game-frame game) name)
+                                   (game-sounds-reversed game))))))
+
+(define current-game (make-parameter #f))
+
+(define (entity-tagged entities target)
+  (find (lambda (e) (or (equal? (entity-ref e #:id) target)
+                        (equal? (entity-ref e #:tag) target)))
+        entities))
+
+(define (camera-follow! game)
+  "Centre the scene's camera on its camera-target entity (never left of or
+above the origin)."
+  (let* ((scene (game-scene game))
+         (target (and scene (scene-camera-target scene)))
+         (e (and target (entity-tagged (scene-entities scene) target))))
+    (when e
+      (let ((camera (scene-camera scene)))
+        (camera-x-set! camera (max 0 (- (+ (entity-ref e #:x 0) (/ (entity-ref e #:width 0) 2))
+                                        (/ (game-width game) 2))))
+        (camera-y-set! camera (max 0 (- (+ (entity-ref e #:y 0) (/ (entity-ref e #:height 0) 2))
+                                        (/ (game-height game) 2))))))))
+
+(define (scripted-held script frame)
+  ;; The actions of the last entry at or before FRAME: entries are key frames.
+  (let loop ((s script) (held '()))
+    (if (or (null? s) (> (caar s) frame)) held (loop (cdr s) (cdar s)))))
+
+(define* (game-run! game #:key (frames #f))
+  "Run GAME headless at a fixed timestep (dt = frame-delay ms): input, then
+engine-update, update, camera follow, render — for FRAMES frames, or until
+the 'quit action is held."
+  (parameterize ((current-game game))
+    (let ((dt (game-frame-delay game)))
+      (let loop ()
+        (let* ((frame (game-frame game))
+               (held (scripted-held (game-input-script game) frame)))
+          (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
+            (game-input-set! game (make-input held (input-held-list (game-input game))))
+            (let ((engine (game-engine-update game)))
+              (when engine (engine game dt)))
+            (let ((update (game-update game)))
+              (when update (update game dt)))
+            (camera-follow! game)
+            (let ((render (game-render game)))
+              (when render (render game)))
+            (game-frame-set! game (+ frame 1))
+            (loop)))))
+    game))

@@ -1,0 +1,57 @@
+;;; (downstroke physics) — the physics steps, all native.
+(define-module (downstroke physics)
+  #:use-module (downstroke native)
+  #:use-module (downstroke world)
+  #:re-export (resolve-entity-collisions sync-groups aabb-overlap?)
+  #:export (*gravity* *jump-force* *on-solid-tolerance* collision-mode
+            step-tweens apply-acceleration apply-gravity apply-velocity-x
+            apply-velocity-y apply-velocity resolve-tile-collisions-x
+            resolve-tile-collisions-y detect-on-solid step-scene))
+
+(define *gravity* 1)
+(define *jump-force* 15)
+(define *on-solid-tolerance* 4)
+
+(define collision-mode
+  (make-parameter 'swept
+                  (lambda (mode)
+                    (unless (memq mode '(swept discrete))
+                      (scm-error 'wrong-type-arg "collision-mode"
+                                 "expected 'swept or 'discrete, got ~S" (list mode) #f))
+                    mode)))
+
+(define (tilemap-of scene) (and scene (scene-tilemap scene)))
+(define (entities-of scene) (if scene (scene-entities scene) '()))
+
+(define (step-tweens entity scene dt)
+  "Advance ENTITY's #:tween by DT ms."
+  (%step-tweens entity dt))
+(define (apply-acceleration entity scene dt)
+  "vy += ay, then ay = 0 (for #:gravity? entities)."
+  (%apply-acceleration entity))
+(define (apply-gravity entity scene dt)
+  "vy += *gravity* (for #:gravity? entities)."
+  (%apply-gravity entity))
+(define (apply-velocity-x entity scene dt) "x += vx." (%apply-velocity-x entity))
+(define (apply-velocity-y entity scene dt) "y += vy." (%apply-velocity-y entity))
+(define (apply-velocity entity scene dt)
+  "x += vx and y += vy; each axis can be skipped on its own."
+  (%apply-velocity entity))
+(define (resolve-tile-collisions-x entity scene dt)
+  "Snap ENTITY out of the scene tilemap's solid cells along x; zero vx."
+  (%resolve-tile-collisions-x entity (tilemap-of scene) (collision-mode)))
+(define (resolve-tile-collisions-y entity scene dt)
+  "Snap ENTITY out of the scene tilemap's solid cells along y; zero vy."
+  (%resolve-tile-collisions-y entity (tilemap-of scene) (collision-mode)))
+(define (detect-on-solid entity scene dt)
+  "Set #:on-ground? from the tiles under ENTITY and the scene's solid entities."
+  (%detect-on-solid entity (tilemap-of scene) (entities-of scene)))
+
+(define (step-scene scene dt)
+  "SCENE after one whole engine pass (the default-engine-update composition),
+done in one native call."
+  (let* ((entities (scene-entities scene))
+         (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode))))
+    (if (eq? stepped entities)
+        scene
+        (update-scene scene #:entities stepped))))

@@ -1,0 +1,63 @@
+;;; (downstroke world) — scenes (immutable) and the camera (mutable).
+(define-module (downstroke world)
+  #:use-module (srfi srfi-9)
+  #:export (make-scene scene? update-scene
+            scene-entities scene-tilemap scene-camera scene-camera-target
+            scene-map-entities scene-transform-entities
+            make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
+
+(define-record-type <camera>
+  (%make-camera x y)
+  camera?
+  (x camera-x camera-x-set!)
+  (y camera-y camera-y-set!))
+
+(define* (make-camera #:key (x 0) (y 0))
+  "A camera at (X, Y), the world point drawn at the screen's top-left."
+  (%make-camera x y))
+
+(define-record-type <scene>
+  (%make-scene entities tilemap camera camera-target)
+  scene?
+  (entities scene-entities)
+  (tilemap scene-tilemap)
+  (camera scene-camera)
+  (camera-target scene-camera-target))
+
+(define (check-entities who entities)
+  (unless (list? entities)
+    (scm-error 'wrong-type-arg who "entities: expected a list, got ~S" (list entities) #f)))
+
+(define* (make-scene #:key (entities '()) (tilemap #f) (camera (make-camera))
+                     (camera-target #f))
+  "A scene: the entity list, an optional tilemap, a camera, and optionally the
+#:id (or #:tag) of the entity the camera follows."
+  (check-entities "make-scene" entities)
+  (%make-scene entities tilemap camera camera-target))
+
+(define* (update-scene scene #:key (entities (scene-entities scene))
+                       (tilemap (scene-tilemap scene)) (camera (scene-camera scene))
+                       (camera-target (scene-camera-target scene)))
+  "A copy of SCENE with the given fields replaced."
+  (check-entities "update-scene" entities)
+  (%make-scene entities tilemap camera camera-target))
+
+(define (map-keeping proc lst)
+  ;; Like map, but returns LST itself when PROC returned every element as is.
+  (let loop ((p lst) (acc '()) (changed? #f))
+    (if (null? p)
+        (if changed? (reverse! acc) lst)
+        (let ((v (proc (car p))))
+          (loop (cdr p) (cons v acc) (or changed? (not (eq? v (car p)))))))))
+
+(define (scene-map-entities scene . steps)
+  "Apply each of STEPS to every entity, one step after another."
+  (update-scene scene
+                #:entities (let loop ((entities (scene-entities scene)) (steps steps))
+                             (if (null? steps)
+                                 entities
+                                 (loop (map-keeping (car steps) entities) (cdr steps))))))
+
+(define (scene-transform-entities scene proc)
+  "SCENE with its entity list replaced by (PROC entities)."
+  (update-scene scene #:entities (proc (scene-entities scene))))

@@ -1,0 +1,13 @@
+(use-modules (srfi srfi-64) (downstroke))
+
+(test-begin "entity")
+(define e (list #:x 100 #:y 50 #:name "bob"))
+(test-equal 100 (entity-ref e #:x))
+(test-equal 0 (entity-ref e #:vx 0))
+(test-equal #f (entity-ref e #:vx))
+(test-equal '(#:x 7 #:y 50 #:name "bob") (entity-set e #:x 7))
+(test-equal '(#:x 100 #:y 50 #:name "bob" #:vx 3) (entity-set e #:vx 3))
+(test-eq "entity-set shares the tail after the key" (cddr e) (cddr (entity-set e #:x 1)))
+(test-equal '(#:x 100 #:y 50 #:name "bob") e)
+(test-error 'wrong-type-arg (entity-ref '(#:x) #:x))
+(test-end "entity")
