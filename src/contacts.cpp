@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ds {
 
@@ -82,10 +83,18 @@ void resolve_pair(Body& a, Body& b) {
 }
 
 void resolve_entity_collisions(std::span<Body> bodies) {
-    const size_t n = bodies.size();
-    for (size_t i = 0; i < n; ++i)
-        for (size_t j = i + 1; j < n; ++j)
-            if (collision_eligible(bodies[i], bodies[j])) resolve_pair(bodies[i], bodies[j]);
+    // Only solid, non-ghost bodies take part; walking just those, in list
+    // order, visits the eligible pairs in exactly the all-pairs order.
+    thread_local std::vector<size_t> members;
+    members.clear();
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].solid && !bodies[i].skips(kSkipEntityCollisions)) members.push_back(i);
+    for (size_t a = 0; a < members.size(); ++a)
+        for (size_t b = a + 1; b < members.size(); ++b) {
+            Body& first = bodies[members[a]];
+            Body& second = bodies[members[b]];
+            if (aabb_overlap(first, second)) resolve_pair(first, second);
+        }
 }
 
 }  // namespace ds

@@ -44,6 +44,13 @@ void Frame::step_tweens(World& world, double dt) {
 
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts) {
     start_.assign(bodies.begin(), bodies.end());
+    supporters_.clear();
+    support_slot_.assign(bodies.size(), -1);
+    for (size_t i = 0; i < start_.size(); ++i) {
+        if (!start_[i].solid || start_[i].skips(kSkipEntityCollisions)) continue;
+        support_slot_[i] = std::ssize(supporters_);
+        supporters_.push_back(start_[i]);
+    }
     for (size_t i = 0; i < bodies.size(); ++i) {
         Body& b = bodies[i];
         apply_acceleration(b);
@@ -52,7 +59,7 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
         resolve_tile_collisions_x(b, grid, opts.mode);
         apply_velocity_y(b);
         resolve_tile_collisions_y(b, grid, opts.mode);
-        detect_on_solid(b, start_, static_cast<std::ptrdiff_t>(i), grid);
+        detect_on_solid(b, supporters_, support_slot_[i], grid);
     }
     resolve_entity_collisions(bodies);
     sync_groups(bodies);

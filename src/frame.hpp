@@ -69,6 +69,11 @@ private:
     void step_tweens(World& world, double dt);
 
     std::vector<Body> start_;  // the frame-start scene detect-on-solid reads
+    // The frame-start bodies that can hold another up (solid, not ghosts),
+    // and each body's slot among them (-1 when it is not one): ground
+    // detection scans only these.
+    std::vector<Body> supporters_;
+    std::vector<std::ptrdiff_t> support_slot_;
     FrameReport report_;
 };
 
