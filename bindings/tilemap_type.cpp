@@ -180,14 +180,19 @@ SCM tilemap_objects(SCM m) {
     });
 }
 
-SCM tilemap_cell_solid_p(SCM m, SCM col, SCM row) {
-    Failure f;
-    if (!check_map(m, "tilemap-cell-solid?", f)) raise(f);
+// Cell indexes are exact integers (any, since cells outside the map are empty).
+void check_cell(SCM col, SCM row, Failure& f) {
     for (SCM v : {col, row})
         if (!scm_is_signed_integer(v, INT64_MIN, INT64_MAX)) {
             fail(f, "wrong-type-arg", scm_list_1(v), "expected an exact integer cell index, got ~S");
             raise(f);
         }
+}
+
+SCM tilemap_cell_solid_p(SCM m, SCM col, SCM row) {
+    Failure f;
+    if (!check_map(m, "tilemap-cell-solid?", f)) raise(f);
+    check_cell(col, row, f);
     return scm_from_bool(tilemap_handle(m).grid.solid(scm_to_int64(col), scm_to_int64(row)));
 }
 
@@ -199,11 +204,7 @@ SCM tilemap_gid(SCM m, SCM layer, SCM col, SCM row) {
         fail(f, "out-of-range", scm_list_1(layer), "no tile layer ~S");
         raise(f);
     }
-    for (SCM v : {col, row})
-        if (!scm_is_signed_integer(v, INT64_MIN, INT64_MAX)) {
-            fail(f, "wrong-type-arg", scm_list_1(v), "expected an exact integer cell index, got ~S");
-            raise(f);
-        }
+    check_cell(col, row, f);
     return scm_from_uint32(t.layers[scm_to_size_t(layer)].raw_gid(scm_to_int64(col), scm_to_int64(row)));
 }
 

@@ -1,0 +1,610 @@
+(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
+
+;;; The printed error (procedure, message, irritants) raised by THUNK, or #f.
+(define (error-text thunk)
+  (catch #t
+    (lambda () (thunk) #f)
+    (lambda (key . args)
+      (call-with-output-string
+       (lambda (port) (print-exception port #f key args))))))
+(define (mentions? text . parts)
+  (and (string? text) (every (lambda (p) (string-contains text p)) parts) #t))
+
+;;; A COLS×ROWS map of 16 px tiles whose cells in SOLID ((col . row) …) hold
+;;; gid 1, the only solid gid.
+(define (grid-map cols rows solid)
+  (let ((v (make-vector (* cols rows) 0)))
+    (for-each (lambda (c) (vector-set! v (+ (car c) (* cols (cdr c))) 1)) solid)
+    (make-tilemap cols rows 16 16 v '(1))))
+(define (column c rows) (map (lambda (r) (cons c r)) (iota rows)))
+(define (row r cols) (map (lambda (c) (cons c r)) (iota cols)))
+
+(test-begin "physics")
+
+;;; ---------------------------------------------------------------- constants
+(test-equal 1 *gravity*)
+(test-equal 15 *jump-force*)
+(test-equal 4 *on-solid-tolerance*)
+(test-equal 'swept (collision-mode))
+
+;;; ---------------------------------------------------------------- apply-acceleration
+(test-equal "vy += ay, ay reset" '(#:gravity? #t #:vy -13 #:ay 0)
+  (apply-acceleration '(#:gravity? #t #:vy 2 #:ay -15) #f 16))
+(test-equal "missing vy reads 0 and is appended" '(#:gravity? #t #:ay 0 #:vy -15)
+  (apply-acceleration '(#:gravity? #t #:ay -15) #f 16))
+(let ((e '(#:gravity? #t #:vy 2)))
+  (test-eq "ay absent: nothing changes" e (apply-acceleration e #f 16)))
+(let ((e '(#:gravity? #t #:vy 2 #:ay 0)))
+  (test-eq "ay 0: nothing changes" e (apply-acceleration e #f 16)))
+(let ((e '(#:vy 2 #:ay -15)))
+  (test-eq "guard: no #:gravity?" e (apply-acceleration e #f 16)))
+(let ((e '(#:gravity? #f #:vy 2 #:ay -15)))
+  (test-eq "guard: #:gravity? #f" e (apply-acceleration e #f 16)))
+(let ((e '(#:gravity? #t #:vy 2 #:ay -15 #:skip-pipelines (acceleration))))
+  (test-eq "skipped" e (apply-acceleration e #f 16)))
+(let ((r (apply-acceleration '(#:gravity? #t #:vy 0 #:ay -15.5) #f 16)))
+  (test-equal "flonum ay" -15.5 (entity-ref r #:vy))
+  (test-assert (inexact? (entity-ref r #:vy)))
+  (test-equal "ay reset to 0" 0 (entity-ref r #:ay)))
+(let ((r (apply-acceleration '(#:gravity? #t #:vy 3 #:ay -15) #f 16)))
+  (test-assert "exact in, exact out" (exact? (entity-ref r #:vy))))
+(let ((r (apply-acceleration '(#:gravity? #t #:vy 0 #:ay 1/2) #f 16)))
+  (test-equal "exact rationals are treated as flonums" 0.5 (entity-ref r #:vy)))
+
+;;; ---------------------------------------------------------------- apply-gravity
+(test-equal '(#:gravity? #t #:vy 4) (apply-gravity '(#:gravity? #t #:vy 3) #f 16))
+(test-equal "vy absent → appended" '(#:gravity? #t #:vy 1) (apply-gravity '(#:gravity? #t) #f 16))
+(test-equal "flonum vy" '(#:gravity? #t #:vy 3.5) (apply-gravity '(#:gravity? #t #:vy 2.5) #f 16))
+(test-assert (exact? (entity-ref (apply-gravity '(#:gravity? #t #:vy 3) #f 16) #:vy)))
+(test-equal "any true value is true" '(#:gravity? yes #:vy 1) (apply-gravity '(#:gravity? yes) #f 16))
+(let ((e '(#:gravity? #f #:vy 3)))
+  (test-eq "gravity? #f" e (apply-gravity e #f 16)))
+(let ((e '(#:vy 3)))
+  (test-eq "gravity? absent" e (apply-gravity e #f 16)))
+(let ((e '(#:gravity? #t #:vy 3 #:skip-pipelines (gravity))))
+  (test-eq "skipped" e (apply-gravity e #f 16)))
+(test-equal "the acceleration skip does not stop gravity"
+  '(#:gravity? #t #:vy 4 #:skip-pipelines (acceleration))
+  (apply-gravity '(#:gravity? #t #:vy 3 #:skip-pipelines (acceleration)) #f 16))
+
+;;; ---------------------------------------------------------------- apply-velocity-x / -y
+(test-equal '(#:x 103 #:vx 3) (apply-velocity-x '(#:x 100 #:vx 3) #f 16))
+(test-assert "103 is exact" (exact? (entity-ref (apply-velocity-x '(#:x 100 #:vx 3) #f 16) #:x)))
+(test-equal '(#:x 101.5 #:vx 1.5) (apply-velocity-x '(#:x 100 #:vx 1.5) #f 16))
+(test-assert "#:vx 1.5 gives a flonum" (inexact? (entity-ref (apply-velocity-x '(#:x 100 #:vx 1.5) #f 16) #:x)))
+(test-equal "flonum x, exact vx" '(#:x 3.5 #:vx 2) (apply-velocity-x '(#:x 1.5 #:vx 2) #f 16))
+(test-assert "100.0 + 3 is a flonum"
+  (inexact? (entity-ref (apply-velocity-x '(#:x 100.0 #:vx 3) #f 16) #:x)))
+(test-equal "exact rational vx → flonum" '(#:x 100.5 #:vx 1/2) (apply-velocity-x '(#:x 100 #:vx 1/2) #f 16))
+(test-equal "negative" '(#:x 97 #:vx -3) (apply-velocity-x '(#:x 100 #:vx -3) #f 16))
+(test-equal "x absent → appended" '(#:vx 3 #:x 3) (apply-velocity-x '(#:vx 3) #f 16))
+(let ((e '(#:x 100 #:vx 0)))
+  (test-eq "vx 0 → the entity itself" e (apply-velocity-x e #f 16)))
+(let ((e '(#:x 100)))
+  (test-eq "vx absent → the entity itself" e (apply-velocity-x e #f 16)))
+(let ((e '(#:x 100.0 #:vx 0)))
+  (test-eq "flonum x, vx 0 → the entity itself" e (apply-velocity-x e #f 16)))
+(let ((e '(#:x 100 #:vx 3 #:skip-pipelines (velocity-x))))
+  (test-eq "skipped" e (apply-velocity-x e #f 16)))
+(test-equal "no gravity needed" '(#:x 4 #:vx 3 #:gravity? #f) (apply-velocity-x '(#:x 1 #:vx 3 #:gravity? #f) #f 16))
+(test-equal "unknown keys carried through, in order"
+  '(#:name "a" #:x 3 #:hp 3 #:vx 2 #:foo (bar baz))
+  (apply-velocity-x '(#:name "a" #:x 1 #:hp 3 #:vx 2 #:foo (bar baz)) #f 16))
+(test-equal "first occurrence wins, and only it is rewritten" '(#:x 3 #:vx 2 #:x 50)
+  (apply-velocity-x '(#:x 1 #:vx 2 #:x 50) #f 16))
+(let* ((e (list #:x 1 #:vx 2 #:name "n"))
+       (copy (list-copy e)))
+  (apply-velocity-x e #f 16)
+  (test-equal "argument not mutated" copy e))
+(test-equal "dt is ignored by physics" '(#:x 103 #:vx 3) (apply-velocity-x '(#:x 100 #:vx 3) #f 1000))
+(test-equal "a scene is accepted" '(#:x 103 #:vx 3) (apply-velocity-x '(#:x 100 #:vx 3) (make-scene) 16))
+
+(test-equal '(#:y 47 #:vy -3) (apply-velocity-y '(#:y 50 #:vy -3) #f 16))
+(test-assert (exact? (entity-ref (apply-velocity-y '(#:y 50 #:vy -3) #f 16) #:y)))
+(test-equal '(#:y 50.25 #:vy 0.25) (apply-velocity-y '(#:y 50 #:vy 0.25) #f 16))
+(test-equal "y absent" '(#:vy 2 #:y 2) (apply-velocity-y '(#:vy 2) #f 16))
+(let ((e '(#:y 50 #:vy 0)))
+  (test-eq e (apply-velocity-y e #f 16)))
+(let ((e '(#:y 50 #:vy 2 #:skip-pipelines (velocity-y))))
+  (test-eq "skipped" e (apply-velocity-y e #f 16)))
+(test-equal "x is left alone" '(#:x 1 #:y 52 #:vx 9 #:vy 2) (apply-velocity-y '(#:x 1 #:y 50 #:vx 9 #:vy 2) #f 16))
+
+;;; ---------------------------------------------------------------- apply-velocity (legacy)
+(test-equal '(#:x 4 #:y 6 #:vx 3 #:vy 4) (apply-velocity '(#:x 1 #:y 2 #:vx 3 #:vy 4) #f 16))
+(test-equal "velocity-x skipped" '(#:x 1 #:y 6 #:vx 3 #:vy 4 #:skip-pipelines (velocity-x))
+  (apply-velocity '(#:x 1 #:y 2 #:vx 3 #:vy 4 #:skip-pipelines (velocity-x)) #f 16))
+(test-equal "velocity-y skipped" '(#:x 4 #:y 2 #:vx 3 #:vy 4 #:skip-pipelines (velocity-y))
+  (apply-velocity '(#:x 1 #:y 2 #:vx 3 #:vy 4 #:skip-pipelines (velocity-y)) #f 16))
+(let ((e '(#:x 1 #:y 2 #:vx 3 #:vy 4 #:skip-pipelines (velocity-y velocity-x))))
+  (test-eq "both skipped" e (apply-velocity e #f 16)))
+(test-equal "both absent keys appended" '(#:vx 3 #:vy 4 #:x 3 #:y 4) (apply-velocity '(#:vx 3 #:vy 4) #f 16))
+
+;;; ---------------------------------------------------------------- errors
+(define (step-error step e) (error-text (lambda () (step e #f 16))))
+(test-error (apply-velocity-x '(#:x "abc" #:vx 1) #f 16))
+(test-assert "string: names procedure, key and value"
+  (mentions? (step-error apply-velocity-x '(#:x "abc" #:vx 1)) "apply-velocity-x" "#:x" "\"abc\""))
+(test-assert "symbol where a number is expected"
+  (mentions? (step-error apply-velocity-y '(#:y 1 #:vy up)) "apply-velocity-y" "#:vy" "up"))
+(test-assert "+nan.0"
+  (mentions? (step-error apply-velocity-x (list #:x +nan.0 #:vx 1)) "apply-velocity-x" "#:x" "+nan.0"))
+(test-assert "+inf.0"
+  (mentions? (step-error apply-velocity-x (list #:x 0 #:vx +inf.0)) "#:vx" "+inf.0"))
+(test-assert "-inf.0"
+  (mentions? (step-error apply-gravity (list #:gravity? #t #:vy -inf.0)) "apply-gravity" "#:vy" "-inf.0"))
+(test-assert "complex"
+  (mentions? (step-error apply-acceleration '(#:gravity? #t #:ay 1+2i)) "apply-acceleration" "#:ay" "+2.0i"))
+(test-assert "malformed skip list (not a list)"
+  (mentions? (step-error apply-velocity-x '(#:x 0 #:vx 1 #:skip-pipelines velocity-x))
+             "apply-velocity-x" "#:skip-pipelines" "velocity-x"))
+(test-assert "malformed skip list (non-symbol)"
+  (mentions? (step-error apply-gravity '(#:gravity? #t #:skip-pipelines (gravity "tweens")))
+             "apply-gravity" "#:skip-pipelines"))
+(test-assert "malformed skip list (improper)"
+  (mentions? (step-error apply-velocity-y '(#:y 0 #:vy 1 #:skip-pipelines (gravity . tweens)))
+             "#:skip-pipelines"))
+(test-assert "odd length"
+  (mentions? (step-error apply-velocity-x '(#:x 1 #:vx)) "apply-velocity-x" "malformed entity"))
+(test-assert "non-keyword key"
+  (mentions? (step-error apply-velocity-x '(#:x 1 vx 2)) "malformed entity" "vx"))
+(test-assert "not a list"
+  (mentions? (step-error apply-velocity-x 17) "malformed entity" "17"))
+(test-assert "width: a string"
+  (mentions? (error-text (lambda () (resolve-tile-collisions-x '(#:x 0 #:vx 1 #:width "w") #f 16)))
+             "resolve-tile-collisions-x" "#:width"))
+(test-assert "sync-groups names the key"
+  (mentions? (error-text (lambda () (sync-groups '((#:group-id g #:group-origin? #t #:x "a")))))
+             "sync-groups" "#:x"))
+(test-assert "resolve-entity-collisions, malformed element"
+  (mentions? (error-text (lambda () (resolve-entity-collisions '((#:x 0) (#:y))))) "resolve-entity-collisions" "malformed entity"))
+(test-assert "resolve-entity-collisions, not a list"
+  (error-text (lambda () (resolve-entity-collisions 'boxes))))
+(test-assert "detect-on-solid, a malformed scene entity"
+  (mentions? (error-text (lambda () (detect-on-solid '(#:gravity? #t #:x 0 #:y 0 #:width 4 #:height 4)
+                                                      (make-scene entities: '((#:x "x"))) 16)))
+             "detect-on-solid" "#:x"))
+(test-assert "a non-tilemap in the scene's tilemap slot"
+  (error-text (lambda () (resolve-tile-collisions-x '(#:x 0 #:vx 1 #:width 4 #:height 4)
+                                                    (make-scene tilemap: 'nope) 16))))
+(test-error "collision-mode refuses other symbols" (collision-mode 'sideways))
+(test-error "collision-mode refuses other symbols (parameterize)"
+  (parameterize ((collision-mode 'fast)) #t))
+
+;;; ---------------------------------------------------------------- resolve-tile-collisions-x
+;; A 20×3 map with a wall at column 5: x ∈ [80, 96).
+(define wall (make-scene tilemap: (grid-map 20 3 (column 5 3))))
+
+;; Moved right from 60 to 70: box [70, 86) spans columns 4..5 → x = 5·16 − 16 = 64.
+(test-equal '(#:x 64 #:y 16 #:width 16 #:height 16 #:vx 0)
+  (resolve-tile-collisions-x '(#:x 70 #:y 16 #:width 16 #:height 16 #:vx 10) wall 16))
+(test-equal "discrete: same when |vx| ≤ w" '(#:x 64 #:y 16 #:width 16 #:height 16 #:vx 0)
+  (parameterize ((collision-mode 'discrete))
+    (resolve-tile-collisions-x '(#:x 70 #:y 16 #:width 16 #:height 16 #:vx 10) wall 16)))
+(test-assert "snapped x is exact" (exact? (entity-ref (resolve-tile-collisions-x
+                                                       '(#:x 70 #:y 16 #:width 16 #:height 16 #:vx 10) wall 16) #:x)))
+;; Moved left from 98 to 90: box [90, 106) spans columns 5..6 → x = (5+1)·16 = 96.
+(test-equal '(#:x 96 #:y 0 #:width 16 #:height 16 #:vx 0)
+  (resolve-tile-collisions-x '(#:x 90 #:y 0 #:width 16 #:height 16 #:vx -8) wall 16))
+(test-equal "discrete, left" '(#:x 96 #:y 0 #:width 16 #:height 16 #:vx 0)
+  (parameterize ((collision-mode 'discrete))
+    (resolve-tile-collisions-x '(#:x 90 #:y 0 #:width 16 #:height 16 #:vx -8) wall 16)))
+;; Flonum width → flonum result: 80 − 16.0 = 64.0.
+(let ((r (resolve-tile-collisions-x '(#:x 70 #:y 16 #:width 16.0 #:height 16 #:vx 10) wall 16)))
+  (test-equal 64.0 (entity-ref r #:x))
+  (test-equal 0 (entity-ref r #:vx)))
+;; Wider box, several solid columns: leftmost solid column wins.
+;; Walls at 5 and 6 ([80, 112)); box [70, 110) spans 4..6 → x = 80 − 40 = 40.
+(test-equal '(#:x 40 #:y 0 #:width 40 #:height 16 #:vx 0)
+  (resolve-tile-collisions-x '(#:x 70 #:y 0 #:width 40 #:height 16 #:vx 10)
+                             (make-scene tilemap: (grid-map 20 3 (append (column 5 3) (column 6 3)))) 16))
+;; Moving left through the same double wall: box [90, 130) spans 5..8 → rightmost
+;; solid column 6 → x = 7·16 = 112.
+(test-equal '(#:x 112 #:y 0 #:width 40 #:height 16 #:vx 0)
+  (parameterize ((collision-mode 'discrete))
+    (resolve-tile-collisions-x '(#:x 90 #:y 0 #:width 40 #:height 16 #:vx -10)
+                               (make-scene tilemap: (grid-map 20 3 (append (column 5 3) (column 6 3)))) 16)))
+(let ((e '(#:x 64 #:y 16 #:width 16 #:height 16 #:vx 4)))
+  (test-eq "touching the wall is not overlapping ([64, 80) vs column 5)" e (resolve-tile-collisions-x e wall 16)))
+(let ((e '(#:x 84 #:y 16 #:width 16 #:height 16 #:vx 0)))
+  (test-eq "vx 0: nothing, even inside a wall" e (resolve-tile-collisions-x e wall 16)))
+(let ((e '(#:x 84 #:y 16 #:width 16 #:height 16)))
+  (test-eq "vx absent: nothing" e (resolve-tile-collisions-x e wall 16)))
+(let ((e '(#:x 84 #:y 16 #:width 16 #:height 16 #:vx 3)))
+  (test-eq "no tilemap (scene #f)" e (resolve-tile-collisions-x e #f 16))
+  (test-eq "no tilemap (scene without one)" e (resolve-tile-collisions-x e (make-scene) 16)))
+(let ((e '(#:x 84 #:y 16 #:width 16 #:height 16 #:vx 3 #:skip-pipelines (tile-collisions-x))))
+  (test-eq "skipped" e (resolve-tile-collisions-x e wall 16)))
+(let ((e '(#:x 84 #:y 16 #:width 0 #:height 16 #:vx 3)))
+  (test-eq "width 0 overlaps nothing" e (resolve-tile-collisions-x e wall 16))
+  (test-eq "width 0 overlaps nothing (discrete)" e
+    (parameterize ((collision-mode 'discrete)) (resolve-tile-collisions-x e wall 16))))
+(let ((e '(#:x 84 #:y 16 #:width 16 #:height -2 #:vx 3)))
+  (test-eq "negative height overlaps nothing" e (resolve-tile-collisions-x e wall 16)))
+(let ((e '(#:x 84 #:y 16 #:width 16 #:vx 3)))
+  (test-eq "missing height (0) overlaps nothing" e (resolve-tile-collisions-x e wall 16)))
+;; Only the rows the box spans count: a wall at (5, 1) only; box in row 2.
+(let ((e '(#:x 84 #:y 32 #:width 16 #:height 16 #:vx 3))
+      (s (make-scene tilemap: (grid-map 20 3 '((5 . 1))))))
+  (test-eq "wall in another row" e (resolve-tile-collisions-x e s 16))
+  ;; y 20 → rows 1..2 → hits.
+  (test-equal '(#:x 64 #:y 20 #:width 16 #:height 16 #:vx 0)
+    (resolve-tile-collisions-x '(#:x 84 #:y 20 #:width 16 #:height 16 #:vx 3) s 16)))
+(let ((e '(#:x 400 #:y 16 #:width 16 #:height 16 #:vx 3)))
+  (test-eq "cells outside the map are empty" e (resolve-tile-collisions-x e wall 16)))
+(let ((e '(#:x -40 #:y 16 #:width 16 #:height 16 #:vx -3)))
+  (test-eq "left of the map is empty" e (resolve-tile-collisions-x e wall 16)))
+(test-equal "unknown keys kept in place" '(#:name "p" #:x 64 #:y 16 #:hp 3 #:width 16 #:height 16 #:vx 0 #:z 1)
+  (resolve-tile-collisions-x '(#:name "p" #:x 70 #:y 16 #:hp 3 #:width 16 #:height 16 #:vx 10 #:z 1) wall 16))
+
+;; Swept vs discrete: 160 px in one frame, from x 0 to 160 (box [160, 176),
+;; column 10). Discrete sees no wall there: it tunnels. Swept checks columns
+;; 1..10 (from the leading edge at 16 to 176) and stops at column 5: x = 64.
+(define fast-right '(#:x 160 #:y 16 #:width 16 #:height 16 #:vx 160))
+(test-eq "discrete lets a 160 px/frame box through"
+  fast-right
+  (parameterize ((collision-mode 'discrete)) (resolve-tile-collisions-x fast-right wall 16)))
+(test-equal "swept (default) stops it at the wall" '(#:x 64 #:y 16 #:width 16 #:height 16 #:vx 0)
+  (resolve-tile-collisions-x fast-right wall 16))
+(test-equal "swept, explicitly" '(#:x 64 #:y 16 #:width 16 #:height 16 #:vx 0)
+  (parameterize ((collision-mode 'swept)) (resolve-tile-collisions-x fast-right wall 16)))
+;; Leftward from 200 to 40: discrete sees columns 2..3 (empty); swept sees
+;; [40, 200) → columns 2..12, walked from the right: column 5 → x = 96.
+(define fast-left '(#:x 40 #:y 0 #:width 16 #:height 16 #:vx -160))
+(test-eq "discrete, leftward tunnel" fast-left
+  (parameterize ((collision-mode 'discrete)) (resolve-tile-collisions-x fast-left wall 16)))
+(test-equal "swept, leftward" '(#:x 96 #:y 0 #:width 16 #:height 16 #:vx 0)
+  (resolve-tile-collisions-x fast-left wall 16))
+;; The whole frame through apply-velocity-x then resolve, as the engine does.
+(let ((moved (apply-velocity-x '(#:x 0 #:y 16 #:width 16 #:height 16 #:vx 160) wall 16)))
+  (test-equal 160 (entity-ref moved #:x))
+  (test-equal 64 (entity-ref (resolve-tile-collisions-x moved wall 16) #:x))
+  (test-equal 160 (entity-ref (parameterize ((collision-mode 'discrete))
+                                (resolve-tile-collisions-x moved wall 16)) #:x)))
+
+;;; ---------------------------------------------------------------- resolve-tile-collisions-y
+;; A 10×20 map with a floor at row 8: y ∈ [128, 144).
+(define floor-scene (make-scene tilemap: (grid-map 10 20 (row 8 10))))
+;; Fell from 114 to 120: box [120, 136) spans rows 7..8 → y = 128 − 16 = 112.
+(test-equal '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6) floor-scene 16))
+(test-equal "discrete, same" '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0)
+  (parameterize ((collision-mode 'discrete))
+    (resolve-tile-collisions-y '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6) floor-scene 16)))
+;; Ceiling at row 2, [32, 48): moving up, box [40, 56) spans rows 2..3 → y = 3·16 = 48.
+(define ceiling-scene (make-scene tilemap: (grid-map 10 20 (row 2 10))))
+(test-equal '(#:x 0 #:y 48 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y '(#:x 0 #:y 40 #:width 16 #:height 16 #:vy -5) ceiling-scene 16))
+(let ((e '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 3)))
+  (test-eq "resting exactly on the floor: touching" e (resolve-tile-collisions-y e floor-scene 16)))
+(let ((e '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 0)))
+  (test-eq "vy 0: nothing" e (resolve-tile-collisions-y e floor-scene 16)))
+(let ((e '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6 #:skip-pipelines (tile-collisions-y))))
+  (test-eq "skipped" e (resolve-tile-collisions-y e floor-scene 16)))
+(let ((e '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6 #:skip-pipelines (tile-collisions-x))))
+  (test-equal "the x skip does not stop y" 112 (entity-ref (resolve-tile-collisions-y e floor-scene 16) #:y)))
+(let ((e '(#:x 200 #:y 120 #:width 16 #:height 16 #:vy 6)))
+  (test-eq "columns outside the map" e (resolve-tile-collisions-y e floor-scene 16)))
+(let ((e '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6)))
+  (test-eq "no tilemap" e (resolve-tile-collisions-y e (make-scene) 16)))
+;; Falling 200 px in a frame: from 0 to 200, box [200, 216) (rows 12..13).
+;; Discrete: no floor there. Swept: rows 1..13 → row 8 → y = 112.
+(define fast-fall '(#:x 0 #:y 200 #:width 16 #:height 16 #:vy 200))
+(test-eq "discrete: tunnels through the floor" fast-fall
+  (parameterize ((collision-mode 'discrete)) (resolve-tile-collisions-y fast-fall floor-scene 16)))
+(test-equal "swept: lands" '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y fast-fall floor-scene 16))
+;; Rising 200 px in a frame: from 300 to 100 (box [100, 116), rows 6..7), crossing
+;; row 8. Discrete: rows 6..7 are empty. Swept looks at [100, 300) → rows 6..18,
+;; walked from the bottom: row 8 → y = 9·16 = 144.
+(define fast-rise '(#:x 0 #:y 100 #:width 16 #:height 16 #:vy -200))
+(test-eq "discrete: rises through" fast-rise
+  (parameterize ((collision-mode 'discrete)) (resolve-tile-collisions-y fast-rise floor-scene 16)))
+(test-equal "swept: bumps its head" '(#:x 0 #:y 144 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y fast-rise floor-scene 16))
+;; Flonum y: 120.5 → [120.5, 136.5) rows 7..8 → y = 128 − 16 = 112 (numerically).
+(test-assert (= 112 (entity-ref (resolve-tile-collisions-y '(#:x 0 #:y 120.5 #:width 16 #:height 16 #:vy 6.5)
+                                                           floor-scene 16) #:y)))
+
+;;; ---------------------------------------------------------------- detect-on-solid
+;; Tile support: floor at row 8 (top y 128).
+(define (feet-at y) (list #:x 20 #:y y #:width 16 #:height 16 #:gravity? #t))
+(test-equal "feet on the floor row" (append (feet-at 112) '(#:on-ground? #t))
+  (detect-on-solid (feet-at 112) floor-scene 16))
+(test-equal "feet inside the floor row" (append (feet-at 120) '(#:on-ground? #t))
+  (detect-on-solid (feet-at 120) floor-scene 16))
+(let ((e (feet-at 111)))
+  (test-eq "one pixel above: row 7, no support; #f is not written when absent" e
+    (detect-on-solid e floor-scene 16)))
+(test-equal "support lost: #t → #f" '(#:x 20 #:y 100 #:width 16 #:height 16 #:gravity? #t #:on-ground? #f)
+  (detect-on-solid '(#:x 20 #:y 100 #:width 16 #:height 16 #:gravity? #t #:on-ground? #t) floor-scene 16))
+(let ((e (append (feet-at 112) '(#:on-ground? #t))))
+  (test-eq "still supported: the entity itself" e (detect-on-solid e floor-scene 16)))
+(let ((e '(#:x 20 #:y 112 #:width 16 #:height 16)))
+  (test-eq "guard: no #:gravity?" e (detect-on-solid e floor-scene 16)))
+(let ((e '(#:x 20 #:y 112 #:width 16 #:height 16 #:gravity? #f #:on-ground? #f)))
+  (test-eq "guard: #:gravity? #f" e (detect-on-solid e floor-scene 16)))
+(let ((e (append (feet-at 112) '(#:skip-pipelines (on-solid)))))
+  (test-eq "skipped" e (detect-on-solid e floor-scene 16)))
+(let ((e (feet-at 112)))
+  (test-eq "no tilemap, no entities" e (detect-on-solid e (make-scene) 16))
+  (test-eq "scene #f" e (detect-on-solid e #f 16)))
+;; Columns spanned: floor with holes. Solid only at column 3 of row 8.
+(define pillar (make-scene tilemap: (grid-map 10 20 '((3 . 8)))))
+(test-equal "box over column 3" #t
+  (entity-ref (detect-on-solid '(#:x 48 #:y 112 #:width 16 #:height 16 #:gravity? #t) pillar 16) #:on-ground?))
+(test-equal "box [32, 48) over column 2 only" #f
+  (entity-ref (detect-on-solid '(#:x 32 #:y 112 #:width 16 #:height 16 #:gravity? #t) pillar 16) #:on-ground?))
+(test-equal "box [64, 80) touching column 3's edge" #f
+  (entity-ref (detect-on-solid '(#:x 64 #:y 112 #:width 16 #:height 16 #:gravity? #t) pillar 16) #:on-ground?))
+;; A 48 px box [32, 80) spans columns 2..4; its lower corners are over 2 and 4
+;; (both empty) but column 3 under its middle is solid: supported (SPEC).
+(test-equal "wide box supported under its middle" #t
+  (entity-ref (detect-on-solid '(#:x 32 #:y 112 #:width 48 #:height 16 #:gravity? #t) pillar 16) #:on-ground?))
+
+;; Entity support.
+(define platform '(#:id plat #:x 0 #:y 100 #:width 64 #:height 16 #:solid? #t #:immovable? #t))
+(define (on-platform x y . more)
+  (let ((e (append (list #:x x #:y y #:width 16 #:height 16 #:gravity? #t) more)))
+    (entity-ref (detect-on-solid e (make-scene entities: (list platform)) 16) #:on-ground?)))
+(test-equal "feet exactly on its top" #t (on-platform 10 84))
+(test-equal "feet 4 px below the top (tolerance)" #t (on-platform 10 88))
+(test-equal "feet 5 px below the top" #f (on-platform 10 89))
+(test-equal "feet 4 px above the top" #t (on-platform 10 80))
+(test-equal "feet 5 px above the top" #f (on-platform 10 79))
+(test-equal "flonum within tolerance" #t (on-platform 10 87.5))
+(test-equal "vy 4 vs 0" #t (on-platform 10 84 #:vy 4))
+(test-equal "vy 5 vs 0" #f (on-platform 10 84 #:vy 5))
+(test-equal "vy -5 vs 0" #f (on-platform 10 84 #:vy -5))
+(test-equal "horizontal overlap is strict: touching on the right" #f (on-platform 64 84))
+(test-equal "one pixel of overlap on the right" #t (on-platform 63 84))
+(test-equal "touching on the left" #f (on-platform -16 84))
+(test-equal "one pixel of overlap on the left" #t (on-platform -15 84))
+(let ((moving '(#:x 0 #:y 100 #:width 64 #:height 16 #:solid? #t #:vy 3)))
+  (test-equal "moving platform, vy 7 vs 3" #t
+    (entity-ref (detect-on-solid '(#:x 10 #:y 84 #:width 16 #:height 16 #:gravity? #t #:vy 7)
+                                 (make-scene entities: (list moving)) 16) #:on-ground?))
+  (test-equal "moving platform, vy 8 vs 3" #f
+    (entity-ref (detect-on-solid '(#:x 10 #:y 84 #:width 16 #:height 16 #:gravity? #t #:vy 8)
+                                 (make-scene entities: (list moving)) 16) #:on-ground?)))
+(let ((ghost '(#:x 0 #:y 100 #:width 64 #:height 16)))
+  (test-equal "a non-solid entity supports nothing" #f
+    (entity-ref (detect-on-solid '(#:x 10 #:y 84 #:width 16 #:height 16 #:gravity? #t)
+                                 (make-scene entities: (list ghost)) 16) #:on-ground?)))
+(let ((ghost '(#:x 0 #:y 100 #:width 64 #:height 16 #:solid? #t #:skip-pipelines (entity-collisions))))
+  (test-equal "a solid skipping entity-collisions supports nothing" #f
+    (entity-ref (detect-on-solid '(#:x 10 #:y 84 #:width 16 #:height 16 #:gravity? #t)
+                                 (make-scene entities: (list ghost)) 16) #:on-ground?)))
+(let ((e '(#:x 10 #:y 84 #:width 16 #:height 16 #:gravity? #t #:solid? #t)))
+  (test-equal "supported by the second of several entities" #t
+    (entity-ref (detect-on-solid e (make-scene entities: (list e '(#:x 500 #:y 0 #:width 1 #:height 1 #:solid? #t)
+                                                              platform)) 16)
+                #:on-ground?)))
+(test-equal "tile or entity: either is enough (entity, no tile)" #t
+  (entity-ref (detect-on-solid '(#:x 10 #:y 84 #:width 16 #:height 16 #:gravity? #t)
+                               (make-scene tilemap: (grid-map 10 20 '()) entities: (list platform)) 16)
+              #:on-ground?))
+;; Self-exclusion. A 4 px tall solid body would "support itself":
+;; |(y+h) − y| = 4 ≤ 4 and |vy − vy| = 0.
+(define tiny '(#:x 0 #:y 0 #:width 8 #:height 4 #:solid? #t #:gravity? #t))
+(test-eq "self excluded by eq?" tiny (detect-on-solid tiny (make-scene entities: (list tiny)) 16))
+(test-equal "a copy (not eq?, no #:id) is another entity" #t
+  (entity-ref (detect-on-solid tiny (make-scene entities: (list (list-copy tiny))) 16) #:on-ground?))
+(define tiny-id (list #:id (string-copy "me") #:x 0 #:y 0 #:width 8 #:height 4 #:solid? #t #:gravity? #t))
+(test-eq "self excluded by equal #:id (a different string object)" tiny-id
+  (detect-on-solid tiny-id (make-scene entities: (list (list #:id (string-copy "me") #:x 0 #:y 0 #:width 8
+                                                               #:height 4 #:solid? #t))) 16))
+(test-equal "a different #:id supports" #t
+  (entity-ref (detect-on-solid tiny-id (make-scene entities: (list (list #:id "you" #:x 0 #:y 0 #:width 8
+                                                                         #:height 4 #:solid? #t))) 16)
+              #:on-ground?))
+
+;;; ---------------------------------------------------------------- resolve-entity-collisions
+(define (box x y w h . more) (append (list #:x x #:y y #:width w #:height h #:solid? #t) more))
+;; ox = min(10, 17) − max(0, 7) = 3 < oy = 10 → x. A's centre 5 < B's 12:
+;; A moves −⌈3/2⌉ = −2, B moves +1; vx −1 / +1.
+(test-equal "odd integer overlap split 2/1"
+  (list (box -2 0 10 10 #:vx -1) (box 8 0 10 10 #:vx 1))
+  (resolve-entity-collisions (list (box 0 0 10 10) (box 7 0 10 10))))
+(test-assert "exact results"
+  (every exact? (map (lambda (e) (entity-ref e #:x))
+                     (resolve-entity-collisions (list (box 0 0 10 10) (box 7 0 10 10))))))
+;; Listed the other way: the earlier (B) takes ⌈3/2⌉ = 2 and moves positive.
+(test-equal "earlier entity takes the larger half"
+  (list (box 9 0 10 10 #:vx 1) (box -1 0 10 10 #:vx -1))
+  (resolve-entity-collisions (list (box 7 0 10 10) (box 0 0 10 10))))
+;; Flonum input: 1.5 each.
+(let ((r (resolve-entity-collisions (list (box 0 0 10 10) (box 7.0 0 10 10)))))
+  (test-equal "flonum split" '(-1.5 8.5) (map (lambda (e) (entity-ref e #:x)) r))
+  (test-equal "velocities ±1" '(-1 1) (map (lambda (e) (entity-ref e #:vx)) r)))
+;; Even overlap 4: 2/2.
+(test-equal "even overlap 4 split 2/2" '(-2 8)
+  (map (lambda (e) (entity-ref e #:x)) (resolve-entity-collisions (list (box 0 0 10 10) (box 6 0 10 10)))))
+;; y axis: ox 10, oy 5 → y. A centre 5 < B centre 10: A up ⌈5/2⌉ = 3, B down 2.
+(test-equal "y axis"
+  (list (box 0 -3 10 10 #:vy -1) (box 0 7 10 10 #:vy 1))
+  (resolve-entity-collisions (list (box 0 0 10 10) (box 0 5 10 10))))
+;; ox = oy → y (x only when ox < oy): boxes offset by 5 on both axes.
+(test-equal "ox = oy goes along y"
+  (list (box 0 -3 10 10 #:vy -1) (box 5 7 10 10 #:vy 1))
+  (resolve-entity-collisions (list (box 0 0 10 10) (box 5 5 10 10))))
+;; Equal centres on the axis: the earlier moves negative.
+;; A y [0,10) centre 5; B y [2,8) centre 5; ox 10, oy 6 → y; A −3, B +3.
+(test-equal "tie: the earlier moves negative"
+  (list (box 0 -3 10 10 #:vy -1) (box 0 5 10 6 #:vy 1))
+  (resolve-entity-collisions (list (box 0 0 10 10) (box 0 2 10 6))))
+(test-equal "tie, other order"
+  (list (box 0 -1 10 6 #:vy -1) (box 0 3 10 10 #:vy 1))
+  (resolve-entity-collisions (list (box 0 2 10 6) (box 0 0 10 10))))
+;; Existing velocities are overwritten in place.
+(let ((r (resolve-entity-collisions (list (box 0 0 10 10 #:vx 5) (box 7 0 10 10 #:vx -7)))))
+  (test-equal "velocities replaced in place" (list (box -2 0 10 10 #:vx -1) (box 8 0 10 10 #:vx 1)) r))
+;; Sequential pairs: (A,B) then (A,C) then (B,C), each seeing earlier results.
+;; A 0, B 7, C 14 (w 10). (A,B): A −2 → −2, B +1 → 8. (A,C): [−2,8) vs [14,24) no.
+;; (B,C): [8,18) vs [14,24): o 4 → B −2 → 6, C +2 → 16.
+(test-equal "one sequential pass"
+  (list (box -2 0 10 10 #:vx -1) (box 6 0 10 10 #:vx -1) (box 16 0 10 10 #:vx 1))
+  (resolve-entity-collisions (list (box 0 0 10 10) (box 7 0 10 10) (box 14 0 10 10))))
+
+;; Immovable vs movable.
+(define plat2 (box 0 100 100 20 #:immovable? #t))
+;; Landing: mover centre y 98 < 110. ox = 100 − 96 = 4 < oy = 106 − 100 = 6,
+;; yet it lands: y = 100 − 16 = 84, vy 0.
+(test-equal "landing wins over a narrow side overlap"
+  (list (box 96 84 16 16 #:vy 0 #:vx 2) plat2)
+  (resolve-entity-collisions (list (box 96 90 16 16 #:vy 3 #:vx 2) plat2)))
+(test-equal "immovable listed first"
+  (list plat2 (box 40 84 16 16 #:vy 0))
+  (resolve-entity-collisions (list plat2 (box 40 90 16 16 #:vy 3))))
+(let ((r (resolve-entity-collisions (list plat2 (box 40 90 16 16 #:vy 3)))))
+  (test-eq "the immovable one is untouched" plat2 (car r)))
+;; Side push: wall x [100, 120), y [0, 100), centre (110, 50).
+(define wall2 (box 100 0 20 100 #:immovable? #t))
+;; Mover centre y 58 ≥ 50; ox = 6 < oy = 16; centre x 98 < 110 → x = 100 − 16 = 84.
+(test-equal "side push to the left"
+  (list (box 84 50 16 16 #:vx 0) wall2)
+  (resolve-entity-collisions (list (box 90 50 16 16 #:vx 5) wall2)))
+;; From the right: x 114, ox = 120 − 114 = 6; centre 122 > 110 → x = 120.
+(test-equal "side push to the right"
+  (list (box 120 50 16 16 #:vx 0) wall2)
+  (resolve-entity-collisions (list (box 114 50 16 16 #:vx -5) wall2)))
+;; From below: ceiling x [0,100), y [0,20), centre y 10; mover y 15 (centre 23):
+;; ox 16, oy 5 → not ox < oy → y = 0 + 20 = 20, vy 0.
+(define ceiling2 (box 0 0 100 20 #:immovable? #t))
+(test-equal "pushed down from below"
+  (list (box 40 20 16 16 #:vy 0) ceiling2)
+  (resolve-entity-collisions (list (box 40 15 16 16 #:vy -3) ceiling2)))
+(let ((l (list (box 0 0 10 10 #:immovable? #t) (box 5 5 10 10 #:immovable? #t))))
+  (test-eq "both immovable: skipped" l (resolve-entity-collisions l)))
+(let ((l (list (box 0 0 10 10) (box 7 0 10 10 #:skip-pipelines '(entity-collisions)))))
+  (test-eq "one skips entity-collisions: no push" l (resolve-entity-collisions l)))
+(let ((l (list (box 0 0 10 10 #:skip-pipelines '(entity-collisions)) (box 7 0 10 10))))
+  (test-eq "the other skips entity-collisions" l (resolve-entity-collisions l)))
+(let ((l (list '(#:x 0 #:y 0 #:width 10 #:height 10) (box 7 0 10 10))))
+  (test-eq "one not solid" l (resolve-entity-collisions l)))
+(let ((l (list (append '(#:solid? #f) (box 0 0 10 10)) (box 7 0 10 10))))
+  (test-eq "first occurrence of #:solid? wins" l (resolve-entity-collisions l)))
+(let ((l (list (box 0 0 10 10) (box 10 0 10 10))))
+  (test-eq "touching: no push" l (resolve-entity-collisions l)))
+(test-eq "empty list" '() (resolve-entity-collisions '()))
+(let* ((far (box 500 500 10 10 #:name "far"))
+       (r (resolve-entity-collisions (list (box 0 0 10 10) far (box 7 0 10 10)))))
+  (test-eq "unchanged elements are the same objects" far (cadr r))
+  (test-equal (box -2 0 10 10 #:vx -1) (car r)))
+(test-equal "unknown keys kept"
+  (list '(#:name a #:x -2 #:y 0 #:width 10 #:height 10 #:solid? #t #:vx -1)
+        '(#:x 8 #:y 0 #:hp 9 #:width 10 #:height 10 #:solid? #t #:vx 1))
+  (resolve-entity-collisions (list '(#:name a #:x 0 #:y 0 #:width 10 #:height 10 #:solid? #t)
+                                   '(#:x 7 #:y 0 #:hp 9 #:width 10 #:height 10 #:solid? #t))))
+
+;;; ---------------------------------------------------------------- sync-groups
+(define origin '(#:id o #:group-id g #:group-origin? #t #:x 100 #:y 50))
+(test-equal "member placed at origin + local"
+  (list origin '(#:group-id g #:group-local-x 10 #:group-local-y -5 #:x 110 #:y 45))
+  (sync-groups (list origin '(#:group-id g #:group-local-x 10 #:group-local-y -5 #:x 0 #:y 0))))
+(let ((r (sync-groups (list origin '(#:group-id g #:group-local-x 10 #:group-local-y -5 #:x 0 #:y 0)))))
+  (test-eq "the origin is untouched" origin (car r)))
+(test-equal "member before the origin; missing locals read 0; x/y appended"
+  (list '(#:group-id g #:x 100 #:y 50) origin)
+  (sync-groups (list '(#:group-id g) origin)))
+(test-equal "first origin wins; a later origin is a member"
+  (list origin '(#:group-id g #:group-origin? #t #:x 101 #:y 52 #:group-local-x 1 #:group-local-y 2))
+  (sync-groups (list origin '(#:group-id g #:group-origin? #t #:x 0 #:y 0 #:group-local-x 1 #:group-local-y 2))))
+(test-equal "group ids compared with equal?"
+  (list (list #:group-id (string-copy "team") #:group-origin? #t #:x 5 #:y 6)
+        (list #:group-id (string-copy "team") #:group-local-x 1 #:x 6 #:y 6))
+  (sync-groups (list (list #:group-id (string-copy "team") #:group-origin? #t #:x 5 #:y 6)
+                     (list #:group-id (string-copy "team") #:group-local-x 1 #:x 0 #:y 0))))
+(test-equal "list group ids"
+  '((#:group-id (a 1) #:group-origin? #t #:x 5 #:y 6) (#:group-id (a 1) #:x 5 #:y 6))
+  (sync-groups '((#:group-id (a 1) #:group-origin? #t #:x 5 #:y 6) (#:group-id (a 1) #:x 0 #:y 0))))
+(let ((l (list '(#:group-id g #:x 0 #:y 0 #:group-local-x 3) '(#:group-id g #:x 9 #:y 9))))
+  (test-eq "no origin: left alone" l (sync-groups l)))
+(let ((l (list origin '(#:group-id h #:x 0 #:y 0 #:group-local-x 3))))
+  (test-eq "other group: left alone" l (sync-groups l)))
+(let ((l (list origin '(#:group-id g #:group-local-x 0 #:group-local-y 0 #:x 100 #:y 50))))
+  (test-eq "already in place: same list" l (sync-groups l)))
+(test-equal "exactness: flonum origin"
+  '(110.5 50)
+  (let ((r (sync-groups (list '(#:group-id g #:group-origin? #t #:x 100.5 #:y 50)
+                              '(#:group-id g #:group-local-x 10 #:x 0 #:y 0)))))
+    (list (entity-ref (cadr r) #:x) (entity-ref (cadr r) #:y))))
+(test-assert "exact y stays exact"
+  (exact? (entity-ref (cadr (sync-groups (list '(#:group-id g #:group-origin? #t #:x 100.5 #:y 50)
+                                               '(#:group-id g #:group-local-x 10 #:x 0 #:y 0))))
+                      #:y)))
+(test-equal "two groups"
+  '((#:group-id a #:group-origin? #t #:x 10 #:y 10)
+    (#:group-id b #:group-origin? #t #:x 100 #:y 100)
+    (#:group-id a #:group-local-x 1 #:group-local-y 1 #:x 11 #:y 11)
+    (#:group-id b #:group-local-x 2 #:group-local-y 2 #:x 102 #:y 102))
+  (sync-groups '((#:group-id a #:group-origin? #t #:x 10 #:y 10)
+                 (#:group-id b #:group-origin? #t #:x 100 #:y 100)
+                 (#:group-id a #:group-local-x 1 #:group-local-y 1 #:x 0 #:y 0)
+                 (#:group-id b #:group-local-x 2 #:group-local-y 2 #:x 0 #:y 0))))
+
+;;; ---------------------------------------------------------------- aabb-overlap?
+(test-equal "touching on x" #f (aabb-overlap? 0 0 10 10 10 0 10 10))
+(test-equal "touching on y" #f (aabb-overlap? 0 0 10 10 0 10 10 10))
+(test-equal "touching at a corner" #f (aabb-overlap? 0 0 10 10 10 10 10 10))
+(test-equal "one pixel" #t (aabb-overlap? 0 0 10 10 9 9 10 10))
+(test-equal "separate" #f (aabb-overlap? 0 0 10 10 50 50 10 10))
+(test-equal "contained" #t (aabb-overlap? 0 0 100 100 10 10 5 5))
+(test-equal "flonums" #t (aabb-overlap? 0 0 10 10 9.5 0 10 10))
+(test-equal "flonums, touching" #f (aabb-overlap? 0.5 0 10 10 10.5 0 10 10))
+(test-equal "negative coordinates" #t (aabb-overlap? -10 -10 11 11 0 0 5 5))
+;; The strict formula with a zero-size box strictly inside: 0 < 5, 5 < 10, …
+(test-equal "zero-size box inside (formula)" #t (aabb-overlap? 0 0 10 10 5 5 0 0))
+(test-equal "symmetric" (aabb-overlap? 9 9 10 10 0 0 10 10) (aabb-overlap? 0 0 10 10 9 9 10 10))
+(test-assert "a string argument is an error"
+  (mentions? (error-text (lambda () (aabb-overlap? 0 0 10 "10" 0 0 1 1))) "aabb-overlap?" "\"10\""))
+(test-error "+nan.0 is an error" (aabb-overlap? 0 0 10 10 +nan.0 0 1 1))
+(test-error "complex is an error" (aabb-overlap? 0 0 10 10 1+i 0 1 1))
+
+;;; ---------------------------------------------------------------- step-tweens
+(let* ((e0 '(#:x 0 #:name "t"))
+       (e (entity-set e0 #:tween (make-tween e0 props: '((#:x . 100)) duration: 100)))
+       (half (step-tweens e #f 50))
+       (done (step-tweens half #f 50)))
+  (test-equal "half way" 50.0 (entity-ref half #:x))
+  (test-equal "done: target written, tween removed" '(#:x 100 #:name "t") done))
+(let ((e '(#:x 0)))
+  (test-eq "no tween: the entity itself" e (step-tweens e #f 16)))
+(let* ((e0 '(#:x 0 #:skip-pipelines (tweens)))
+       (e (entity-set e0 #:tween (make-tween e0 props: '((#:x . 100)) duration: 100))))
+  (test-eq "skipped" e (step-tweens e #f 50)))
+
+;;; ---------------------------------------------------------------- every skip symbol
+;; For each step, an entity the step would change; with the symbol listed the
+;; entity comes back itself.
+(define skip-cases
+  (list
+   (list 'acceleration apply-acceleration '(#:gravity? #t #:vy 0 #:ay -15) #f)
+   (list 'gravity apply-gravity '(#:gravity? #t #:vy 0) #f)
+   (list 'velocity-x apply-velocity-x '(#:x 0 #:vx 3) #f)
+   (list 'velocity-y apply-velocity-y '(#:y 0 #:vy 3) #f)
+   (list 'tile-collisions-x resolve-tile-collisions-x '(#:x 70 #:y 16 #:width 16 #:height 16 #:vx 10) wall)
+   (list 'tile-collisions-y resolve-tile-collisions-y '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6) floor-scene)
+   (list 'on-solid detect-on-solid '(#:x 20 #:y 112 #:width 16 #:height 16 #:gravity? #t) floor-scene)))
+(for-each
+ (lambda (c)
+   (let* ((sym (car c)) (step (cadr c)) (e (caddr c)) (scene (cadddr c))
+          (skipping (append e (list #:skip-pipelines (list sym)))))
+     (test-assert (string-append (symbol->string sym) ": changes without the skip")
+       (not (eq? e (step e scene 16))))
+     (test-eq (string-append (symbol->string sym) ": skipped") skipping (step skipping scene 16))
+     ;; Skipping every other step does not stop this one.
+     (let ((others (append e (list #:skip-pipelines
+                                   (delete sym '(acceleration gravity velocity-x velocity-y
+                                                 tile-collisions-x tile-collisions-y on-solid
+                                                 entity-collisions tweens))))))
+       (test-assert (string-append (symbol->string sym) ": other skips do not stop it")
+         (not (eq? others (step others scene 16)))))))
+ skip-cases)
+(let ((l (list (box 0 0 10 10 #:skip-pipelines '(entity-collisions)) (box 7 0 10 10))))
+  (test-eq "entity-collisions skipped" l (resolve-entity-collisions l)))
+(let ((l (list (box 0 0 10 10 #:skip-pipelines '(tweens gravity on-solid)) (box 7 0 10 10))))
+  (test-assert "other skips do not stop entity collisions" (not (eq? l (resolve-entity-collisions l)))))
+(let ((e '(#:x 0 #:skip-pipelines (frobnicate))))
+  (test-eq "unknown skip symbols are harmless" e (apply-velocity-x e #f 16)))
+
+(test-end "physics")
