@@ -1,0 +1,173 @@
+(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
+
+(define (grid-map cols rows solid)
+  (let ((v (make-vector (* cols rows) 0)))
+    (for-each (lambda (c) (vector-set! v (+ (car c) (* cols (cdr c))) 1)) solid)
+    (make-tilemap cols rows 16 16 v '(1))))
+(define (first-entity game) (car (scene-entities (game-scene game))))
+
+(test-begin "engine")
+
+;;; ---------------------------------------------------------------- make-game
+(define falling '(#:id f #:x 0 #:y 0 #:width 8 #:height 8 #:gravity? #t))
+(define scene0 (make-scene entities: (list falling)))
+(define (noop-update game dt) #t)
+(define (noop-render game) #t)
+(define g0 (make-game title: "Test" width: 320 height: 240 frame-delay: 20 scene: scene0
+                      update: noop-update render: noop-render input-script: '()))
+(test-assert (game? g0))
+(test-equal "Test" (game-title g0))
+(test-equal 320 (game-width g0))
+(test-equal 240 (game-height g0))
+(test-equal 20 (game-frame-delay g0))
+(test-eq scene0 (game-scene g0))
+(test-eq noop-update (game-update g0))
+(test-equal 0 (game-frame g0))
+(test-equal '() (game-sounds g0))
+(test-eq "engine-update defaults to default-engine-update" default-engine-update (game-engine-update g0))
+(test-equal "prefix keywords work too" "P" (game-title (make-game #:title "P")))
+(test-equal #f (game? scene0))
+
+;;; ---------------------------------------------------------------- game-run! and the frame
+;; Default physics, no map: vy = k, y = k(k+1)/2 after k frames.
+(define g1 (make-game scene: (make-scene entities: (list falling)) frame-delay: 20))
+(game-run! g1 frames: 10)
+(test-equal "10 frames run" 10 (game-frame g1))
+(test-equal "y = 10·11/2" 55 (entity-ref (first-entity g1) #:y))
+(test-equal "vy = 10" 10 (entity-ref (first-entity g1) #:vy))
+;; engine-update: #f: nothing moves.
+(define g2 (make-game scene: (make-scene entities: (list falling)) engine-update: #f))
+(game-run! g2 frames: 10)
+(test-equal "engine-update #f: frames still counted" 10 (game-frame g2))
+(test-eq "engine-update #f: physics disabled" falling (first-entity g2))
+;; A custom engine-update replaces physics: x += 1 per frame, nothing else.
+(define g3 (make-game scene: (make-scene entities: (list falling))
+                      engine-update: (lambda (game dt)
+                                       (game-scene-set! game
+                                                        (scene-map-entities (game-scene game)
+                                                                            (lambda (e) (entity-set e #:x (+ 1 (entity-ref e #:x 0)))))))))
+(game-run! g3 frames: 5)
+(test-equal "custom engine-update ran 5 times" 5 (entity-ref (first-entity g3) #:x))
+(test-equal "no gravity from the default" 0 (entity-ref (first-entity g3) #:y))
+(test-equal "no #:vy written" #f (entity-ref (first-entity g3) #:vy))
+
+;; Order within a frame: input, engine-update, update, (camera), render; dt = frame-delay.
+(define order-log '())
+(define (note! . x) (set! order-log (cons x order-log)))
+(define g4 (make-game frame-delay: 25
+                      scene: (make-scene entities: (list falling))
+                      engine-update: (lambda (game dt)
+                                       (note! 'engine (game-frame game) dt)
+                                       (default-engine-update game dt))
+                      update: (lambda (game dt)
+                                (note! 'update (game-frame game) dt (entity-ref (first-entity game) #:y)))
+                      render: (lambda (game) (note! 'render (game-frame game) (game? game)))))
+(game-run! g4 frames: 3)
+(test-equal "engine → update → render, each frame; update sees this frame's physics"
+  '((engine 0 25) (update 0 25 1) (render 0 #t)
+    (engine 1 25) (update 1 25 3) (render 1 #t)
+    (engine 2 25) (update 2 25 6) (render 2 #t))
+  (reverse order-log))
+
+;; update: changes become the next frame's input to physics.
+(define g5 (make-game scene: (make-scene entities: '((#:id p #:x 0 #:y 0)))
+                      update: (lambda (game dt)
+                                (let ((p (first-entity game)))
+                                  (game-scene-set! game (update-scene (game-scene game)
+                                                                      entities: (list (entity-set p #:vx 2))))))))
+(game-run! g5 frames: 4)
+;; frame 0: vx absent → x 0, then vx 2; frames 1-3: x 2, 4, 6.
+(test-equal "update's velocity applies from the next frame" 6 (entity-ref (first-entity g5) #:x))
+
+;; No scene: the default engine-update does nothing, the run still counts frames.
+(define g6 (make-game))
+(game-run! g6 frames: 3)
+(test-equal 3 (game-frame g6))
+(test-equal #f (game-scene g6))
+
+;;; ---------------------------------------------------------------- default-engine-update
+(define floor-map (grid-map 10 10 (map (lambda (c) (cons c 8)) (iota 10))))
+(define scene7 (make-scene tilemap: floor-map
+                           entities: (list '(#:id a #:x 16 #:y 100 #:width 16 #:height 16 #:gravity? #t #:vx 1)
+                                           '(#:id b #:x 64 #:y 112 #:width 16 #:height 16 #:gravity? #t #:vy 0))))
+(define g7 (make-game scene: scene7))
+(default-engine-update g7 16)
+(test-equal "default-engine-update = step-scene" (scene-entities (step-scene scene7 16))
+  (scene-entities (game-scene g7)))
+;; a: vy 1, x 17, y 101; b: lands on row 8 (top 128): y 112, vy 0, on the ground.
+(test-equal '(#:id a #:x 17 #:y 101 #:width 16 #:height 16 #:gravity? #t #:vx 1 #:vy 1)
+  (first-entity g7))
+(test-equal '(#:id b #:x 64 #:y 112 #:width 16 #:height 16 #:gravity? #t #:vy 0 #:on-ground? #t)
+  (cadr (scene-entities (game-scene g7))))
+(let ((g (make-game)))
+  (default-engine-update g 16)
+  (test-equal "no scene: nothing" #f (game-scene g)))
+
+;; Collision mode per game: a box crossing a one-tile wall in one frame.
+(define wall-scene
+  (make-scene tilemap: (grid-map 20 3 '((5 . 0) (5 . 1) (5 . 2)))
+              entities: '((#:id fast #:x 0 #:y 16 #:width 16 #:height 16 #:vx 160))))
+(define g8 (make-game scene: wall-scene))
+(game-run! g8 frames: 1)
+(test-equal "swept by default: stopped at 80 − 16" 64 (entity-ref (first-entity g8) #:x))
+(define g9 (make-game scene: wall-scene collision-mode: 'discrete))
+(game-run! g9 frames: 1)
+(test-equal "discrete per game: through the wall" 160 (entity-ref (first-entity g9) #:x))
+
+;;; ---------------------------------------------------------------- input-script
+(define input-log '())
+(define g10
+  (make-game
+   engine-update: #f
+   input-script: '((0 . (right)) (3 . (right a)) (5 . ()) (7 . (quit)))
+   update: (lambda (game dt)
+             (let ((in (game-input game)))
+               (set! input-log
+                     (cons (list (game-frame game)
+                                 (input-held? in 'right) (input-pressed? in 'right)
+                                 (input-held? in 'a) (input-pressed? in 'a) (input-released? in 'a))
+                           input-log))
+               (when (input-pressed? in 'a) (play-sound 'jump))
+               (when (= (game-frame game) 5) (play-sound game 'land))))))
+(game-run! g10)
+(test-equal "'quit ends the run at frame 7" 7 (game-frame g10))
+(test-equal "held = the last entry at or before the frame"
+  ;; frame right right-pressed a a-pressed a-released
+  '((0 #t #t #f #f #f)
+    (1 #t #f #f #f #f)
+    (2 #t #f #f #f #f)
+    (3 #t #f #t #t #f)
+    (4 #t #f #t #f #f)
+    (5 #f #f #f #f #t)
+    (6 #f #f #f #f #f))
+  (reverse input-log))
+(test-equal "play-sound records (frame . name)" '((3 . jump) (5 . land)) (game-sounds g10))
+;; frames: stops first when earlier than the quit.
+(define g11 (make-game engine-update: #f input-script: '((0 . (right)) (7 . (quit)))))
+(game-run! g11 frames: 4)
+(test-equal 4 (game-frame g11))
+;; A script starting later: nothing held before its first entry.
+(define late-log '())
+(define g12 (make-game engine-update: #f input-script: '((2 . (a b)) (4 . (b)))
+                       update: (lambda (game dt)
+                                 (let ((in (game-input game)))
+                                   (set! late-log (cons (list (input-held? in 'a) (input-held? in 'b)
+                                                              (input-pressed? in 'b))
+                                                        late-log))))))
+(game-run! g12 frames: 6)
+(test-equal '((#f #f #f) (#f #f #f) (#t #t #t) (#t #t #f) (#f #t #f) (#f #t #f)) (reverse late-log))
+;; quit in the very first entry: nothing runs.
+(define g13 (make-game input-script: '((0 . (quit))) update: (lambda (game dt) (error "must not run"))))
+(game-run! g13 frames: 5)
+(test-equal "quit at frame 0" 0 (game-frame g13))
+;; No script: nothing held.
+(define g14 (make-game update: (lambda (game dt)
+                                 (when (input-held? (game-input game) 'a) (play-sound 'wrong)))))
+(game-run! g14 frames: 3)
+(test-equal '() (game-sounds g14))
+;; play-sound outside a run, naming the game.
+(define g15 (make-game))
+(play-sound g15 'click)
+(test-equal '((0 . click)) (game-sounds g15))
+
+(test-end "engine")

@@ -1,0 +1,225 @@
+(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
+
+(define (error-text thunk)
+  (catch #t
+    (lambda () (thunk) #f)
+    (lambda (key . args)
+      (call-with-output-string
+       (lambda (port) (print-exception port #f key args))))))
+(define (mentions? text . parts)
+  (and (string? text) (every (lambda (p) (string-contains text p)) parts) #t))
+
+(define data (or (getenv "DS_TEST_DATA") "tests/data"))
+(define (map-file name) (string-append data "/maps/" name))
+
+;;; The solidity of every cell, row by row.
+(define (solid-grid m)
+  (map (lambda (r) (map (lambda (c) (tilemap-cell-solid? m c r)) (iota (tilemap-width m))))
+       (iota (tilemap-height m))))
+(define (object-named m name)
+  (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects m)))
+
+(test-begin "tilemap")
+
+;;; ---------------------------------------------------------------- demo/maps/level1.tmx
+(define level1 (load-tilemap "demo/maps/level1.tmx"))
+(test-assert (tilemap? level1))
+(test-equal 30 (tilemap-width level1))
+(test-equal 15 (tilemap-height level1))
+(test-equal 16 (tilemap-tile-width level1))
+(test-equal 16 (tilemap-tile-height level1))
+;; tiles.tsx: gid 1 and 2 have solid=true, gid 3 a collision objectgroup, gid 4 nothing.
+(test-equal "gid 2 (wall), top-left" #t (tilemap-cell-solid? level1 0 0))
+(test-equal "empty cell" #f (tilemap-cell-solid? level1 1 0))
+(test-equal "gid 2, right column" #t (tilemap-cell-solid? level1 29 5))
+(test-equal "gid 1 (ground)" #t (tilemap-cell-solid? level1 1 13))
+(test-equal "gid 1, last row" #t (tilemap-cell-solid? level1 28 14))
+(test-equal "gid 3 (collision objectgroup)" #t (tilemap-cell-solid? level1 15 7))
+(test-equal "gid 3, other platform" #t (tilemap-cell-solid? level1 9 9))
+(test-equal "gid 3 row ends" #f (tilemap-cell-solid? level1 10 9))
+(test-equal "gid 4 (no metadata)" #f (tilemap-cell-solid? level1 3 12))
+(test-equal "gid 4 again" #f (tilemap-cell-solid? level1 25 12))
+(test-equal "gid 2 in the middle" #t (tilemap-cell-solid? level1 12 12))
+(test-equal "outside: left" #f (tilemap-cell-solid? level1 -1 0))
+(test-equal "outside: right" #f (tilemap-cell-solid? level1 30 0))
+(test-equal "outside: below" #f (tilemap-cell-solid? level1 1 15))
+(test-equal "outside: above" #f (tilemap-cell-solid? level1 0 -1))
+(test-equal "solid cells counted" (+ 15 15 28 28 7 5 2)
+  ;; two wall columns, two ground rows (28 inner cells each), 7 + 5 platform
+  ;; cells, and the two gid-2 cells at (12, 12) and (13, 12).
+  (count identity (concatenate (solid-grid level1))))
+(test-equal 2 (length (tilemap-objects level1)))
+(let ((player (object-named level1 "player")))
+  (test-equal 'player (entity-ref player #:type))
+  (test-assert (symbol? (entity-ref player #:type)))
+  (test-equal "player" (entity-ref player #:name))
+  (test-equal 48 (entity-ref player #:x))
+  (test-equal 160 (entity-ref player #:y))
+  (test-equal 12 (entity-ref player #:width))
+  (test-equal 14 (entity-ref player #:height))
+  (test-equal "int property" 3 (entity-ref player #:speed))
+  (test-assert "an object is a well-formed entity" (entity-ref (entity-set player #:vx 1) #:vx)))
+(let ((door (object-named level1 "exit")))
+  (test-equal 'door (entity-ref door #:type))
+  (test-equal '(440 176 16 32) (map (lambda (k) (entity-ref door k)) '(#:x #:y #:width #:height))))
+(test-equal "objects in document order" '("player" "exit")
+  (map (lambda (o) (entity-ref o #:name)) (tilemap-objects level1)))
+;; solid-gids: gid 4 has no metadata; a script marks it solid.
+(define level1-4 (load-tilemap "demo/maps/level1.tmx" solid-gids: '(4)))
+(test-equal "solid-gids: gid 4 now solid" #t (tilemap-cell-solid? level1-4 3 12))
+(test-equal "solid-gids: metadata still counts" #t (tilemap-cell-solid? level1-4 0 0))
+(test-equal "solid-gids: empty cells stay empty" #f (tilemap-cell-solid? level1-4 1 0))
+(test-equal "prefix keyword form" #t
+  (tilemap-cell-solid? (load-tilemap "demo/maps/level1.tmx" #:solid-gids '(4)) 25 12))
+(test-equal "the first load is unaffected" #f (tilemap-cell-solid? level1 3 12))
+;; A loaded map drives the physics.
+(test-equal "level1 floor stops a falling box: row 13 top at 208 → y = 208 − 16"
+  '(#:x 32 #:y 192 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y '(#:x 32 #:y 200 #:width 16 #:height 16 #:vy 5)
+                             (make-scene tilemap: level1) 16))
+
+;;; ---------------------------------------------------------------- every encoding
+;; The 6×4 level in every encoding. terrain.tsx: gid 1 solid, 2 collision,
+;; 3 collides, 4 a non-empty collision objectgroup (all solid); 5 solid=false,
+;; 6 an empty objectgroup, 7 a ladder (not solid). Flip bits are masked:
+;; 2147483649 = gid 1, 1073741828 = gid 4, 1610612739 = gid 3, 4026531841 = gid 1.
+(define encodings '("level_csv.tmx" "level_base64.tmx" "level_zlib.tmx" "level_gzip.tmx"
+                    "level_zstd.tmx" "level_zstd_stream.tmx" "level_xml.tmx"))
+(define csv (load-tilemap (map-file "level_csv.tmx")))
+(test-equal '(6 4 16 16) (list (tilemap-width csv) (tilemap-height csv)
+                               (tilemap-tile-width csv) (tilemap-tile-height csv)))
+(define (cells m cs) (map (lambda (c) (tilemap-cell-solid? m (car c) (cdr c))) cs))
+(for-each
+ (lambda (name)
+   (let ((m (load-tilemap (map-file name))))
+     (test-equal (string-append name ": size") '(6 4) (list (tilemap-width m) (tilemap-height m)))
+     (test-equal (string-append name ": solid cells")
+       '(#t #t #t #t #t #t #t #t)
+       (cells m '((0 . 2) (5 . 2) (0 . 3) (1 . 3) (2 . 3) (3 . 3) (4 . 3) (5 . 3))))
+     (test-equal (string-append name ": non-solid cells")
+       '(#f #f #f #f #f #f #f)
+       (cells m '((0 . 0) (2 . 0) (1 . 1) (4 . 1) (1 . 2) (3 . 0) (3 . 1))))
+     (test-equal (string-append name ": same as CSV") (solid-grid csv) (solid-grid m))
+     (test-equal (string-append name ": raw gid keeps the flip bits") 2147483656 (tilemap-gid m 0 5 0))
+     (test-equal (string-append name ": raw gid 4026531841") 4026531841 (tilemap-gid m 0 5 3))
+     (test-equal (string-append name ": empty cell gid") 0 (tilemap-gid m 0 0 0))))
+ encodings)
+(test-equal "solid-gids on a loaded level: gid 7 (ladder)" #t
+  (tilemap-cell-solid? (load-tilemap (map-file "level_csv.tmx") solid-gids: '(7)) 2 0))
+
+;;; ---------------------------------------------------------------- several tilesets
+;; firstgids 13 (deco, embedded), 1 (terrain.tsx), 9 (props, embedded), listed
+;; out of order. gid 9 = props 0 (solid), 10 = props 1 (nothing), 11 = props 2
+;; (polygon collision), 12 = props 3 (collides=false), 13 = deco 0 (image),
+;; 18 = deco 5 (bush, solid).
+(define multi (load-tilemap (map-file "tilesets.tmx")))
+(test-equal '(6 2) (list (tilemap-width multi) (tilemap-height multi)))
+(test-equal "row 0: gids 1 9 10 11 12" '(#t #t #f #t #f)
+  (cells multi '((0 . 0) (2 . 0) (3 . 0) (4 . 0) (5 . 0))))
+(test-equal "row 1: 9 (flipped) 11 (flipped) 13 18 _ 0" '(#t #t #f #t #f)
+  (cells multi '((0 . 1) (1 . 1) (2 . 1) (3 . 1) (5 . 1))))
+
+;;; ---------------------------------------------------------------- layers and objects
+;; 4×3 map of 16×8 tiles. background: (0,0) gid 5 (solid=false), (1,0) gid 1.
+;; "walls" has solid=true: its cells (0,1) gid 6 and (3,1) gid 7 are solid.
+;; "decor" has collision=false: its gids 1 2 3 on row 2 add no solidity.
+;; "hidden": (3,2) gid 3 (collides) is solid.
+(define layers (load-tilemap (map-file "layers.tmx")))
+(test-equal '(4 3 16 8) (list (tilemap-width layers) (tilemap-height layers)
+                              (tilemap-tile-width layers) (tilemap-tile-height layers)))
+(test-equal "row 0" '(#f #t #f #f) (list-ref (solid-grid layers) 0))
+(test-equal "row 1: a solid layer" '(#t #f #f #t) (list-ref (solid-grid layers) 1))
+(test-equal "row 2: a collision=false layer adds nothing; the hidden layer's gid 3 does"
+  '(#f #f #f #t) (list-ref (solid-grid layers) 2))
+(test-equal "objects of every object layer" 6 (length (tilemap-objects layers)))
+(let ((start (object-named layers "start")))
+  (test-equal 'spawn (entity-ref start #:type))
+  (test-equal '(8 16) (list (entity-ref start #:x) (entity-ref start #:y))))
+(let ((p (object-named layers "player")))
+  (test-equal 'player (entity-ref p #:type))
+  (test-equal '(16 32 16 16) (map (lambda (k) (entity-ref p k)) '(#:x #:y #:width #:height)))
+  (test-equal "int" 3 (entity-ref p #:speed))
+  (test-equal "float" 15.5 (entity-ref p #:jump))
+  (test-equal "bool false" #f (entity-ref p #:can_fly 'absent))
+  (test-equal "string" "Hero" (entity-ref p #:label))
+  (test-equal "multi-line string" "first line\nsecond line" (entity-ref p #:bio)))
+(let ((slime (object-named layers "slime")))
+  (test-equal "type from class" 'enemy (entity-ref slime #:type))
+  (test-equal "fractional x" 40.5 (entity-ref slime #:x))
+  (test-equal '(12 10) (list (entity-ref slime #:width) (entity-ref slime #:height))))
+(test-equal "negative fractional y" -4.25 (entity-ref (object-named layers "both") #:y))
+(test-assert "every object is a keyword plist"
+  (every (lambda (o) (and (even? (length o)) (keyword? (car o)))) (tilemap-objects layers)))
+
+;;; ---------------------------------------------------------------- infinite maps
+;; Chunks: ground (-4,-2) 4×2: row -2 all gid 1; (0,0) 4×2: "2,0,0,3 / 2,2,2,2".
+;; overhang (zlib) chunk (4,-4) 4×2: row -4 = 0,0,4,4.
+(define inf (load-tilemap (map-file "infinite.tmx")))
+(test-equal "negative chunk" '(#t #t #t #t) (cells inf '((-4 . -2) (-3 . -2) (-2 . -2) (-1 . -2))))
+(test-equal "gid 5 in the negative chunk" #f (tilemap-cell-solid? inf -2 -1))
+(test-equal "chunk at the origin" '(#t #f #f #t #t #t #t #t)
+  (cells inf '((0 . 0) (1 . 0) (2 . 0) (3 . 0) (0 . 1) (1 . 1) (2 . 1) (3 . 1))))
+(test-equal "zlib chunk: gid 4" '(#f #f #t #t) (cells inf '((4 . -4) (5 . -4) (6 . -4) (7 . -4))))
+(test-equal "between chunks" #f (tilemap-cell-solid? inf 5 0))
+(test-equal "far away" #f (tilemap-cell-solid? inf 100 100))
+
+;;; ---------------------------------------------------------------- make-tilemap
+(define mv (make-tilemap 3 2 8 8 #(0 1 0 2 0 3) '(1 2)))
+(test-assert (tilemap? mv))
+(test-equal '(3 2 8 8) (list (tilemap-width mv) (tilemap-height mv) (tilemap-tile-width mv) (tilemap-tile-height mv)))
+(test-equal "vector cells" '((#f #t #f) (#t #f #f)) (solid-grid mv))
+(define ml (make-tilemap 3 2 8 8 '(0 1 0 2 0 3) '(1 2)))
+(test-equal "list cells" '((#f #t #f) (#t #f #f)) (solid-grid ml))
+(test-equal "no solid gids: nothing solid" '((#f #f #f) (#f #f #f))
+  (solid-grid (make-tilemap 3 2 8 8 #(0 1 0 2 0 3) '())))
+(test-equal "gid 3 marked" '((#f #f #f) (#f #f #t)) (solid-grid (make-tilemap 3 2 8 8 #(0 1 0 2 0 3) '(3))))
+(test-equal "no objects" '() (tilemap-objects mv))
+(test-equal "made maps drive the physics: 8 px tiles; box [2, 10) → columns 0..1 → x = 8·1 − 8 = 0"
+  '(#:x 0 #:y 0 #:width 8 #:height 8 #:vx 0)
+  (resolve-tile-collisions-x '(#:x 2 #:y 0 #:width 8 #:height 8 #:vx 2) (make-scene tilemap: mv) 16))
+(test-equal #f (tilemap? 'map))
+(test-equal #f (tilemap? #(0 1)))
+
+;;; ---------------------------------------------------------------- errors
+(test-assert "missing file: the message names the file"
+  (mentions? (error-text (lambda () (load-tilemap (map-file "no-such-map.tmx")))) "load-tilemap" "no-such-map.tmx"))
+(test-assert "malformed XML: file and line"
+  (mentions? (error-text (lambda () (load-tilemap (map-file "bad/malformed.tmx")))) "malformed.tmx" ":5"))
+(for-each
+ (lambda (name)
+   (test-assert (string-append name ": an error naming the file")
+     (mentions? (error-text (lambda () (load-tilemap (map-file (string-append "bad/" name))))) name)))
+ '("short_csv.tmx" "bad_encoding.tmx" "bad_compression.tmx" "missing_tsx.tmx" "empty.tmx"
+   "no_map.tmx" "corrupt_zlib.tmx" "corrupt_gzip.tmx" "corrupt_zstd.tmx" "truncated_base64.tmx"
+   "short_xml.tmx" "malformed_tsx.tmx" "isometric.tmx"))
+(test-assert "a missing tileset names it"
+  (mentions? (error-text (lambda () (load-tilemap (map-file "bad/missing_tsx.tmx")))) "missing.tsx"))
+(test-assert "load-tilemap with a number"
+  (mentions? (error-text (lambda () (load-tilemap 42))) "load-tilemap" "42"))
+(test-error "solid-gids not a list" (load-tilemap "demo/maps/level1.tmx" solid-gids: 'four))
+(test-error "solid-gids with a negative gid" (load-tilemap "demo/maps/level1.tmx" solid-gids: '(-1)))
+(test-error "solid-gids with a string" (load-tilemap "demo/maps/level1.tmx" solid-gids: '("4")))
+(test-assert "make-tilemap: wrong number of cells"
+  (error-text (lambda () (make-tilemap 3 2 8 8 #(0 1 0 2 0) '()))))
+(test-assert "make-tilemap: width 0"
+  (mentions? (error-text (lambda () (make-tilemap 0 2 8 8 #() '()))) "make-tilemap" "width"))
+(test-assert "make-tilemap: tile width a string"
+  (mentions? (error-text (lambda () (make-tilemap 1 1 "8" 8 #(0) '()))) "make-tilemap" "tile-width"))
+(test-assert "make-tilemap: a cell that is not a gid"
+  (mentions? (error-text (lambda () (make-tilemap 2 1 8 8 #(0 a) '()))) "make-tilemap" "cells"))
+(test-assert "make-tilemap: a negative cell in a list"
+  (error-text (lambda () (make-tilemap 2 1 8 8 '(0 -1) '()))))
+(test-assert "make-tilemap: cells neither vector nor list"
+  (error-text (lambda () (make-tilemap 2 1 8 8 "00" '()))))
+(test-assert "make-tilemap: solid-gids not a list"
+  (error-text (lambda () (make-tilemap 2 1 8 8 #(0 0) 1))))
+(test-error "make-tilemap: too few arguments" (make-tilemap 2 1 8 8 #(0 0)))
+(test-assert "tilemap-cell-solid? on a non-tilemap"
+  (mentions? (error-text (lambda () (tilemap-cell-solid? 'level 0 0))) "tilemap-cell-solid?" "level"))
+(test-assert "tilemap-cell-solid? with a flonum index"
+  (error-text (lambda () (tilemap-cell-solid? mv 1.5 0))))
+(test-assert "tilemap-width on a non-tilemap"
+  (mentions? (error-text (lambda () (tilemap-width "map"))) "tilemap-width"))
+(test-assert "tilemap-objects on a non-tilemap" (error-text (lambda () (tilemap-objects #f))))
+
+(test-end "tilemap")
