@@ -16,6 +16,7 @@ struct Batch {
     std::vector<Body> before;  // as decoded
     std::vector<Body> bodies;  // what the steps work on
     std::vector<uint8_t> has_tween;
+    std::vector<Body> frame_start;  // before the tweens, for ground detection
     Frame frame;               // the core's scratch for whole frames
 
     size_t size() const { return bodies.size(); }

@@ -41,8 +41,12 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             decode_batch(entities, batch, f)) {
             SCM list = step_list_tweens(entities, batch, opts.dt, f);
-            if (!f && (scm_is_eq(list, entities) || decode_batch(list, batch, f))) {
-                batch.frame.step_physics(batch.bodies, grid, opts);
+            const bool tweened = !scm_is_eq(list, entities);
+            if (tweened) batch.frame_start = batch.before;  // the scene before the tweens
+            if (!f && (!tweened || decode_batch(list, batch, f))) {
+                batch.frame.step_physics(batch.bodies, grid, opts,
+                                         tweened ? std::span<const Body>(batch.frame_start)
+                                                 : std::span<const Body>());
                 result = encode_batch(list, batch);
             }
         }

@@ -42,14 +42,18 @@ void Frame::step_tweens(World& world, double dt) {
     std::erase_if(world.tweens, done);
 }
 
-void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts) {
-    start_.assign(bodies.begin(), bodies.end());
+void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                         std::span<const Body> scene) {
+    if (scene.empty()) {
+        start_.assign(bodies.begin(), bodies.end());
+        scene = start_;
+    }
     supporters_.clear();
     support_slot_.assign(bodies.size(), -1);
-    for (size_t i = 0; i < start_.size(); ++i) {
-        if (!start_[i].solid || start_[i].skips(kSkipEntityCollisions)) continue;
+    for (size_t i = 0; i < scene.size(); ++i) {
+        if (!scene[i].solid || scene[i].skips(kSkipEntityCollisions)) continue;
         support_slot_[i] = std::ssize(supporters_);
-        supporters_.push_back(start_[i]);
+        supporters_.push_back(scene[i]);
     }
     for (size_t i = 0; i < bodies.size(); ++i) {
         Body& b = bodies[i];
@@ -68,8 +72,10 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
     report_.user_writes.clear();
     report_.completed.clear();
+    // Every per-entity step sees the scene as it was before the tweens ran.
+    start_.assign(world.bodies.begin(), world.bodies.end());
     step_tweens(world, opts.dt);
-    step_physics(world.bodies, world.grid, opts);
+    step_physics(world.bodies, world.grid, opts, start_);
     return report_;
 }
 

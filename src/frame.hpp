@@ -63,12 +63,15 @@ public:
     const FrameReport& step(World& world, const FrameOptions& opts);
 
     // Everything after step-tweens, for callers that run tweens themselves.
-    void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts);
+    // `scene` is the frame-start state ground detection reads (before the
+    // tweens); empty means the bodies as they are now.
+    void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                      std::span<const Body> scene = {});
 
 private:
     void step_tweens(World& world, double dt);
 
-    std::vector<Body> start_;  // the frame-start scene detect-on-solid reads
+    std::vector<Body> start_;  // the frame-start scene (before tweens)
     // The frame-start bodies that can hold another up (solid, not ghosts),
     // and each body's slot among them (-1 when it is not one): ground
     // detection scans only these.

@@ -40,7 +40,7 @@ shared."
 (define (entity-skips-pipeline? entity step)
   "Whether STEP (a symbol) is listed in ENTITY's #:skip-pipelines."
   (let ((skips (entity-ref entity #:skip-pipelines '())))
-    (unless (list? skips)
+    (unless (and (list? skips) (every symbol? skips))
       (scm-error 'wrong-type-arg "entity-skips-pipeline?"
                  "entity key #:skip-pipelines: expected a list of symbols, got ~S"
                  (list skips) #f))

@@ -376,8 +376,10 @@ TEST_CASE("tweens run before the motion steps") {
     CHECK_FLONUM(w.bodies[0].x, 5);  // exact 0 + flonum 5.0
 }
 
-TEST_CASE("the frame-start scene is taken after the tweens") {
-    // the platform is tweened up under the player this frame
+TEST_CASE("the frame-start scene is taken before the tweens") {
+    // SPEC §5: every per-entity step sees the scene as it was when the frame
+    // began. The platform is tweened from y 100 up to 64 this frame, but
+    // ground detection reads it at 100: feet at 49 + 16 = 65, |65 - 100| > 4.
     World w;
     Body plat = solid_box(0, 100, 64, 16);
     Body p = box(16, 48, 16, 16);
@@ -390,7 +392,7 @@ TEST_CASE("the frame-start scene is taken after the tweens") {
     REQUIRE(rep.completed.size() == 1);
     CHECK(rep.completed[0] == 0);
     CHECK_EXACT(w.bodies[1].y, 49);
-    CHECK(w.bodies[1].on_ground);
+    CHECK_FALSE(w.bodies[1].on_ground);
 }
 
 TEST_CASE("a tween waits out its delay without writing") {

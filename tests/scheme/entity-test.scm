@@ -83,7 +83,6 @@
 ;; SPEC §2: a wrongly typed value is an error naming the procedure, the key
 ;; and the value; a skip list must be a list of symbols. The native steps
 ;; refuse (gravity 3); this helper accepts it (suspected bug).
-(test-expect-fail 1)
 (test-assert "a skip list holding a non-symbol is an error"
   (mentions? (error-text (lambda () (entity-skips-pipeline? '(#:skip-pipelines (gravity 3)) 'velocity-x)))
              "#:skip-pipelines"))

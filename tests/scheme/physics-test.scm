@@ -109,6 +109,19 @@
   (test-eq "skipped" e (apply-velocity-y e #f 16)))
 (test-equal "x is left alone" '(#:x 1 #:y 52 #:vx 9 #:vy 2) (apply-velocity-y '(#:x 1 #:y 50 #:vx 9 #:vy 2) #f 16))
 
+;; x += 0 with an exact 0 leaves x as it is — even a flonum −0.0 (Scheme:
+;; (+ -0.0 0) ⇒ -0.0) — so the step changes nothing and returns its argument.
+(let ((e (list #:x -0.0 #:vx 0)))
+  (test-expect-fail 1)
+  (test-eq "x −0.0, vx exact 0: the entity itself" e (apply-velocity-x e #f 16)))
+;; Beyond 2^53 the sum must not be lost: x = 2^60, vx 1 gives either the exact
+;; 2^60 + 1 (exact inputs) or a flonum (the core computes in double) — not the
+;; untouched exact 2^60.
+(let ((x (entity-ref (apply-velocity-x (list #:x (expt 2 60) #:vx 1) #f 16) #:x)))
+  (test-expect-fail 1)
+  (test-assert "2^60 + 1: the move is not silently dropped"
+    (or (inexact? x) (= x (+ (expt 2 60) 1)))))
+
 ;;; ---------------------------------------------------------------- apply-velocity (legacy)
 (test-equal '(#:x 4 #:y 6 #:vx 3 #:vy 4) (apply-velocity '(#:x 1 #:y 2 #:vx 3 #:vy 4) #f 16))
 (test-equal "velocity-x skipped" '(#:x 1 #:y 6 #:vx 3 #:vy 4 #:skip-pipelines (velocity-x))
