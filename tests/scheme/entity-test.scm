@@ -81,8 +81,8 @@
   (mentions? (error-text (lambda () (entity-skips-pipeline? '(#:skip-pipelines gravity) 'gravity)))
              "entity-skips-pipeline?" "#:skip-pipelines" "gravity"))
 ;; SPEC §2: a wrongly typed value is an error naming the procedure, the key
-;; and the value; a skip list must be a list of symbols. The native steps
-;; refuse (gravity 3); this helper accepts it (suspected bug).
+;; and the value; a skip list must be a list of symbols, here as in the
+;; native steps.
 (test-assert "a skip list holding a non-symbol is an error"
   (mentions? (error-text (lambda () (entity-skips-pipeline? '(#:skip-pipelines (gravity 3)) 'velocity-x)))
              "#:skip-pipelines"))
