@@ -1,16 +1,6 @@
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
 
-;;; The printed error (procedure, message, irritants) raised by THUNK, or #f.
-(define (error-text thunk)
-  (catch #t
-    (lambda () (thunk) #f)
-    (lambda (key . args)
-      (call-with-output-string
-       (lambda (port) (print-exception port #f key args))))))
-
-;;; Whether the text contains every one of PARTS.
-(define (mentions? text . parts)
-  (and (string? text) (every (lambda (p) (string-contains text p)) parts) #t))
+(load "support.scm")
 
 (test-begin "entity")
 

@@ -1,14 +1,6 @@
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
 
-;;; The printed error (procedure, message, irritants) raised by THUNK, or #f.
-(define (error-text thunk)
-  (catch #t
-    (lambda () (thunk) #f)
-    (lambda (key . args)
-      (call-with-output-string
-       (lambda (port) (print-exception port #f key args))))))
-(define (mentions? text . parts)
-  (and (string? text) (every (lambda (p) (string-contains text p)) parts) #t))
+(load "support.scm")
 
 ;;; A COLS×ROWS map of 16 px tiles whose cells in SOLID ((col . row) …) hold
 ;;; gid 1, the only solid gid.

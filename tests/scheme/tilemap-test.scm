@@ -1,13 +1,6 @@
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
 
-(define (error-text thunk)
-  (catch #t
-    (lambda () (thunk) #f)
-    (lambda (key . args)
-      (call-with-output-string
-       (lambda (port) (print-exception port #f key args))))))
-(define (mentions? text . parts)
-  (and (string? text) (every (lambda (p) (string-contains text p)) parts) #t))
+(load "support.scm")
 
 (define data (or (getenv "DS_TEST_DATA") "tests/data"))
 (define (map-file name) (string-append data "/maps/" name))

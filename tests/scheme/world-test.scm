@@ -1,11 +1,6 @@
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
 
-(define (error-text thunk)
-  (catch #t
-    (lambda () (thunk) #f)
-    (lambda (key . args)
-      (call-with-output-string
-       (lambda (port) (print-exception port #f key args))))))
+(load "support.scm")
 
 (define (grid-map cols rows solid)
   (let ((v (make-vector (* cols rows) 0)))
