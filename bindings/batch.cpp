@@ -26,12 +26,14 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.before.clear();
     batch.bodies.clear();
     batch.has_tween.clear();
+    batch.writes.clear();
     SCM p = entities;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
         Decoded d;
         if (!decode_entity(SCM_CAR(p), d, f)) return false;
         batch.before.push_back(d.body);
         batch.has_tween.push_back(scm_is_true(d.tween));
+        batch.writes.push_back(FirstWrites{.absent = absent_fields(d)});
     }
     if (!scm_is_null(p)) {
         fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");
@@ -45,13 +47,14 @@ SCM encode_batch(SCM entities, const Batch& batch) {
     // Find the last entity that changed: the spine is copied up to it.
     size_t last = 0;
     for (size_t i = 0; i < batch.size(); ++i)
-        if (changed_fields(batch.before[i], batch.bodies[i]) != 0) last = i + 1;
+        if (changed_fields(batch.before[i], batch.bodies[i]) != 0 || batch.writes[i].count != 0)
+            last = i + 1;
     if (last == 0) return entities;
     SCM head = SCM_EOL, tail = SCM_BOOL_F, p = entities;
     for (size_t i = 0; i < last; ++i, p = SCM_CDR(p)) {
         Edit edits[16];
         SCM plist = SCM_CAR(p);
-        SCM entity = rewrite_plist(plist, edits, field_edits(batch.before[i], batch.bodies[i], edits));
+        SCM entity = rewrite_plist(plist, edits, field_edits(batch.before[i], batch.bodies[i], edits, &batch.writes[i]));
         SCM cell = scm_cons(entity, SCM_EOL);
         if (scm_is_false(tail)) head = cell;
         else scm_set_cdr_x(tail, cell);

@@ -46,7 +46,8 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
             if (!f && (!tweened || decode_batch(list, batch, f))) {
                 batch.frame.step_physics(batch.bodies, grid, opts,
                                          tweened ? std::span<const Body>(batch.frame_start)
-                                                 : std::span<const Body>());
+                                                 : std::span<const Body>(),
+                                         batch.writes);
                 result = encode_batch(list, batch);
             }
         }

@@ -146,22 +146,48 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
     return head;
 }
 
-size_t field_edits(const Body& before, const Body& after, Edit* out) {
-    const uint32_t changed = changed_fields(before, after);
-    size_t n = 0;
-    auto num = [&](uint32_t bit, PhysKey k, Num v) {
-        if (changed & bit) out[n++] = {keys->key[k], num_to_scm(v)};
+namespace {
+
+// The plist key and current value of one Field (by bit index).
+Edit field_edit(int bit, const Body& b) {
+    switch (1u << bit) {
+        case kFieldX: return {keys->key[kX], num_to_scm(b.x)};
+        case kFieldY: return {keys->key[kY], num_to_scm(b.y)};
+        case kFieldWidth: return {keys->key[kWidth], num_to_scm(b.w)};
+        case kFieldHeight: return {keys->key[kHeight], num_to_scm(b.h)};
+        case kFieldVx: return {keys->key[kVx], num_to_scm(b.vx)};
+        case kFieldVy: return {keys->key[kVy], num_to_scm(b.vy)};
+        case kFieldAy: return {keys->key[kAy], num_to_scm(b.ay)};
+        case kFieldLocalX: return {keys->key[kGroupLocalX], num_to_scm(b.local_x)};
+        case kFieldLocalY: return {keys->key[kGroupLocalY], num_to_scm(b.local_y)};
+        default: return {keys->key[kOnGround], scm_from_bool(b.on_ground)};
+    }
+}
+
+}  // namespace
+
+uint16_t absent_fields(const Decoded& d) {
+    constexpr struct { PhysKey key; uint32_t field; } kMap[] = {
+        {kX, kFieldX},   {kY, kFieldY},   {kWidth, kFieldWidth},        {kHeight, kFieldHeight},
+        {kVx, kFieldVx}, {kVy, kFieldVy}, {kAy, kFieldAy},              {kGroupLocalX, kFieldLocalX},
+        {kGroupLocalY, kFieldLocalY},     {kOnGround, kFieldOnGround},
     };
-    num(kFieldX, kX, after.x);
-    num(kFieldY, kY, after.y);
-    num(kFieldWidth, kWidth, after.w);
-    num(kFieldHeight, kHeight, after.h);
-    num(kFieldVx, kVx, after.vx);
-    num(kFieldVy, kVy, after.vy);
-    num(kFieldAy, kAy, after.ay);
-    num(kFieldLocalX, kGroupLocalX, after.local_x);
-    num(kFieldLocalY, kGroupLocalY, after.local_y);
-    if (changed & kFieldOnGround) out[n++] = {keys->key[kOnGround], scm_from_bool(after.on_ground)};
+    uint16_t absent = 0;
+    for (const auto& m : kMap)
+        if (!d.has(m.key)) absent |= static_cast<uint16_t>(m.field);
+    return absent;
+}
+
+size_t field_edits(const Body& before, const Body& after, Edit* out, const FirstWrites* writes) {
+    uint32_t changed = changed_fields(before, after);
+    size_t n = 0;
+    // Fields first written to an absent key go last, in the order written,
+    // whatever their final value: that is where the composition appended them.
+    const uint32_t appended = writes ? writes->written() : 0;
+    for (uint32_t rest = changed & ~appended; rest != 0; rest &= rest - 1)
+        out[n++] = field_edit(__builtin_ctz(rest), after);
+    if (writes)
+        for (int i = 0; i < writes->count; ++i) out[n++] = field_edit(writes->order[i], after);
     return n;
 }
 

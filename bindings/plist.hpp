@@ -41,9 +41,14 @@ struct Edit {
 // there are no edits.
 SCM rewrite_plist(SCM plist, const Edit* edits, size_t count);
 
-// Collects the edits for the fields that differ between before and after.
-// Returns how many were written to out (room for 16 is enough).
-size_t field_edits(const Body& before, const Body& after, Edit* out);
+// The Field bits of the fields a decoded plist lacks.
+uint16_t absent_fields(const Decoded& d);
+
+// Collects the edits for the fields that differ between before and after,
+// plus (with `writes`) every absent field a step wrote, appended in the order
+// written. Returns how many were written to out (room for 16 is enough).
+size_t field_edits(const Body& before, const Body& after, Edit* out,
+                   const FirstWrites* writes = nullptr);
 
 // The value of the first occurrence of key in plist, or fallback. No checks:
 // for plists already validated by decode_entity.

@@ -26,18 +26,21 @@ uint16_t skip_bit(const char* name);
 const char* skip_name(uint16_t bit);
 
 // Fields a step may write; a frame reports the changed ones as a mask of these.
+// The bit order is the order a step writes several keys in (x y width height
+// vx vy ay group-local-x group-local-y on-ground?).
 enum Field : uint32_t {
     kFieldX = 1u << 0,
     kFieldY = 1u << 1,
-    kFieldVx = 1u << 2,
-    kFieldVy = 1u << 3,
-    kFieldAy = 1u << 4,
-    kFieldOnGround = 1u << 5,
-    kFieldWidth = 1u << 6,   // only tweens write sizes and group offsets
-    kFieldHeight = 1u << 7,
-    kFieldLocalX = 1u << 8,
-    kFieldLocalY = 1u << 9,
+    kFieldWidth = 1u << 2,   // only tweens write sizes and group offsets
+    kFieldHeight = 1u << 3,
+    kFieldVx = 1u << 4,
+    kFieldVy = 1u << 5,
+    kFieldAy = 1u << 6,
+    kFieldLocalX = 1u << 7,
+    kFieldLocalY = 1u << 8,
+    kFieldOnGround = 1u << 9,
 };
+constexpr int kFieldCount = 10;
 
 struct Body {
     Num x, y, w, h;          // top-left corner and size; the box is [x, x+w) × [y, y+h)
@@ -59,5 +62,31 @@ struct Body {
 
 // Which Fields differ between two states of one body (value or exactness).
 uint32_t changed_fields(const Body& before, const Body& after);
+
+// For a caller whose entities may lack some fields (a plist without #:vy):
+// which fields are still unwritten, and the order in which steps first wrote
+// the others. A step-by-step composition appends a missing key when a step
+// first changes it and keeps it there even if a later step restores the
+// value; this log lets a whole frame reproduce that key order.
+struct FirstWrites {
+    uint16_t absent = 0;  // Field bits not written yet
+    uint8_t count = 0;
+    uint8_t order[kFieldCount] = {};  // Field bit indices, first write first
+
+    // Records the absent fields among `changed`, in bit order.
+    void note(uint32_t changed) {
+        changed &= absent;
+        for (; changed != 0; changed &= changed - 1) {
+            const int bit = __builtin_ctz(changed);
+            order[count++] = static_cast<uint8_t>(bit);
+            absent &= static_cast<uint16_t>(~(1u << bit));
+        }
+    }
+    uint32_t written() const {
+        uint32_t mask = 0;
+        for (int i = 0; i < count; ++i) mask |= 1u << order[i];
+        return mask;
+    }
+};
 
 }  // namespace ds

@@ -42,8 +42,55 @@ void Frame::step_tweens(World& world, double dt) {
     std::erase_if(world.tweens, done);
 }
 
+namespace {
+
+// Runs one per-entity step; when it may write a field the entity lacks,
+// compares around it so the first write is logged.
+template <class Step>
+void logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
+    if (w == nullptr || (w->absent & may_write) == 0) {
+        step(b);
+        return;
+    }
+    const Body before = b;
+    step(b);
+    w->note(changed_fields(before, b) & may_write);
+}
+
+}  // namespace
+
+void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                        std::span<FirstWrites> writes) {
+    const CollisionMode mode = opts.mode;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        Body& b = bodies[i];
+        FirstWrites* w = writes.empty() ? nullptr : &writes[i];
+        logged(b, w, kFieldVy | kFieldAy, apply_acceleration);
+        logged(b, w, kFieldVy, apply_gravity);
+        logged(b, w, kFieldX, apply_velocity_x);
+        logged(b, w, kFieldX | kFieldVx, [&](Body& c) { resolve_tile_collisions_x(c, grid, mode); });
+        logged(b, w, kFieldY, apply_velocity_y);
+        logged(b, w, kFieldY | kFieldVy, [&](Body& c) { resolve_tile_collisions_y(c, grid, mode); });
+        logged(b, w, kFieldOnGround,
+               [&](Body& c) { detect_on_solid(c, supporters_, support_slot_[i], grid); });
+    }
+}
+
+template <class Bulk>
+void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
+                        Bulk&& bulk) {
+    const bool log = std::any_of(writes.begin(), writes.end(),
+                                 [&](const FirstWrites& w) { return (w.absent & may_write) != 0; });
+    if (log) bulk_before_.assign(bodies.begin(), bodies.end());
+    bulk(bodies);
+    if (!log) return;
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (writes[i].absent & may_write)
+            writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
+}
+
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                         std::span<const Body> scene) {
+                         std::span<const Body> scene, std::span<FirstWrites> writes) {
     if (scene.empty()) {
         start_.assign(bodies.begin(), bodies.end());
         scene = start_;
@@ -55,18 +102,9 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
         support_slot_[i] = std::ssize(supporters_);
         supporters_.push_back(scene[i]);
     }
-    for (size_t i = 0; i < bodies.size(); ++i) {
-        Body& b = bodies[i];
-        apply_acceleration(b);
-        apply_gravity(b);
-        apply_velocity_x(b);
-        resolve_tile_collisions_x(b, grid, opts.mode);
-        apply_velocity_y(b);
-        resolve_tile_collisions_y(b, grid, opts.mode);
-        detect_on_solid(b, supporters_, support_slot_[i], grid);
-    }
-    resolve_entity_collisions(bodies);
-    sync_groups(bodies);
+    step_bodies(bodies, grid, opts, writes);
+    logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, resolve_entity_collisions);
+    logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
 }
 
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {

@@ -64,12 +64,18 @@ public:
 
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the
-    // tweens); empty means the bodies as they are now.
+    // tweens); empty means the bodies as they are now. With `writes` (one per
+    // body), each step's first writes to absent fields are logged in order.
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                      std::span<const Body> scene = {});
+                      std::span<const Body> scene = {}, std::span<FirstWrites> writes = {});
 
 private:
     void step_tweens(World& world, double dt);
+    void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                     std::span<FirstWrites> writes);
+    template <class Bulk>
+    void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
+                     Bulk&& bulk);
 
     std::vector<Body> start_;  // the frame-start scene (before tweens)
     // The frame-start bodies that can hold another up (solid, not ghosts),
@@ -77,6 +83,7 @@ private:
     // detection scans only these.
     std::vector<Body> supporters_;
     std::vector<std::ptrdiff_t> support_slot_;
+    std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
     FrameReport report_;
 };
 

@@ -105,6 +105,52 @@ TEST_CASE("a falling body lands on a tile floor") {
     CHECK(same_body(w.bodies[0], rest));
 }
 
+// ---- first writes to absent fields -------------------------------------------
+
+TEST_CASE("step_physics logs first writes to absent fields in step order") {
+    SUBCASE("gravity writes vy, then velocity-x x, then velocity-y y") {
+        Body b = box(0, 0, 4, 4);
+        b.gravity = true;
+        b.vx = I(1);
+        std::vector<Body> bodies{b};
+        std::vector<ds::FirstWrites> writes{{.absent = ds::kFieldX | ds::kFieldY | ds::kFieldVy |
+                                                       ds::kFieldAy | ds::kFieldOnGround}};
+        Frame f;
+        f.step_physics(bodies, nullptr, opts(), {}, writes);
+        REQUIRE(writes[0].count == 3);
+        CHECK((1u << writes[0].order[0]) == ds::kFieldVy);
+        CHECK((1u << writes[0].order[1]) == ds::kFieldX);
+        CHECK((1u << writes[0].order[2]) == ds::kFieldY);
+        CHECK(writes[0].absent == (ds::kFieldAy | ds::kFieldOnGround));
+    }
+    SUBCASE("a write later undone stays logged: vy 0 → 1 by gravity → 0 on landing") {
+        const auto g = grid({"....", "####"});
+        Body b = player(16, 0);
+        b.solid = false;
+        b.on_ground = true;
+        std::vector<Body> bodies{b};
+        std::vector<ds::FirstWrites> writes{{.absent = ds::kFieldVy | ds::kFieldVx}};
+        Frame f;
+        f.step_physics(bodies, &g, opts(), {}, writes);
+        CHECK_EXACT(bodies[0].vy, 0);
+        CHECK(ds::changed_fields(b, bodies[0]) == 0);
+        REQUIRE(writes[0].count == 1);
+        CHECK((1u << writes[0].order[0]) == ds::kFieldVy);
+        CHECK(writes[0].written() == ds::kFieldVy);
+    }
+    SUBCASE("push-apart writes x then vx in one step (bit order)") {
+        std::vector<Body> bodies{solid_box(0, 0, 16, 16), solid_box(10, 2, 16, 16)};
+        std::vector<ds::FirstWrites> writes(2, {.absent = ds::kFieldVx});
+        Frame f;
+        f.step_physics(bodies, nullptr, opts(), {}, writes);
+        CHECK_EXACT(bodies[0].vx, -1);
+        CHECK_EXACT(bodies[1].vx, 1);
+        CHECK(writes[0].count == 1);
+        CHECK(writes[1].count == 1);
+        CHECK(writes[1].written() == ds::kFieldVx);
+    }
+}
+
 TEST_CASE("the step order: acceleration, gravity, x, tile x, y, tile y, on-solid") {
     SUBCASE("a jump: vy = 0 - 15 + 1") {
         World w;
