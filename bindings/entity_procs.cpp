@@ -58,8 +58,8 @@ SCM resolve_tile_y_1(SCM e, SCM tm, SCM mode) {
     return resolve_tiles<resolve_tile_collisions_y>("resolve-tile-collisions-y", e, tm, mode);
 }
 
-// The scene's entities, decoded; the entity's own slot is the first one eq?
-// to it.
+// The scene's entities, decoded; every slot holding the entity itself (eq?)
+// is left out as a supporter, as SPEC §4 says "not eq?".
 SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
     Failure f{.proc = "detect-on-solid"};
     SCM result = e;
@@ -67,12 +67,12 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
     {
         const TileGrid* grid = nullptr;
         Batch& scene = lease_batch();
-        std::ptrdiff_t self = -1, index = 0;
-        for (SCM p = entities; scm_is_pair(p) && self < 0; p = SCM_CDR(p), ++index)
-            if (scm_is_eq(SCM_CAR(p), e)) self = index;
         if (grid_from_scm(tilemap, grid, f) && decode_batch(entities, scene, f)) {
+            size_t index = 0;
+            for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++index)
+                if (scm_is_eq(SCM_CAR(p), e)) scene.bodies[index].solid = false;
             result = step_entity("detect-on-solid", e, [&](Body& b) {
-                detect_on_solid(b, scene.bodies, self, grid);
+                detect_on_solid(b, scene.bodies, -1, grid);
             });
         }
     }

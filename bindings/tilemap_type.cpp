@@ -196,6 +196,14 @@ SCM tilemap_cell_solid_p(SCM m, SCM col, SCM row) {
     return scm_from_bool(tilemap_handle(m).grid.solid(scm_to_int64(col), scm_to_int64(row)));
 }
 
+SCM tilemap_solid_extent(SCM m) {
+    Failure f;
+    if (!check_map(m, "tilemap-solid-extent", f)) raise(f);
+    const TileGrid& g = tilemap_handle(m).grid;
+    return scm_list_4(scm_from_int64(g.origin_col()), scm_from_int64(g.origin_row()),
+                      scm_from_int(g.cols()), scm_from_int(g.rows()));
+}
+
 SCM tilemap_gid(SCM m, SCM layer, SCM col, SCM row) {
     Failure f;
     if (!check_map(m, "tilemap-gid", f)) raise(f);
@@ -250,6 +258,9 @@ void register_tilemap_procedures() {
     define_procedure("tilemap-tile-height", 1, 0, 0, (Subr)tilemap_tile_height, "Tile height in px.");
     define_procedure("tilemap-cell-solid?", 3, 0, 0, (Subr)tilemap_cell_solid_p,
                      "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+    define_procedure("tilemap-solid-extent", 1, 0, 0, (Subr)tilemap_solid_extent,
+                     "(first-col first-row cols rows): the block of cells that can be solid; every "
+                     "cell outside it is empty (infinite maps may start at negative cells).");
     define_procedure("tilemap-objects", 1, 0, 0, (Subr)tilemap_objects,
                      "The objects of every object layer, as entity plists.");
     define_procedure("tilemap-gid", 4, 0, 0, (Subr)tilemap_gid,

@@ -5,7 +5,8 @@
   #:use-module (downstroke native)
   #:use-module (downstroke entity)
   #:export (make-tween tween? tween-props tween-duration tween-delay tween-ease
-            tween-repeat tween-yoyo? tween-elapsed ease easing-names))
+            tween-repeat tween-yoyo? tween-on-complete tween-elapsed
+            tween-with-elapsed ease easing-names))
 
 ;; Field order matters: the native stepper reads the record by position.
 (define-record-type <tween>
@@ -22,6 +23,12 @@
   (elapsed tween-elapsed))
 
 (%register-tween-type! <tween>)
+
+(define (tween-with-elapsed tween elapsed)
+  "A copy of TWEEN that has run for ELAPSED ms."
+  (%make-tween (tween-props tween) (tween-duration tween) (tween-delay tween)
+               (tween-ease tween) (tween-ease-index tween) (tween-repeat tween)
+               (tween-yoyo? tween) (tween-on-complete tween) elapsed))
 
 (define easing-names
   (cons 'linear
@@ -52,6 +59,14 @@ ON-COMPLETE with the entity (its result replaces the entity when it is one)."
               (unless (and (pair? p) (keyword? (car p)) (finite-real? (cdr p)))
                 (bad "make-tween" "props: expected (keyword . finite number)" p)))
             props)
+  ;; One value per key: a key twice would need a rule for which one wins.
+  (let loop ((keys (map car props)))
+    (unless (null? keys)
+      (when (memq (car keys) (cdr keys))
+        (bad "make-tween" "props: duplicate key" (car keys)))
+      (when (eq? (car keys) #:tween)
+        (bad "make-tween" "props: a tween cannot drive its own key" (car keys)))
+      (loop (cdr keys))))
   (unless (and (finite-real? duration) (>= duration 0))
     (bad "make-tween" "duration: expected a number of ms ≥ 0" duration))
   (unless (and (finite-real? delay) (>= delay 0))

@@ -1,0 +1,571 @@
+;;; (downstroke reference) — the physics rules of SPEC §1–§6 in plain Scheme.
+;;;
+;;; An executable specification: the same procedures as (downstroke physics),
+;;; written for reading, not for speed, and sharing nothing with the native
+;;; core but the tile queries of (downstroke tilemap). The differential tests
+;;; step random scenes through both and demand equal? results, so every rule
+;;; here is one the C++ core must follow to the bit.
+(define-module (downstroke reference)
+  #:use-module (srfi srfi-1)
+  #:use-module (downstroke entity)
+  #:use-module (downstroke world)
+  #:use-module (downstroke tween)
+  #:use-module ((downstroke physics) #:select (collision-mode))
+  #:use-module ((downstroke tilemap)
+                #:select (tilemap-tile-width tilemap-tile-height
+                          tilemap-cell-solid? tilemap-solid-extent))
+  #:re-export (collision-mode)
+  #:export (*gravity* *jump-force* *on-solid-tolerance*
+            step-tweens apply-acceleration apply-gravity apply-velocity-x
+            apply-velocity-y apply-velocity resolve-tile-collisions-x
+            resolve-tile-collisions-y detect-on-solid resolve-entity-collisions
+            sync-groups aabb-overlap? step-scene))
+
+(define *gravity* 1)
+(define *jump-force* 15)
+(define *on-solid-tolerance* 4)
+
+;;; ---------------------------------------------------------------- numbers (§1)
+;;; The core computes in double. A number is read as the nearest double,
+;;; staying exact only when it is an exact integer; sums of exact integers
+;;; stay exact (rounded like a double past 2^53); anything touching a flonum
+;;; is computed on flonums, so IEEE rules (signed zeros) apply throughout.
+
+(define (fl x) (exact->inexact x))
+
+(define (as-double x)
+  (cond ((not (exact? x)) x)
+        ((and (integer? x) (< (abs x) (expt 2 53))) x)
+        ((integer? x) (inexact->exact (fl x)))
+        (else (fl x))))                 ; exact fractions are read as flonums
+
+(define (num+ a b)
+  (if (and (exact? a) (exact? b)) (as-double (+ a b)) (+ (fl a) (fl b))))
+(define (num- a b)
+  (if (and (exact? a) (exact? b)) (as-double (- a b)) (- (fl a) (fl b))))
+
+;;; ---------------------------------------------------------------- reading and writing entities (§2)
+
+;;; Every step first checks its entities as a whole (SPEC §2): a malformed
+;;; plist, or a wrongly typed physics key (first occurrence), is an error
+;;; naming the step, the key and the value.
+
+(define number-keys
+  '(#:x #:y #:width #:height #:vx #:vy #:ay #:group-local-x #:group-local-y))
+
+(define (fail who message . args)
+  (scm-error 'wrong-type-arg (symbol->string who) message args #f))
+
+(define (check-value who key v)
+  (cond ((memq key number-keys)
+         (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
+         (when (or (nan? v) (inf? v)) (fail who "entity key ~S: expected a finite number, got ~S" key v)))
+        ((eq? key #:skip-pipelines)
+         (unless (and (list? v) (every symbol? v))
+           (fail who "entity key ~S: expected a list of symbols, got ~S" key v)))))
+
+(define (check who e)
+  (let loop ((p e) (seen '()))
+    (cond ((null? p) e)
+          ((not (pair? p)) (fail who "malformed entity: expected a keyword plist, got ~S" e))
+          ((not (keyword? (car p))) (fail who "malformed entity: ~S in key position of ~S" (car p) e))
+          ((not (pair? (cdr p))) (fail who "malformed entity: key ~S has no value in ~S" (car p) e))
+          ((memq (car p) seen) (loop (cddr p) seen))      ; first occurrence wins
+          (else (check-value who (car p) (cadr p))
+                (loop (cddr p) (cons (car p) seen))))))
+
+(define (check-all who entities)
+  (unless (list? entities) (fail who "expected a list of entities, got ~S" entities))
+  (for-each (lambda (e) (check who e)) entities))
+
+(define-syntax-rule (define-step (name e arg ...) doc body ...)
+  ;; A per-entity step that checks its entity first.
+  (define (name e arg ...)
+    doc
+    (check 'name e)
+    body ...))
+
+(define (num e key)
+  "The number under KEY (0 when absent), as the core reads it."
+  (as-double (entity-ref e key 0)))
+
+(define (flag e key) (and (entity-ref e key #f) #t))
+
+(define (skips? e step) (entity-skips-pipeline? e step))
+
+(define (put e key old new)
+  "E with KEY set to NEW, unless NEW is the value OLD that was read: a step
+writes a key only when its value or exactness changes."
+  (if (eqv? old new) e (entity-set e key new)))
+
+(define (entity-remove e key)
+  "E without the first occurrence of KEY."
+  (let loop ((p e) (acc '()))
+    (cond ((null? p) e)
+          ((eq? (car p) key) (append-reverse acc (cddr p)))
+          (else (loop (cddr p) (cons* (cadr p) (car p) acc))))))
+
+(define (same-or new old)
+  "OLD when NEW holds the very same elements, so an unchanged list stays eq?."
+  (if (every eq? new old) old new))
+
+(define (map-keeping proc lst) (same-or (map proc lst) lst))
+
+(define (scene-tiles scene) (and scene (scene-tilemap scene)))
+
+;;; ---------------------------------------------------------------- motion (§4)
+
+(define-step (apply-acceleration e scene dt)
+  "vy += ay, then ay = 0 (written only when it was non-zero)."
+  (if (or (not (flag e #:gravity?)) (skips? e 'acceleration))
+      e
+      (let* ((vy (num e #:vy)) (ay (num e #:ay))
+             (e (put e #:vy vy (num+ vy ay))))
+        (if (zero? ay) e (put e #:ay ay 0)))))
+
+(define-step (apply-gravity e scene dt)
+  "vy += *gravity*."
+  (if (or (not (flag e #:gravity?)) (skips? e 'gravity))
+      e
+      (let ((vy (num e #:vy)))
+        (put e #:vy vy (num+ vy *gravity*)))))
+
+(define-step (apply-velocity-x e scene dt)
+  "x += vx."
+  (if (skips? e 'velocity-x)
+      e
+      (let ((x (num e #:x)))
+        (put e #:x x (num+ x (num e #:vx))))))
+
+(define-step (apply-velocity-y e scene dt)
+  "y += vy."
+  (if (skips? e 'velocity-y)
+      e
+      (let ((y (num e #:y)))
+        (put e #:y y (num+ y (num e #:vy))))))
+
+(define-step (apply-velocity e scene dt)
+  "Both axes, each skippable on its own."
+  (apply-velocity-y (apply-velocity-x e scene dt) scene dt))
+
+;;; ---------------------------------------------------------------- tile cells (§4)
+
+(define (cells-of pos size tile)
+  "The cells ⌊pos/tile⌋ … ⌈(pos+size)/tile⌉−1 the span [pos, pos+size)
+overlaps, as (first . last), or #f when size ≤ 0. Exact spans are divided
+exactly; others in double."
+  (cond ((not (> size 0)) #f)
+        ((and (exact? pos) (exact? size))
+         (cons (floor (/ pos tile)) (- (ceiling (/ (+ pos size) tile)) 1)))
+        (else
+         (cons (inexact->exact (floor (/ (fl pos) tile)))
+               (- (inexact->exact (ceiling (/ (+ (fl pos) (fl size)) tile))) 1)))))
+
+(define (cell-of pos tile)
+  (if (exact? pos)
+      (floor (/ pos tile))
+      (inexact->exact (floor (/ (fl pos) tile)))))
+
+(define (clip range first count)
+  "The part of RANGE within [first, first+count): cells outside the map are
+empty, so there is no need to look at them."
+  (and range
+       (let ((lo (max (car range) first))
+             (hi (min (cdr range) (+ first count -1))))
+         (and (<= lo hi) (cons lo hi)))))
+
+(define (range->list range step)
+  (if range
+      (if (> step 0)
+          (iota (+ (- (cdr range) (car range)) 1) (car range))
+          (reverse (iota (+ (- (cdr range) (car range)) 1) (car range))))
+      '()))
+
+(define (candidate-cells pos vel size tile mode)
+  "The cells to test along the moving axis. Discrete: the box as it is.
+Swept: the box plus every cell its leading edge crossed, i.e. from where the
+leading edge started (pos − vel, plus size when moving forward) to the box."
+  (if (or (eq? mode 'discrete) (not (> size 0)))
+      (cells-of pos size tile)
+      (let ((start (num- pos vel)))
+        (if (> vel 0)
+            (let* ((lead-start (num+ start size))
+                   (lo (if (< lead-start pos) lead-start pos)))
+              (cells-of lo (num- (num+ pos size) lo) tile))
+            (let* ((end (num+ pos size))
+                   (hi (if (> start end) start end)))
+              (cells-of pos (num- hi pos) tile))))))
+
+(define (snap pos vel size tile cell)
+  "Where the box stops against CELL: flush with its near side. The result is
+exact when the position and size were."
+  (let* ((exact (and (exact? pos) (exact? size)))
+         (edge (* (if (> vel 0) cell (+ cell 1)) tile))
+         (v (if (> vel 0) (num- edge size) edge)))
+    (if exact v (fl v))))
+
+(define (resolve-axis e tm pos-key vel-key size-key across-key across-size-key
+                      tile tile-across first count first-across count-across solid?)
+  ;; Cells are walked from the side the box moves from; the first solid
+  ;; one met is the one it reached first.
+  (let ((pos (num e pos-key)) (vel (num e vel-key)) (size (num e size-key)))
+    (let* ((along (clip (candidate-cells pos vel size tile (collision-mode)) first count))
+           (across (clip (cells-of (num e across-key) (num e across-size-key) tile-across)
+                         first-across count-across))
+           (hit (find (lambda (c)
+                        (any (lambda (k) (solid? c k)) (range->list across 1)))
+                      (range->list (and across along) (if (> vel 0) 1 -1)))))
+      (if hit
+          (let ((e (put e pos-key pos (snap pos vel size tile hit))))
+            (put e vel-key vel 0))
+          e))))
+
+(define-step (resolve-tile-collisions-x e scene dt)
+  "Moving along x into solid cells (of the rows the box spans): snap flush
+against the first one, vx = 0."
+  (let ((tm (scene-tiles scene)))
+    (if (or (not tm) (zero? (num e #:vx)) (skips? e 'tile-collisions-x))
+        e
+        (apply (lambda (col0 row0 cols rows)
+                 (resolve-axis e tm #:x #:vx #:width #:y #:height
+                               (tilemap-tile-width tm) (tilemap-tile-height tm)
+                               col0 cols row0 rows
+                               (lambda (col row) (tilemap-cell-solid? tm col row))))
+               (tilemap-solid-extent tm)))))
+
+(define-step (resolve-tile-collisions-y e scene dt)
+  "The same along y, in the columns the box spans; vy = 0."
+  (let ((tm (scene-tiles scene)))
+    (if (or (not tm) (zero? (num e #:vy)) (skips? e 'tile-collisions-y))
+        e
+        (apply (lambda (col0 row0 cols rows)
+                 (resolve-axis e tm #:y #:vy #:height #:x #:width
+                               (tilemap-tile-height tm) (tilemap-tile-width tm)
+                               row0 rows col0 cols
+                               (lambda (row col) (tilemap-cell-solid? tm col row))))
+               (tilemap-solid-extent tm)))))
+
+;;; ---------------------------------------------------------------- ground (§4)
+
+(define (tile-supports? e tm)
+  "A solid cell in the row just under the box (row ⌊(y+h)/th⌋), in any of
+the columns it spans."
+  (and tm
+       (apply (lambda (col0 row0 cols rows)
+                (let ((row (cell-of (num+ (num e #:y) (num e #:height)) (tilemap-tile-height tm)))
+                      (span (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm))
+                                  col0 cols)))
+                  (and (clip (cons row row) row0 rows)
+                       (any (lambda (col) (tilemap-cell-solid? tm col row))
+                            (range->list span 1)))))
+              (tilemap-solid-extent tm))))
+
+(define (entity-supports? e o)
+  "O holds E up: solid, not a ghost, overlapping horizontally, its top
+within the tolerance of E's feet, moving at nearly E's vertical speed."
+  (and (flag o #:solid?)
+       (not (skips? o 'entity-collisions))
+       (< (num e #:x) (num+ (num o #:x) (num o #:width)))
+       (< (num o #:x) (num+ (num e #:x) (num e #:width)))
+       (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num o #:y))) *on-solid-tolerance*)
+       (<= (abs (num- (num e #:vy) (num o #:vy))) *on-solid-tolerance*)))
+
+(define (same-id? e o)
+  (let ((id (entity-ref e #:id #f)))
+    (and id (equal? id (entity-ref o #:id #f)))))
+
+(define (on-solid e tm others itself?)
+  "#:on-ground? from the tiles and from the entities OTHERS, leaving out
+those for which (ITSELF? index entity) holds and those sharing E's #:id."
+  (if (or (not (flag e #:gravity?)) (skips? e 'on-solid))
+      e
+      (let ((ground (or (tile-supports? e tm)
+                        (any (lambda (o i)
+                               (and (not (itself? i o)) (not (same-id? e o))
+                                    (entity-supports? e o)))
+                             others (iota (length others))))))
+        (put e #:on-ground? (flag e #:on-ground?) ground))))
+
+(define-step (detect-on-solid e scene dt)
+  "Whether E stands on a solid tile or on a solid entity of SCENE (not
+itself: not eq?, no equal #:id)."
+  (let ((others (if scene (scene-entities scene) '())))
+    (check-all 'detect-on-solid others)
+    (on-solid e (scene-tiles scene) others (lambda (i o) (eq? o e)))))
+
+;;; ---------------------------------------------------------------- bulk steps (§4)
+;;; A bulk step works on every entity's numbers and then writes each
+;;; entity's changed keys once, in the order x y vx vy: a key changed by one
+;;; pair and restored by a later one is not written.
+
+(define (box e)
+  (vector (num e #:x) (num e #:y) (num e #:width) (num e #:height)
+          (num e #:vx) (num e #:vy)))
+
+(define (write-box e before after)
+  (fold (lambda (key i e) (put e key (vector-ref before i) (vector-ref after i)))
+        e '(#:x #:y #:vx #:vy) '(0 1 4 5)))
+
+(define (x b) (vector-ref b 0))
+(define (y b) (vector-ref b 1))
+(define (w b) (vector-ref b 2))
+(define (h b) (vector-ref b 3))
+
+(define (overlaps? a b)
+  (and (< (x a) (num+ (x b) (w b))) (< (x b) (num+ (x a) (w a)))
+       (< (y a) (num+ (y b) (h b))) (< (y b) (num+ (y a) (h a)))))
+
+(define (overlap p1 s1 p2 s2)
+  "How far [p1, p1+s1) and [p2, p2+s2) overlap, in double."
+  (- (fl (min (num+ p1 s1) (num+ p2 s2))) (fl (max p1 p2))))
+
+(define (centre2 p s) (+ (* 2 (fl p)) (fl s)))   ; twice the centre, in double
+
+(define (push-off-immovable! m s ox oy)
+  "Landing wins while M's centre is above S's; else the shallower axis."
+  (cond ((< (centre2 (y m) (h m)) (centre2 (y s) (h s)))
+         (vector-set! m 1 (num- (y s) (h m)))
+         (vector-set! m 5 0))
+        ((< ox oy)
+         (vector-set! m 0 (if (< (centre2 (x m) (w m)) (centre2 (x s) (w s)))
+                              (num- (x s) (w m))
+                              (num+ (x s) (w s))))
+         (vector-set! m 4 0))
+        (else
+         (vector-set! m 1 (num+ (y s) (h s)))
+         (vector-set! m 5 0))))
+
+(define (push-apart! a b pos size vel o)
+  "Share the overlap O along one axis (POS SIZE VEL: vector slots). A, the
+earlier in the list, moves negative unless B's centre is smaller, and takes
+the larger half when everything is an exact integer."
+  (let* ((exact (every exact? (list (vector-ref a pos) (vector-ref a size)
+                                    (vector-ref b pos) (vector-ref b size))))
+         (a-share (if exact (ceiling (/ (inexact->exact o) 2)) (/ o 2)))
+         (b-share (if exact (- (inexact->exact o) a-share) (/ o 2)))
+         (a-negative (not (< (centre2 (vector-ref b pos) (vector-ref b size))
+                             (centre2 (vector-ref a pos) (vector-ref a size))))))
+    (vector-set! a pos (num+ (vector-ref a pos) (if a-negative (- a-share) a-share)))
+    (vector-set! b pos (num+ (vector-ref b pos) (if a-negative b-share (- b-share))))
+    (vector-set! a vel (if a-negative -1 1))
+    (vector-set! b vel (if a-negative 1 -1))))
+
+(define (resolve-pair! ea a eb b)
+  (let ((a-fixed (flag ea #:immovable?)) (b-fixed (flag eb #:immovable?))
+        (ox (overlap (x a) (w a) (x b) (w b)))
+        (oy (overlap (y a) (h a) (y b) (h b))))
+    (cond ((and a-fixed b-fixed) #t)
+          (a-fixed (push-off-immovable! b a ox oy))
+          (b-fixed (push-off-immovable! a b ox oy))
+          ((< ox oy) (push-apart! a b 0 2 4 ox))
+          (else (push-apart! a b 1 3 5 oy)))))
+
+(define (resolve-entity-collisions entities)
+  "One pass over the pairs (i, j), i < j, in list order, each seeing what
+earlier pairs did: solid, non-ghost, strictly overlapping pairs are pushed
+apart (SPEC §4)."
+  (check-all 'resolve-entity-collisions entities)
+  (let* ((before (map box entities))
+         (after (map vector-copy before))
+         (takes-part (map (lambda (e) (and (flag e #:solid?)
+                                           (not (skips? e 'entity-collisions))))
+                          entities))
+         (members (filter-map (lambda (e b part) (and part (cons e b)))
+                              entities after takes-part)))
+    (let outer ((rest members))
+      (unless (null? rest)
+        (for-each (lambda (other)
+                    (when (overlaps? (cdar rest) (cdr other))
+                      (resolve-pair! (caar rest) (cdar rest) (car other) (cdr other))))
+                  (cdr rest))
+        (outer (cdr rest))))
+    (same-or (map write-box entities before after) entities)))
+
+(define (group-of e) (entity-ref e #:group-id #f))
+
+(define (sync-groups entities)
+  "Members follow their group's origin (the first #:group-origin? entity of
+that #:group-id, compared with equal?): x = origin.x + #:group-local-x, and
+likewise y."
+  (check-all 'sync-groups entities)
+  (let* ((slots (iota (length entities)))
+         ;; (group-id slot . origin), first origin first: assoc finds it
+         (origins (filter-map (lambda (e i)
+                                (and (group-of e) (flag e #:group-origin?)
+                                     (cons* (group-of e) i e)))
+                              entities slots)))
+    (same-or
+     (map (lambda (e i)
+            (let ((origin (and (group-of e) (assoc (group-of e) origins))))
+              (if (or (not origin) (= (cadr origin) i))
+                  e
+                  (let* ((o (cddr origin))
+                         (e (put e #:x (num e #:x) (num+ (num o #:x) (num e #:group-local-x)))))
+                    (put e #:y (num e #:y) (num+ (num o #:y) (num e #:group-local-y)))))))
+          entities slots)
+     entities)))
+
+(define (aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2)
+  "Whether two boxes overlap; touching edges do not."
+  (let ((r (lambda (v)
+             (unless (and (real? v) (not (nan? v)) (not (inf? v)))
+               (fail 'aabb-overlap? "expected a finite real number, got ~S" v))
+             (as-double v))))
+    (overlaps? (vector (r x1) (r y1) (r w1) (r h1)) (vector (r x2) (r y2) (r w2) (r h2)))))
+
+;;; ---------------------------------------------------------------- easing (§6)
+;;; Penner's curves as easings.net writes them; the ends are pinned to 0 and 1.
+
+(define pi (acos -1))
+
+(define (bounce-out u)
+  (let ((n1 7.5625) (d1 2.75))
+    (cond ((< u (/ 1 d1)) (* n1 u u))
+          ((< u (/ 2 d1)) (let ((u (- u (/ 1.5 d1)))) (+ (* n1 u u) 0.75)))
+          ((< u (/ 2.5 d1)) (let ((u (- u (/ 2.25 d1)))) (+ (* n1 u u) 0.9375)))
+          (else (let ((u (- u (/ 2.625 d1)))) (+ (* n1 u u) 0.984375))))))
+
+(define (in-curve family t)
+  (case family
+    ((quad) (* t t))
+    ((cubic) (* t t t))
+    ((quart) (* t t t t))
+    ((sine) (- 1 (cos (/ (* t pi) 2))))
+    ((expo) (if (= t 0) 0. (expt 2. (- (* 10 t) 10))))
+    ((back) (let* ((c1 1.70158) (c3 (+ c1 1)))
+              (- (* c3 t t t) (* c1 t t))))
+    ((elastic) (if (or (= t 0) (= t 1))
+                   t
+                   (* (- (expt 2. (- (* 10 t) 10)))
+                      (sin (* (- (* t 10) 10.75) (/ (* 2 pi) 3))))))
+    ((bounce) (- 1 (bounce-out (- 1 t))))))
+
+(define (back-in-out t)
+  (let ((c2 (* 1.70158 1.525)))
+    (if (< t 0.5)
+        (let ((u (* 2 t))) (/ (* u u (- (* (+ c2 1) 2 t) c2)) 2))
+        (let ((u (- (* 2 t) 2))) (/ (+ (* u u (+ (* (+ c2 1) (- (* t 2) 2)) c2)) 2) 2)))))
+
+(define (elastic-in-out t)
+  (let ((c5 (/ (* 2 pi) 4.5)))
+    (cond ((or (= t 0) (= t 1)) t)
+          ((< t 0.5) (/ (- (* (expt 2. (- (* 20 t) 10)) (sin (* (- (* 20 t) 11.125) c5)))) 2))
+          (else (+ (/ (* (expt 2. (+ (* -20 t) 10)) (sin (* (- (* 20 t) 11.125) c5))) 2) 1)))))
+
+(define (ease-by-name name t)
+  (let* ((s (symbol->string name))
+         (variant (cond ((string-suffix? "-in-out" s) 'in-out)
+                        ((string-suffix? "-out" s) 'out)
+                        (else 'in)))
+         (family (string->symbol (substring s 0 (string-index s #\-)))))
+    (case variant
+      ((in) (in-curve family t))
+      ((out) (- 1 (in-curve family (- 1 t))))
+      (else (case family
+              ((back) (back-in-out t))
+              ((elastic) (elastic-in-out t))
+              (else (if (< t 0.5)
+                        (/ (in-curve family (* 2 t)) 2)
+                        (- 1 (/ (in-curve family (- 2 (* 2 t))) 2)))))))))
+
+(define (eased ease t)
+  "EASE (a name or a procedure) at T. Names pin the ends exactly; a
+procedure is called as it is and must return a finite number."
+  (cond ((procedure? ease)
+         (let ((v (ease t)))
+           (unless (and (real? v) (not (nan? v)) (not (inf? v)))
+             (scm-error 'wrong-type-arg "step-tweens"
+                        "tween easing ~S returned ~S, not a finite number" (list ease v) #f))
+           (fl v)))
+        ((not (> t 0)) 0.)
+        ((>= t 1) 1.)
+        ((eq? ease 'linear) t)
+        (else (fl (ease-by-name ease t)))))
+
+;;; ---------------------------------------------------------------- tweens (§6)
+
+(define (tween-phase tw elapsed)
+  "Where a tween stands after ELAPSED ms: #f during the delay, else
+(finished? reversed? t) with t the progress through the current cycle."
+  (let* ((duration (fl (tween-duration tw)))
+         (delay (fl (tween-delay tw)))
+         (repeat (tween-repeat tw))
+         (forever (< repeat 0))
+         (cycles (+ repeat 1))
+         (run (- elapsed delay)))
+    (cond ((< elapsed delay) #f)
+          ((or (<= duration 0) (and (not forever) (>= run (* cycles duration))))
+           ;; over: the last cycle's direction decides the final target
+           (list #t (and (tween-yoyo? tw) (not forever) (odd? (- cycles 1))) 1.))
+          (else
+           (let ((cycle (floor (/ run duration))))
+             (list #f
+                   (and (tween-yoyo? tw) (odd? (inexact->exact cycle)))
+                   (max 0. (min 1. (/ (- run (* cycle duration)) duration)))))))))
+
+(define (tween-prop-value prop finished? reversed? e)
+  "A property's value: start + (end − start)·e as a flonum, and at the end
+the target itself (as the core reads it)."
+  (let ((from (as-double (if reversed? (cddr prop) (cadr prop))))
+        (to (as-double (if reversed? (cadr prop) (cddr prop)))))
+    (if finished?
+        to
+        (+ (fl from) (* (- (fl to) (fl from)) e)))))
+
+(define (advance-tween e tw dt)
+  (let* ((elapsed (+ (fl (tween-elapsed tw)) (fl dt)))
+         (phase (tween-phase tw elapsed)))
+    (if (not phase)
+        (entity-set e #:tween (tween-with-elapsed tw elapsed))
+        (apply
+         (lambda (finished? reversed? t)
+           (let* ((k (eased (tween-ease tw) t))
+                  (e (fold (lambda (prop e)
+                             (entity-set e (car prop) (tween-prop-value prop finished? reversed? k)))
+                           e (tween-props tw))))
+             (if (not finished?)
+                 (entity-set e #:tween (tween-with-elapsed tw elapsed))
+                 (let ((e (entity-remove e #:tween))
+                       (done (tween-on-complete tw)))
+                   (if done
+                       (let ((r (done e)))
+                         (if (and (pair? r) (keyword? (car r))) r e))
+                       e)))))
+         phase))))
+
+(define-step (step-tweens e scene dt)
+  "Advance E's #:tween by DT ms: write its properties, drop it when it ends
+and call its on-complete."
+  (let ((tw (entity-ref e #:tween #f)))
+    (cond ((or (not tw) (skips? e 'tweens)) e)
+          ((not (tween? tw)) (fail 'step-tweens "entity key ~S: expected a tween (make-tween), got ~S" #:tween tw))
+          (else (advance-tween e tw dt)))))
+
+;;; ---------------------------------------------------------------- the frame (§5)
+
+(define (step-scene scene dt)
+  "One default-engine-update pass: tweens; then each entity through the
+per-entity steps, all reading the scene as it was at the start of the
+frame; then push-apart; then groups."
+  (let* ((start (scene-entities scene))
+         (tm (scene-tilemap scene))
+         (tweened (map-keeping (lambda (e) (step-tweens e scene dt)) start))
+         (moved
+          (same-or
+           (map (lambda (e slot)
+                  (fold (lambda (step e) (step e))
+                        e
+                        (list (lambda (e) (apply-acceleration e scene dt))
+                              (lambda (e) (apply-gravity e scene dt))
+                              (lambda (e) (apply-velocity-x e scene dt))
+                              (lambda (e) (resolve-tile-collisions-x e scene dt))
+                              (lambda (e) (apply-velocity-y e scene dt))
+                              (lambda (e) (resolve-tile-collisions-y e scene dt))
+                              ;; not itself: its own slot of the frame-start list
+                              (lambda (e) (on-solid e tm start (lambda (i o) (= i slot)))))))
+                tweened (iota (length tweened)))
+           tweened))
+         (result (sync-groups (resolve-entity-collisions moved))))
+    (if (eq? result start)
+        scene
+        (update-scene scene #:entities result))))
