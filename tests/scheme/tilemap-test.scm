@@ -155,12 +155,16 @@
 (test-equal "zlib chunk: gid 4" '(#f #f #t #t) (cells inf '((4 . -4) (5 . -4) (6 . -4) (7 . -4))))
 (test-equal "between chunks" #f (tilemap-cell-solid? inf 5 0))
 (test-equal "far away" #f (tilemap-cell-solid? inf 100 100))
+;; Columns -4 … 7 and rows -4 … 1 can hold solid cells.
+(test-equal "solid extent of an infinite map" '(-4 -4 12 6) (tilemap-solid-extent inf))
+(test-assert (mentions? (error-text (lambda () (tilemap-solid-extent 'map))) "tilemap-solid-extent"))
 
 ;;; ---------------------------------------------------------------- make-tilemap
 (define mv (make-tilemap 3 2 8 8 #(0 1 0 2 0 3) '(1 2)))
 (test-assert (tilemap? mv))
 (test-equal '(3 2 8 8) (list (tilemap-width mv) (tilemap-height mv) (tilemap-tile-width mv) (tilemap-tile-height mv)))
 (test-equal "vector cells" '((#f #t #f) (#t #f #f)) (solid-grid mv))
+(test-equal "solid extent of a made map" '(0 0 3 2) (tilemap-solid-extent mv))
 (define ml (make-tilemap 3 2 8 8 '(0 1 0 2 0 3) '(1 2)))
 (test-equal "list cells" '((#f #t #f) (#t #f #f)) (solid-grid ml))
 (test-equal "no solid gids: nothing solid" '((#f #f #f) (#f #f #f))

@@ -167,6 +167,16 @@
 (test-equal "ease at 0" 0 (inexact->exact (ease 'bounce-in 0)))
 (test-equal "ease at 1" 1 (inexact->exact (ease 'elastic-out 1)))
 (test-error "ease: an unknown name" (ease 'wobbly 0.5))
+(test-assert "make-tween: a key twice"
+  (mentions? (error-text (lambda () (make-tween '(#:x 0) props: '((#:x . 1) (#:y . 2) (#:x . 3)))))
+             "make-tween" "duplicate" "#:x"))
+(test-assert "make-tween: the #:tween key itself"
+  (mentions? (error-text (lambda () (make-tween '(#:x 0) props: '((#:tween . 1))))) "make-tween" "#:tween"))
+(let* ((t (make-tween '(#:x 0) props: '((#:x . 5)) duration: 100))
+       (u (tween-with-elapsed t 40.0)))
+  (test-equal "tween-with-elapsed" '(40.0 0) (list (tween-elapsed u) (tween-elapsed t)))
+  (test-equal "tween-with-elapsed keeps the rest" (tween-props t) (tween-props u))
+  (test-equal "tween-on-complete" #f (tween-on-complete u)))
 ;; A custom ease procedure.
 (define squares '())
 (define custom (tweened '(#:x 0) props: '((#:x . 100)) duration: 100
