@@ -33,7 +33,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         if (!decode_entity(SCM_CAR(p), d, f)) return false;
         batch.before.push_back(d.body);
         batch.has_tween.push_back(scm_is_true(d.tween));
-        batch.writes.push_back(FirstWrites{.absent = absent_fields(d)});
+        batch.writes.push_back(FirstWrites{.watched = watched_fields(d)});
     }
     if (!scm_is_null(p)) {
         fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");

@@ -16,7 +16,7 @@ struct Batch {
     std::vector<Body> before;  // as decoded
     std::vector<Body> bodies;  // what the steps work on
     std::vector<uint8_t> has_tween;
-    std::vector<FirstWrites> writes;  // per body: absent fields and first writes
+    std::vector<FirstWrites> writes;  // per body: watched fields and first writes
     std::vector<Body> frame_start;  // before the tweens, for ground detection
     Frame frame;               // the core's scratch for whole frames
 

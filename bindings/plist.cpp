@@ -6,6 +6,23 @@ namespace ds::guile {
 
 namespace {
 
+// The body Field a physics key holds, or 0 for keys that are not fields.
+uint32_t field_of(uint8_t k) {
+    switch (k) {
+        case kX: return kFieldX;
+        case kY: return kFieldY;
+        case kWidth: return kFieldWidth;
+        case kHeight: return kFieldHeight;
+        case kVx: return kFieldVx;
+        case kVy: return kFieldVy;
+        case kAy: return kFieldAy;
+        case kGroupLocalX: return kFieldLocalX;
+        case kGroupLocalY: return kFieldLocalY;
+        case kOnGround: return kFieldOnGround;
+        default: return 0;
+    }
+}
+
 bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
     switch (num_from_scm(value, out)) {
         case NumCheck::Ok: return true;
@@ -40,6 +57,7 @@ bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
 
 bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
     Body& b = d.body;
+    if (!SCM_I_INUMP(v) && !SCM_REALP(v)) d.lossy |= static_cast<uint16_t>(field_of(k));
     switch (k) {
         case kX: return decode_number(key, v, b.x, f);
         case kY: return decode_number(key, v, b.y, f);
@@ -166,23 +184,19 @@ Edit field_edit(int bit, const Body& b) {
 
 }  // namespace
 
-uint16_t absent_fields(const Decoded& d) {
-    constexpr struct { PhysKey key; uint32_t field; } kMap[] = {
-        {kX, kFieldX},   {kY, kFieldY},   {kWidth, kFieldWidth},        {kHeight, kFieldHeight},
-        {kVx, kFieldVx}, {kVy, kFieldVy}, {kAy, kFieldAy},              {kGroupLocalX, kFieldLocalX},
-        {kGroupLocalY, kFieldLocalY},     {kOnGround, kFieldOnGround},
-    };
+uint16_t watched_fields(const Decoded& d) {
     uint16_t absent = 0;
-    for (const auto& m : kMap)
-        if (!d.has(m.key)) absent |= static_cast<uint16_t>(m.field);
-    return absent;
+    for (uint8_t k = 0; k < kPhysKeyCount; ++k)
+        if (!d.has(static_cast<PhysKey>(k))) absent |= static_cast<uint16_t>(field_of(k));
+    return absent | d.lossy;
 }
 
 size_t field_edits(const Body& before, const Body& after, Edit* out, const FirstWrites* writes) {
     uint32_t changed = changed_fields(before, after);
     size_t n = 0;
-    // Fields first written to an absent key go last, in the order written,
-    // whatever their final value: that is where the composition appended them.
+    // Watched fields a step wrote are written whatever their final value: an
+    // absent key goes last, in the order written (where the composition
+    // appended it); a lossy one is replaced in place.
     const uint32_t appended = writes ? writes->written() : 0;
     for (uint32_t rest = changed & ~appended; rest != 0; rest &= rest - 1)
         out[n++] = field_edit(__builtin_ctz(rest), after);

@@ -16,6 +16,7 @@ namespace ds::guile {
 struct Decoded {
     Body body;
     uint32_t present = 0;  // bit k set: PhysKey k occurs in the plist
+    uint16_t lossy = 0;    // Field bits whose value is not a fixnum or flonum (1/3, 2^70)
     SCM tween = SCM_BOOL_F;
     SCM id = SCM_BOOL_F;   // the raw #:id, for equal? comparisons
     bool has(PhysKey k) const { return (present >> k) & 1u; }
@@ -41,8 +42,10 @@ struct Edit {
 // there are no edits.
 SCM rewrite_plist(SCM plist, const Edit* edits, size_t count);
 
-// The Field bits of the fields a decoded plist lacks.
-uint16_t absent_fields(const Decoded& d);
+// The Field bits a frame must watch: the fields a decoded plist lacks (a
+// first write appends them) and the lossy ones (a write must reach the plist
+// even if the frame restores the value read).
+uint16_t watched_fields(const Decoded& d);
 
 // Collects the edits for the fields that differ between before and after,
 // plus (with `writes`) every absent field a step wrote, appended in the order

@@ -64,22 +64,24 @@ struct Body {
 uint32_t changed_fields(const Body& before, const Body& after);
 
 // For a caller whose entities may lack some fields (a plist without #:vy):
-// which fields are still unwritten, and the order in which steps first wrote
-// the others. A step-by-step composition appends a missing key when a step
-// first changes it and keeps it there even if a later step restores the
-// value; this log lets a whole frame reproduce that key order.
+// which fields to watch, and the order in which steps first wrote them. A
+// step-by-step composition appends a missing key when a step first changes
+// it and keeps it there even if a later step restores the value; this log
+// lets a whole frame reproduce that key order. (The Scheme bindings also
+// watch fields whose plist value a double cannot hold, such as 1/3: once a
+// step wrote one, it must be written back even if the frame restored it.)
 struct FirstWrites {
-    uint16_t absent = 0;  // Field bits not written yet
+    uint16_t watched = 0;  // Field bits whose first write is still to come
     uint8_t count = 0;
     uint8_t order[kFieldCount] = {};  // Field bit indices, first write first
 
-    // Records the absent fields among `changed`, in bit order.
+    // Records the watched fields among `changed`, in bit order.
     void note(uint32_t changed) {
-        changed &= absent;
+        changed &= watched;
         for (; changed != 0; changed &= changed - 1) {
             const int bit = __builtin_ctz(changed);
             order[count++] = static_cast<uint8_t>(bit);
-            absent &= static_cast<uint16_t>(~(1u << bit));
+            watched &= static_cast<uint16_t>(~(1u << bit));
         }
     }
     uint32_t written() const {

@@ -48,7 +48,7 @@ namespace {
 // compares around it so the first write is logged.
 template <class Step>
 void logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
-    if (w == nullptr || (w->absent & may_write) == 0) {
+    if (w == nullptr || (w->watched & may_write) == 0) {
         step(b);
         return;
     }
@@ -80,12 +80,12 @@ template <class Bulk>
 void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                         Bulk&& bulk) {
     const bool log = std::any_of(writes.begin(), writes.end(),
-                                 [&](const FirstWrites& w) { return (w.absent & may_write) != 0; });
+                                 [&](const FirstWrites& w) { return (w.watched & may_write) != 0; });
     if (log) bulk_before_.assign(bodies.begin(), bodies.end());
     bulk(bodies);
     if (!log) return;
     for (size_t i = 0; i < bodies.size(); ++i)
-        if (writes[i].absent & may_write)
+        if (writes[i].watched & may_write)
             writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
 }
 

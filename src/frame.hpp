@@ -65,7 +65,7 @@ public:
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the
     // tweens); empty means the bodies as they are now. With `writes` (one per
-    // body), each step's first writes to absent fields are logged in order.
+    // body), each step's first writes to watched fields are logged in order.
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                       std::span<const Body> scene = {}, std::span<FirstWrites> writes = {});
 

@@ -113,7 +113,7 @@ TEST_CASE("step_physics logs first writes to absent fields in step order") {
         b.gravity = true;
         b.vx = I(1);
         std::vector<Body> bodies{b};
-        std::vector<ds::FirstWrites> writes{{.absent = ds::kFieldX | ds::kFieldY | ds::kFieldVy |
+        std::vector<ds::FirstWrites> writes{{.watched = ds::kFieldX | ds::kFieldY | ds::kFieldVy |
                                                        ds::kFieldAy | ds::kFieldOnGround}};
         Frame f;
         f.step_physics(bodies, nullptr, opts(), {}, writes);
@@ -121,7 +121,7 @@ TEST_CASE("step_physics logs first writes to absent fields in step order") {
         CHECK((1u << writes[0].order[0]) == ds::kFieldVy);
         CHECK((1u << writes[0].order[1]) == ds::kFieldX);
         CHECK((1u << writes[0].order[2]) == ds::kFieldY);
-        CHECK(writes[0].absent == (ds::kFieldAy | ds::kFieldOnGround));
+        CHECK(writes[0].watched == (ds::kFieldAy | ds::kFieldOnGround));
     }
     SUBCASE("a write later undone stays logged: vy 0 → 1 by gravity → 0 on landing") {
         const auto g = grid({"....", "####"});
@@ -129,7 +129,7 @@ TEST_CASE("step_physics logs first writes to absent fields in step order") {
         b.solid = false;
         b.on_ground = true;
         std::vector<Body> bodies{b};
-        std::vector<ds::FirstWrites> writes{{.absent = ds::kFieldVy | ds::kFieldVx}};
+        std::vector<ds::FirstWrites> writes{{.watched = ds::kFieldVy | ds::kFieldVx}};
         Frame f;
         f.step_physics(bodies, &g, opts(), {}, writes);
         CHECK_EXACT(bodies[0].vy, 0);
@@ -140,7 +140,7 @@ TEST_CASE("step_physics logs first writes to absent fields in step order") {
     }
     SUBCASE("push-apart writes x then vx in one step (bit order)") {
         std::vector<Body> bodies{solid_box(0, 0, 16, 16), solid_box(10, 2, 16, 16)};
-        std::vector<ds::FirstWrites> writes(2, {.absent = ds::kFieldVx});
+        std::vector<ds::FirstWrites> writes(2, {.watched = ds::kFieldVx});
         Frame f;
         f.step_physics(bodies, nullptr, opts(), {}, writes);
         CHECK_EXACT(bodies[0].vx, -1);

@@ -292,6 +292,19 @@
   (scene-entities (composed-frame keyless-mover 16))
   (scene-entities (step-scene keyless-mover 16)))
 
+;; A value a double cannot hold exactly (−33/2 is read as −16.5): moved to
+;; −15.5 and pushed back to −16.5 by the wall in one frame, it is written as
+;; the flonum −16.5, as the composition writes it.
+(define lossy-pair
+  (make-scene entities: '((#:x -33/2 #:y 0 #:width 16 #:height 16 #:vx 1 #:solid? #t)
+                          (#:x -0.5 #:y 0 #:width 16 #:height 16 #:solid? #t #:immovable? #t))))
+(test-eqv "composition: the fraction is replaced by the flonum"
+  -16.5 (entity-ref (car (scene-entities (composed-frame lossy-pair 16))) #:x))
+(test-equal "step-scene: equal to the composition (lossy value restored)"
+  (scene-entities (composed-frame lossy-pair 16))
+  (scene-entities (step-scene lossy-pair 16)))
+(test-eqv -16.5 (entity-ref (car (scene-entities (step-scene lossy-pair 16))) #:x))
+
 ;; SPEC §5: every per-entity step — detect-on-solid included — receives the
 ;; scene as it was at the start of the frame, i.e. before this frame's tweens.
 ;; A platform tweened from y 100 to 150 (t = 0.2 per 20 ms frame: 110.0 after
