@@ -10,7 +10,9 @@
             game-collision-mode game-collision-mode-set!
             game-update game-update-set! game-engine-update game-engine-update-set!
             input-pressed? input-held? input-released? play-sound
-            default-engine-update camera-follow! game-run!))
+            default-engine-update camera-follow! game-run!
+            game-history game-rewind! add-frame-hook! remove-frame-hook!
+            frame-pacing))
 
 ;;; Input: what is held this frame, and what was held the frame before.
 (define-record-type <input>
@@ -31,7 +33,7 @@
 
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
-              collision-mode input input-script frame sounds)
+              collision-mode input input-script frame sounds history-size history)
   game?
   (title game-title)
   (width game-width)
@@ -45,7 +47,9 @@
   (input game-input game-input-set!)
   (input-script game-input-script game-input-script-set!)
   (frame game-frame game-frame-set!)
-  (sounds game-sounds-reversed game-sounds-set!))
+  (sounds game-sounds-reversed game-sounds-set!)
+  (history-size game-history-size)
+  (history game-history-list game-history-set!))  ; ((frame . scene) …), newest first
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), in the game's
@@ -58,12 +62,63 @@ collision mode."
 (define* (make-game #:key (title "Downstroke") (width 640) (height 480)
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
-                    (collision-mode 'swept) (input-script '())
+                    (collision-mode 'swept) (input-script '()) (history 0)
                     #:allow-other-keys)
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
-physics, #f disables it, a procedure (game dt) replaces it."
+physics, #f disables it, a procedure (game dt) replaces it. HISTORY keeps the
+scenes of that many past frames for game-rewind!."
+  (unless (and (exact-integer? history) (>= history 0))
+    (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
+               (list history) #f))
   (%make-game title width height frame-delay scene update render engine-update
-              collision-mode (make-input '() '()) input-script 0 '()))
+              collision-mode (make-input '() '()) input-script 0 '() history '()))
+
+;;; ---------------------------------------------------------------- time travel
+;;; Scenes are values, so keeping the past costs one pointer per frame.
+
+(define (remember-scene! game)
+  "Record the scene as it is at the start of the coming frame."
+  (let ((n (game-history-size game)))
+    (when (> n 0)
+      (let ((past (cons (cons (game-frame game) (game-scene game)) (game-history-list game))))
+        (game-history-set! game (if (> (length past) n) (list-head past n) past))))))
+
+(define (game-history game)
+  "The remembered (frame . scene) pairs, newest first: the scene each frame
+started from."
+  (game-history-list game))
+
+(define (game-rewind! game k)
+  "Go back K frames: the scene becomes the one frame (current − K) started
+from, and the game continues from that frame (its input script included)."
+  (let* ((target (- (game-frame game) k))
+         (entry (assv target (game-history-list game))))
+    (unless (and (exact-integer? k) (> k 0) entry)
+      (scm-error 'out-of-range "game-rewind!"
+                 "cannot go back ~S frames: ~S remembered (make-game history: N)"
+                 (list k (length (game-history-list game))) #f))
+    (game-scene-set! game (cdr entry))
+    (game-frame-set! game target)
+    ;; Forget the future we left: the next frames record it anew.
+    (game-history-set! game (filter (lambda (e) (< (car e) target)) (game-history-list game)))
+    game))
+
+;;; ---------------------------------------------------------------- frame hooks
+;;; Procedures of no arguments called once at the start of every frame on the
+;;; game's thread: the host polls its REPL server from here.
+
+(define frame-hooks '())
+(define (add-frame-hook! proc) (set! frame-hooks (append frame-hooks (list proc))))
+(define (remove-frame-hook! proc) (set! frame-hooks (delete proc frame-hooks eq?)))
+
+;; #t: game-run! keeps to wall-clock time (frame-delay ms per frame), as a
+;; game someone is watching or poking from a REPL must; #f: as fast as it can.
+(define frame-pacing (make-parameter #f))
+
+(define (wait-until deadline)
+  (let ((now (get-internal-real-time)))
+    (when (< now deadline)
+      (usleep (quotient (* (- deadline now) 1000000) internal-time-units-per-second)))))
 
 (define (game-sounds game)
   "The sounds played so far, as (frame . name), oldest first."
@@ -108,11 +163,15 @@ above the origin)."
 engine-update, update, camera follow, render — for FRAMES frames, or until
 the 'quit action is held."
   (parameterize ((current-game game))
-    (let ((dt (game-frame-delay game)))
-      (let loop ()
+    (let ((dt (game-frame-delay game))
+          (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))
+          (start (get-internal-real-time)))
+      (let loop ((ticks 0))
+        (for-each (lambda (hook) (hook)) frame-hooks)
         (let* ((frame (game-frame game))
                (held (scripted-held (game-input-script game) frame)))
           (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
+            (remember-scene! game)
             (game-input-set! game (make-input held (input-held-list (game-input game))))
             (let ((engine (game-engine-update game)))
               (when engine (engine game dt)))
@@ -121,6 +180,8 @@ the 'quit action is held."
             (camera-follow! game)
             (let ((render (game-render game)))
               (when render (render game)))
-            (game-frame-set! game (+ frame 1))
-            (loop)))))
+            ;; unless the frame rewound the game, the next frame is frame + 1
+            (when (= (game-frame game) frame) (game-frame-set! game (+ frame 1)))
+            (when (frame-pacing) (wait-until (+ start (round (* (+ ticks 1) tick)))))
+            (loop (+ ticks 1))))))
     game))

@@ -1,5 +1,7 @@
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
 
+(load "support.scm")
+
 (define (grid-map cols rows solid)
   (let ((v (make-vector (* cols rows) 0)))
     (for-each (lambda (c) (vector-set! v (+ (car c) (* cols (cdr c))) 1)) solid)
@@ -169,5 +171,45 @@
 (define g15 (make-game))
 (play-sound g15 'click)
 (test-equal '((0 . click)) (game-sounds g15))
+
+;;; ---------------------------------------------------------------- history and rewind
+(define (faller) (make-scene entities: (list '(#:id f #:x 0 #:y 0 #:width 4 #:height 4 #:gravity? #t))))
+(define (y-of game) (entity-ref (car (scene-entities (game-scene game))) #:y))
+(define g16 (make-game history: 5 scene: (faller)))
+(game-run! g16 frames: 10)
+(test-equal "falls: y after 10 frames = 1+2+…+10" 55 (y-of g16))
+(test-equal "history keeps 5 frames, newest first" '(9 8 7 6 5) (map car (game-history g16)))
+(game-rewind! g16 3)
+(test-equal "rewound to frame 7" 7 (game-frame g16))
+(test-equal "the scene frame 7 started from: 1+…+7" 28 (y-of g16))
+(test-equal "the future is forgotten" '(6 5) (map car (game-history g16)))
+(game-run! g16 frames: 10)
+(test-equal "continuing replays the same frames" 55 (y-of g16))
+(test-assert "rewinding further than remembered"
+  (mentions? (error-text (lambda () (game-rewind! g16 6))) "game-rewind!" "6"))
+(test-assert "no history by default"
+  (error-text (lambda () (let ((g (make-game scene: (faller)))) (game-run! g frames: 2) (game-rewind! g 1)))))
+(test-assert "history: must be a count"
+  (mentions? (error-text (lambda () (make-game history: -1))) "make-game" "history"))
+;; A rewind from inside a frame (as the REPL does between frames) takes effect
+;; for the next frame: frame 4 rewinds 2, so frames 3 and 4 run again.
+(define g17-frames '())
+(define g17 (make-game history: 10 scene: (faller)
+                       update: (lambda (game dt)
+                                 (set! g17-frames (cons (game-frame game) g17-frames))
+                                 (when (and (= (game-frame game) 4) (= (length g17-frames) 5))
+                                   (game-rewind! game 2)))))
+(game-run! g17 frames: 6)
+(test-equal '(0 1 2 3 4 2 3 4 5) (reverse g17-frames))
+
+;;; ---------------------------------------------------------------- frame hooks
+(define hook-calls 0)
+(define (count-hook) (set! hook-calls (+ hook-calls 1)))
+(add-frame-hook! count-hook)
+(game-run! (make-game) frames: 4)
+(remove-frame-hook! count-hook)
+(game-run! (make-game) frames: 4)
+(test-equal "a hook runs at the start of every frame, and once more at the end" 5 hook-calls)
+(test-equal "no pacing unless a REPL is served" #f (frame-pacing))
 
 (test-end "engine")
