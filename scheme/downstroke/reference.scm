@@ -111,6 +111,16 @@ writes a key only when its value or exactness changes."
 
 (define (map-keeping proc lst) (same-or (map proc lst) lst))
 
+(define (keep-if-unchanged new old)
+  "OLD when NEW holds the same keys and the same (eqv?) values in the same
+order: a frame whose steps changed a value and put it back (gravity, then a
+landing) hands the entity back as itself."
+  (let loop ((a new) (b old))
+    (cond ((and (null? a) (null? b)) old)
+          ((or (null? a) (null? b)) new)
+          ((and (eq? (car a) (car b)) (eqv? (cadr a) (cadr b))) (loop (cddr a) (cddr b)))
+          (else new))))
+
 (define (scene-tiles scene) (and scene (scene-tilemap scene)))
 
 ;;; ---------------------------------------------------------------- motion (§4)
@@ -565,7 +575,9 @@ frame; then push-apart; then groups."
                               (lambda (e) (on-solid e tm start (lambda (i o) (= i slot)))))))
                 tweened (iota (length tweened)))
            tweened))
-         (result (sync-groups (resolve-entity-collisions moved))))
+         (result (same-or (map keep-if-unchanged
+                               (sync-groups (resolve-entity-collisions moved)) start)
+                          start)))
     (if (eq? result start)
         scene
         (update-scene scene #:entities result))))

@@ -325,6 +325,14 @@
                                                            floor-scene 16) #:y)))
 
 ;;; ---------------------------------------------------------------- detect-on-solid
+;; "Not itself" means not eq?: a flat solid box listed twice in its own scene
+;; would otherwise stand on its own copy (feet 2 = its top 0 + 2, within 4).
+(let ((flat (list #:x 0 #:y 0 #:width 4 #:height 2 #:gravity? #t #:solid? #t)))
+  (test-eq "every eq? entry of the scene is the entity itself" flat
+    (detect-on-solid flat (make-scene entities: (list flat flat)) 16))
+  (test-equal "an equal copy that is not eq? does hold it up" #t
+    (entity-ref (detect-on-solid flat (make-scene entities: (list flat (list-copy flat))) 16)
+                #:on-ground?)))
 ;; Tile support: floor at row 8 (top y 128).
 (define (feet-at y) (list #:x 20 #:y y #:width 16 #:height 16 #:gravity? #t))
 (test-equal "feet on the floor row" (append (feet-at 112) '(#:on-ground? #t))

@@ -292,6 +292,15 @@
   (scene-entities (composed-frame keyless-mover 16))
   (scene-entities (step-scene keyless-mover 16)))
 
+;; The reference hands a scene back as itself too when a frame changed a
+;; value and put it back (found by the differential tests): gravity writes
+;; #:vy 1, the landing writes #:vy 0 again.
+(let ((resting (make-scene entities: (list '(#:x 0 #:y 32 #:width 16 #:height 16 #:gravity? #t
+                                             #:vy 0 #:on-ground? #t))
+                           tilemap: (grid-map 1 4 '((0 . 3))))))
+  (test-eq "native: a resting scene comes back as itself" resting (step-scene resting 16))
+  (test-eq "reference: the same" resting ((@ (downstroke reference) step-scene) resting 16)))
+
 ;; A value a double cannot hold exactly (−33/2 is read as −16.5): moved to
 ;; −15.5 and pushed back to −16.5 by the wall in one frame, it is written as
 ;; the flonum −16.5, as the composition writes it.
