@@ -5,6 +5,7 @@
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
+  #:use-module (downstroke tilemap)
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
@@ -141,17 +142,26 @@ in: (play-sound 'jump) uses the running game, (play-sound game 'jump) names it."
         entities))
 
 (define (camera-follow! game)
-  "Centre the scene's camera on its camera-target entity (never left of or
-above the origin)."
+  "Centre the scene's camera on its camera-target entity, keeping the view
+inside the level: never left of or above the origin, and — when the scene
+has a tilemap — never past the map's right or bottom edge."
   (let* ((scene (game-scene game))
          (target (and scene (scene-camera-target scene)))
          (e (and target (entity-tagged (scene-entities scene) target))))
     (when e
-      (let ((camera (scene-camera scene)))
-        (camera-x-set! camera (max 0 (- (+ (entity-ref e #:x 0) (/ (entity-ref e #:width 0) 2))
-                                        (/ (game-width game) 2))))
-        (camera-y-set! camera (max 0 (- (+ (entity-ref e #:y 0) (/ (entity-ref e #:height 0) 2))
-                                        (/ (game-height game) 2))))))))
+      (let* ((camera (scene-camera scene))
+             (tm (scene-tilemap scene))
+             (limit (lambda (cells tile view)
+                      (and tm (max 0 (- (* (cells tm) (tile tm)) view)))))
+             (clamp (lambda (v hi) (max 0 (if hi (min v hi) v)))))
+        (camera-x-set! camera
+                       (clamp (- (+ (entity-ref e #:x 0) (/ (entity-ref e #:width 0) 2))
+                                 (/ (game-width game) 2))
+                              (limit tilemap-width tilemap-tile-width (game-width game))))
+        (camera-y-set! camera
+                       (clamp (- (+ (entity-ref e #:y 0) (/ (entity-ref e #:height 0) 2))
+                                 (/ (game-height game) 2))
+                              (limit tilemap-height tilemap-tile-height (game-height game))))))))
 
 (define (scripted-held script frame)
   ;; The actions of the last entry at or before FRAME: entries are key frames.
@@ -160,8 +170,9 @@ above the origin)."
 
 (define* (game-run! game #:key (frames #f))
   "Run GAME headless at a fixed timestep (dt = frame-delay ms): input, then
-engine-update, update, camera follow, render — for FRAMES frames, or until
-the 'quit action is held."
+engine-update, update, camera follow, render — until the game's frame
+counter reaches FRAMES (so a second call with the same FRAMES runs nothing
+more), or until the 'quit action is held."
   (parameterize ((current-game game))
     (let ((dt (game-frame-delay game))
           (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))

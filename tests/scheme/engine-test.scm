@@ -172,6 +172,25 @@
 (play-sound g15 'click)
 (test-equal '((0 . click)) (game-sounds g15))
 
+;;; ---------------------------------------------------------------- camera bounds
+;; A 20×10 map of 16 px tiles (320×160) seen through a 100×50 view: the camera
+;; centres the target but never shows past the map's edges.
+(define (camera-after x y)
+  (let ((g (make-game width: 100 height: 50
+                      scene: (make-scene entities: (list (list #:id 'p #:x x #:y y #:width 10 #:height 10))
+                                         tilemap: (grid-map 20 10 '()) camera-target: 'p))))
+    (game-run! g frames: 1)
+    (let ((c (scene-camera (game-scene g)))) (list (camera-x c) (camera-y c)))))
+(test-equal "centred" '(105 55) (camera-after 150 75))
+(test-equal "clamped at the far edges: 320 − 100, 160 − 50" '(220 110) (camera-after 310 150))
+(test-equal "clamped at the origin" '(0 0) (camera-after 5 5))
+(let ((g (make-game width: 100 height: 50
+                    scene: (make-scene entities: (list '(#:id p #:x 1000 #:y 900 #:width 10 #:height 10))
+                                       camera-target: 'p))))
+  (game-run! g frames: 1)
+  (test-equal "no tilemap: no far edge" '(955 880)
+    (let ((c (scene-camera (game-scene g)))) (list (camera-x c) (camera-y c)))))
+
 ;;; ---------------------------------------------------------------- history and rewind
 (define (faller) (make-scene entities: (list '(#:id f #:x 0 #:y 0 #:width 4 #:height 4 #:gravity? #t))))
 (define (y-of game) (entity-ref (car (scene-entities (game-scene game))) #:y))

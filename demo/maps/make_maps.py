@@ -1,0 +1,208 @@
+#!/usr/bin/env python3
+"""Regenerates the Tiled maps of the demos (demo/*.scm) under demo/maps/.
+
+The outputs are checked in; the build never runs this. Standard library only.
+Run it from anywhere:
+    python3 demo/maps/make_maps.py
+
+Every map is orthogonal with 16x16 tiles and uses the one external tileset
+written here, demo-tiles.tsx (over tiles.png, 4 tiles in a row). Solidity is
+tile metadata: a <properties><property name="solid" type="bool" value="true"/>
+on the tile. Levels are drawn below as ASCII, one character a cell:
+
+    .  empty                         gid 0
+    #  ground      (tile 0, solid)   gid 1
+    W  wall        (tile 1, solid)   gid 2
+    =  platform    (tile 2, solid)   gid 3
+    "  grass/decor (tile 3, NOT solid: no "solid" property) gid 4
+
+The layers are written in different encodings (CSV, base64, base64+zlib) so
+the demos exercise the loader's paths too. Objects (spawn points, coins, the
+goal) go in an object layer; the demos read them with tilemap-objects.
+"""
+import base64
+import os
+import struct
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TILE = 16
+GIDS = {".": 0, "#": 1, "W": 2, "=": 3, '"': 4}
+
+TILESET = """<?xml version="1.0" encoding="UTF-8"?>
+<tileset version="1.10" tiledversion="1.10.2" name="demo-tiles" tilewidth="16" tileheight="16" tilecount="4" columns="4">
+ <image source="tiles.png" width="64" height="16"/>
+ <tile id="0" type="ground">
+  <properties>
+   <property name="solid" type="bool" value="true"/>
+  </properties>
+ </tile>
+ <tile id="1" type="wall">
+  <properties>
+   <property name="solid" type="bool" value="true"/>
+  </properties>
+ </tile>
+ <tile id="2" type="platform">
+  <properties>
+   <property name="solid" type="bool" value="true"/>
+  </properties>
+ </tile>
+ <tile id="3" type="decor">
+  <properties>
+   <property name="solid" type="bool" value="false"/>
+  </properties>
+ </tile>
+</tileset>
+"""
+
+# ---------------------------------------------------------------- platformer
+# 60x15. Ground top at row 11 (y 176); a pit at columns 30-35 two tiles deep
+# (its floor's top at row 13, y 208) whose right side rises into a wall (column
+# 36, rows 8-12: 80 px above the pit floor); two platforms (row 8, y 128; row
+# 5, y 80); grass that is not solid; walls at both ends.
+PLATFORMER = [
+    "W..........................................................W",  # 0
+    "W..........................................................W",  # 1
+    "W..........................................................W",  # 2
+    "W..........................................................W",  # 3
+    "W..........................................................W",  # 4
+    "W...............====.......................................W",  # 5
+    "W..........................................................W",  # 6
+    "W..........................................................W",  # 7
+    "W.........====......................W......................W",  # 8
+    "W...................................W......................W",  # 9
+    'W.."".................."............W..............."......W',  # 10
+    "W#############################......#######################W",  # 11
+    "W#############################......#######################W",  # 12
+    "W##########################################################W",  # 13
+    "W##########################################################W",  # 14
+]
+PLATFORMER_OBJECTS = [
+    ("player", "player", 40, 100, 12, 16, {}),
+    ("goal", "goal", 880, 144, 16, 32, {}),
+]
+
+# ---------------------------------------------------------------- top-down
+# 20x15 room: border walls, an inner wall (column 10, rows 1-8), a block of
+# ground (columns 4-6, rows 10-11) and non-solid grass.
+TOPDOWN = [
+    "WWWWWWWWWWWWWWWWWWWW",  # 0
+    "W.........W........W",  # 1
+    "W.........W........W",  # 2
+    "W.........W........W",  # 3
+    "W.........W..\"\"....W",  # 4
+    "W..\"\"\"....W........W",  # 5
+    "W.........W........W",  # 6
+    "W.........W........W",  # 7
+    "W.........W........W",  # 8
+    "W..................W",  # 9
+    "W...###............W",  # 10
+    "W...###.....\"\".....W",  # 11
+    "W..................W",  # 12
+    "W..................W",  # 13
+    "WWWWWWWWWWWWWWWWWWWW",  # 14
+]
+TOPDOWN_OBJECTS = [
+    ("player", "player", 40, 40, 12, 12, {"speed": 3}),
+    ("coin1", "coin", 100, 44, 8, 8, {"value": 10}),
+    ("coin2", "coin", 150, 120, 8, 8, {"value": 10}),
+    ("coin3", "coin", 60, 214, 8, 8, {"value": 10}),
+    ("coin4", "coin", 18, 100, 8, 8, {"value": 10}),
+    ("coin5", "coin", 250, 150, 8, 8, {"value": 50}),
+]
+
+# ---------------------------------------------------------------- sandbox
+# 30x15: border walls, floor top at row 13 (y 208), a stub wall (column 15,
+# rows 11-12) that the bots turn at, and a tile ledge (row 7, columns 24-27,
+# y 112). The immovable platforms, boxes, raft and bots are entities (in
+# demo/sandbox.scm).
+SANDBOX = [
+    "WWWWWWWWWWWWWWWWWWWWWWWWWWWWWW",  # 0
+    "W............................W",  # 1
+    "W............................W",  # 2
+    "W............................W",  # 3
+    "W............................W",  # 4
+    "W............................W",  # 5
+    "W............................W",  # 6
+    "W.......................====.W",  # 7
+    "W............................W",  # 8
+    "W............................W",  # 9
+    "W............................W",  # 10
+    "W..............W.............W",  # 11
+    'W....""........W.......".....W',  # 12
+    "W############################W",  # 13
+    "W############################W",  # 14
+]
+
+
+def gids_of(rows):
+    width = len(rows[0])
+    assert all(len(r) == width for r in rows), "ragged map"
+    return [GIDS[c] for row in rows for c in row], width, len(rows)
+
+
+def data_element(gids, width, encoding):
+    raw = b"".join(struct.pack("<I", g) for g in gids)
+    if encoding == "csv":
+        lines = [",".join(str(g) for g in gids[i:i + width]) for i in range(0, len(gids), width)]
+        return '  <data encoding="csv">\n' + ",\n".join(lines) + "\n</data>"
+    if encoding == "base64":
+        return f'  <data encoding="base64">\n   {base64.b64encode(raw).decode()}\n  </data>'
+    if encoding == "zlib":
+        packed = base64.b64encode(zlib.compress(raw, 9)).decode()
+        return f'  <data encoding="base64" compression="zlib">\n   {packed}\n  </data>'
+    raise ValueError(encoding)
+
+
+def prop_element(name, value):
+    kind = "int" if isinstance(value, int) else "float" if isinstance(value, float) else "string"
+    return f'    <property name="{name}" type="{kind}" value="{value}"/>'
+
+
+def objects_element(objects):
+    if not objects:
+        return ""
+    out = [' <objectgroup id="2" name="spawns">']
+    for i, (name, kind, x, y, w, h, props) in enumerate(objects, 1):
+        head = f'  <object id="{i}" name="{name}" type="{kind}" x="{x}" y="{y}" width="{w}" height="{h}"'
+        if props:
+            out.append(head + ">")
+            out.append("   <properties>")
+            out.extend(prop_element(k, v) for k, v in props.items())
+            out.append("   </properties>")
+            out.append("  </object>")
+        else:
+            out.append(head + "/>")
+    out.append(" </objectgroup>")
+    return "\n".join(out) + "\n"
+
+
+def tmx(rows, encoding, objects=(), title=""):
+    gids, width, height = gids_of(rows)
+    return f"""<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.10" tiledversion="1.10.2" orientation="orthogonal" renderorder="right-down" width="{width}" height="{height}" tilewidth="{TILE}" tileheight="{TILE}" infinite="0" nextlayerid="3" nextobjectid="{len(objects) + 1}">
+ <properties>
+  <property name="title" value="{title}"/>
+ </properties>
+ <tileset firstgid="1" source="demo-tiles.tsx"/>
+ <layer id="1" name="tiles" width="{width}" height="{height}">
+{data_element(gids, width, encoding)}
+ </layer>
+{objects_element(objects)}</map>
+"""
+
+
+def write(name, text):
+    with open(os.path.join(HERE, name), "w", encoding="utf-8", newline="\n") as f:
+        f.write(text)
+
+
+def main():
+    write("demo-tiles.tsx", TILESET)
+    write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer"))
+    write("topdown.tmx", tmx(TOPDOWN, "base64", TOPDOWN_OBJECTS, "top-down"))
+    write("sandbox.tmx", tmx(SANDBOX, "zlib", (), "sandbox"))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,145 @@
+;;; Platformer: a side-scroller on demo/maps/platformer.tmx.
+;;;
+;;; The player (spawned from the map's object layer) falls in, lands, runs
+;;; with 'left / 'right held, and jumps when 'a is pressed while
+;;; #:on-ground? — the jump is game logic: #:ay set to (- *jump-force*), which
+;;; the next frame's apply-acceleration consumes. Physics is the default
+;;; engine-update; the camera follows the player (camera-target: 'player).
+;;; Reaching the goal object of the map plays 'goal.
+;;;
+;;; Run: build/bin/downstroke demo/platformer.scm
+;;; Headless: it plays the built-in input script below for `demo-frames'
+;;; frames and prints a line every 20 frames plus one per event.
+;;; Loaded from elsewhere (tests/scheme/demos-test.scm) it only defines
+;;; `game', `run!', `events', `history' and friends.
+(use-modules (ice-9 format) (srfi srfi-1))
+
+(define (demo-main? name)
+  ;; The host sets (program-arguments) to (FILE ARGS ...) for the script it runs.
+  (let ((args (program-arguments)))
+    (and (pair? args) (string=? (basename (car args)) name))))
+
+(define demo-dir
+  (cond ((current-filename) => dirname)
+        ((getenv "DS_DEMO_DIR"))
+        (else "demo")))
+
+(define level (load-tilemap (string-append demo-dir "/maps/platformer.tmx")))
+
+(define (map-object name)
+  (or (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects level))
+      (error "platformer.tmx has no object named" name)))
+
+(define *run-speed* 3)
+(define goal (map-object "goal"))
+
+(define player0
+  (let ((spawn (map-object "player")))
+    (list #:id 'player #:x (entity-ref spawn #:x) #:y (entity-ref spawn #:y)
+          #:width (entity-ref spawn #:width) #:height (entity-ref spawn #:height)
+          #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f)))
+
+;;; ------------------------------------------------------------ bookkeeping
+(define trace? (demo-main? "platformer.scm"))
+(define events '())                     ; ((frame . what) ...), newest first
+(define history '())                    ; ((frame . player) ...), newest first
+
+(define (note! game what)
+  (set! events (cons (cons (game-frame game) what) events))
+  (when trace? (format #t "frame ~3d: ~a~%" (game-frame game) what)))
+
+(define (event-frames what)
+  "The frames WHAT happened in, oldest first."
+  (filter-map (lambda (e) (and (eq? (cdr e) what) (car e))) (reverse events)))
+
+(define (player-at frame)
+  "The player as it was at the end of FRAME."
+  (assv-ref history frame))
+
+;;; ------------------------------------------------------------ the game
+(define was-on-ground? #f)
+(define was-blocked? #f)
+(define last-wanted 0)                  ; the #:vx asked for last frame
+(define reached-goal? #f)
+
+(define (overlaps? a b)
+  (aabb-overlap? (entity-ref a #:x 0) (entity-ref a #:y 0) (entity-ref a #:width 0) (entity-ref a #:height 0)
+                 (entity-ref b #:x 0) (entity-ref b #:y 0) (entity-ref b #:width 0) (entity-ref b #:height 0)))
+
+(define (update game dt)
+  ;; Physics has already run this frame: #:on-ground? and #:x are resolved.
+  (let* ((input (game-input game))
+         (scene (game-scene game))
+         (player (car (scene-entities scene)))
+         (on-ground? (entity-ref player #:on-ground? #f))
+         (wanted (cond ((input-held? input 'left) (- *run-speed*))
+                       ((input-held? input 'right) *run-speed*)
+                       (else 0)))
+         ;; Pushing against a wall: we asked for a speed last frame and the
+         ;; tile collision zeroed it.
+         (blocked? (and (not (zero? wanted)) (not (zero? last-wanted))
+                        (zero? (entity-ref player #:vx 0))))
+         (jump? (and (input-pressed? input 'a) on-ground?)))
+    (when (and on-ground? (not was-on-ground?)) (note! game 'landed))
+    (when (and blocked? (not was-blocked?)) (note! game 'bumped))
+    (when (and (not reached-goal?) (overlaps? player goal))
+      (set! reached-goal? #t)
+      (play-sound 'goal)
+      (note! game 'goal))
+    (set! was-on-ground? on-ground?)
+    (set! was-blocked? blocked?)
+    (set! last-wanted wanted)
+    (when jump?
+      (play-sound 'jump)
+      (note! game 'jumped))
+    (let* ((player (entity-set player #:vx wanted))
+           (player (if jump? (entity-set player #:ay (- *jump-force*)) player)))
+      (game-scene-set! game (update-scene scene entities: (list player))))))
+
+(define (render game)
+  ;; Runs after camera-follow! (which keeps the view inside the map).
+  ;; Headless "rendering": remember the player, print a line every 20 frames.
+  (let ((frame (game-frame game))
+        (player (car (scene-entities (game-scene game))))
+        (camera (scene-camera (game-scene game))))
+    (set! history (cons (cons frame player) history))
+    (when (and trace? (zero? (modulo frame 20)))
+      (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)~a  camera (~a, ~a)~%"
+              frame (entity-ref player #:x) (entity-ref player #:y)
+              (entity-ref player #:vx) (entity-ref player #:vy)
+              (if (entity-ref player #:on-ground? #f) " on-ground" "")
+              (camera-x camera) (camera-y camera)))))
+
+;;; The built-in input: key frames (frame . actions held from then on).
+(define input-script
+  '((0 . ())
+    (25 . (right))               ; run right
+    (50 . (right a))             ; jump onto the first platform (row 8, y 128)
+    (51 . (right))
+    (60 . (right a))             ; pressing 'a in the air does nothing
+    (61 . (right))
+    (78 . ())                    ; stand on it
+    (85 . (right a))             ; jump to the second platform (row 5, y 80)
+    (86 . (right))
+    (112 . ())
+    (120 . (right))              ; run off its end, drop to the ground, into the pit
+    (220 . (right a))            ; in the pit, pressed against its wall: jump out
+    (221 . (right))))            ; on to the goal and the right-hand wall
+
+(define demo-frames 360)
+
+(define game
+  (make-game title: "Downstroke — platformer" width: 320 height: 240 frame-delay: 16
+             scene: (make-scene entities: (list player0) tilemap: level camera-target: 'player)
+             update: update render: render
+             input-script: input-script))
+
+(define (run! frames)
+  "Run the game up to frame FRAMES (it counts from where it stopped)."
+  (game-run! game frames: frames))
+
+(when (demo-main? "platformer.scm")
+  (run! demo-frames)
+  (format #t "sounds: ~s~%" (game-sounds game))
+  (format #t "camera: (~a, ~a)~%" (camera-x (scene-camera (game-scene game)))
+          (camera-y (scene-camera (game-scene game)))))
