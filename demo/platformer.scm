@@ -14,11 +14,6 @@
 ;;; `game', `run!', `events', `history' and friends.
 (use-modules (ice-9 format) (srfi srfi-1))
 
-(define (demo-main? name)
-  ;; The host sets (program-arguments) to (FILE ARGS ...) for the script it runs.
-  (let ((args (program-arguments)))
-    (and (pair? args) (string=? (basename (car args)) name))))
-
 (define demo-dir
   (cond ((current-filename) => dirname)
         ((getenv "DS_DEMO_DIR"))
@@ -40,7 +35,7 @@
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-(define trace? (demo-main? "platformer.scm"))
+(define trace? (main-script? "platformer.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
 (define history '())                    ; ((frame . player) ...), newest first
 
@@ -138,8 +133,8 @@
   "Run the game up to frame FRAMES (it counts from where it stopped)."
   (game-run! game frames: frames))
 
-(when (demo-main? "platformer.scm")
-  (run! demo-frames)
+(when (main-script? "platformer.scm")
+  (run! (script-number-argument 0 demo-frames))
   (format #t "sounds: ~s~%" (game-sounds game))
   (format #t "camera: (~a, ~a)~%" (camera-x (scene-camera (game-scene game)))
           (camera-y (scene-camera (game-scene game)))))

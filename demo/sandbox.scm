@@ -16,10 +16,6 @@
 ;;; every 20 frames plus one per event.
 (use-modules (ice-9 format) (srfi srfi-1))
 
-(define (demo-main? name)
-  (let ((args (program-arguments)))
-    (and (pair? args) (string=? (basename (car args)) name))))
-
 (define demo-dir
   (cond ((current-filename) => dirname)
         ((getenv "DS_DEMO_DIR"))
@@ -79,7 +75,7 @@
    raft0))
 
 ;;; ------------------------------------------------------------ bookkeeping
-(define trace? (demo-main? "sandbox.scm"))
+(define trace? (main-script? "sandbox.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
 (define history '())                    ; ((frame . entities) ...), newest first
 
@@ -161,6 +157,6 @@
   "Run the game up to frame FRAMES (it counts from where it stopped)."
   (game-run! game frames: frames))
 
-(when (demo-main? "sandbox.scm")
-  (run! demo-frames)
+(when (main-script? "sandbox.scm")
+  (run! (script-number-argument 0 demo-frames))
   (format #t "(* marks #:on-ground?)~%"))

@@ -12,10 +12,6 @@
 ;;; prints a line every 20 frames plus one per event.
 (use-modules (ice-9 format) (srfi srfi-1))
 
-(define (demo-main? name)
-  (let ((args (program-arguments)))
-    (and (pair? args) (string=? (basename (car args)) name))))
-
 (define screen-width 320)
 (define screen-height 240)
 (define ship-speed 3)
@@ -33,7 +29,7 @@
   (append-map (lambda (row) (map (lambda (col) (enemy row col)) (iota 5))) (iota 2)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-(define trace? (demo-main? "shmup.scm"))
+(define trace? (main-script? "shmup.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
 (define history '())                    ; ((frame . entities) ...), newest first
 (define shots 0)                        ; bullets fired so far
@@ -140,7 +136,7 @@
   "Run the game up to frame FRAMES (it counts from where it stopped)."
   (game-run! game frames: frames))
 
-(when (demo-main? "shmup.scm")
-  (run! demo-frames)
+(when (main-script? "shmup.scm")
+  (run! (script-number-argument 0 demo-frames))
   (format #t "score: ~a, shots: ~a, sounds: ~s~%"
           (entity-ref (car (scene-entities (game-scene game))) #:score) shots (game-sounds game)))

@@ -11,10 +11,6 @@
 ;;; prints a line every 20 frames plus one per event.
 (use-modules (ice-9 format) (srfi srfi-1))
 
-(define (demo-main? name)
-  (let ((args (program-arguments)))
-    (and (pair? args) (string=? (basename (car args)) name))))
-
 (define demo-dir
   (cond ((current-filename) => dirname)
         ((getenv "DS_DEMO_DIR"))
@@ -41,7 +37,7 @@
 (define coins0 (map object->entity (objects-of-type 'coin)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-(define trace? (demo-main? "topdown.scm"))
+(define trace? (main-script? "topdown.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
 (define history '())                    ; ((frame . entities) ...), newest first
 
@@ -139,7 +135,7 @@
   "Run the game up to frame FRAMES (it counts from where it stopped)."
   (game-run! game frames: frames))
 
-(when (demo-main? "topdown.scm")
-  (run! demo-frames)
+(when (main-script? "topdown.scm")
+  (run! (script-number-argument 0 demo-frames))
   (format #t "score: ~a, sounds: ~s~%" (entity-ref (car (scene-entities (game-scene game))) #:score)
           (game-sounds game)))

@@ -20,12 +20,8 @@
 ;;; every 20 frames plus one per event.
 (use-modules (ice-9 format) (srfi srfi-1))
 
-(define (demo-main? name)
-  (let ((args (program-arguments)))
-    (and (pair? args) (string=? (basename (car args)) name))))
-
 ;;; ------------------------------------------------------------ bookkeeping
-(define trace? (demo-main? "tweens.scm"))
+(define trace? (main-script? "tweens.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
 (define history '())                    ; ((frame . entities) ...), newest first
 
@@ -134,6 +130,6 @@
   "Run the game up to frame FRAMES (it counts from where it stopped)."
   (game-run! game frames: frames))
 
-(when (demo-main? "tweens.scm")
-  (run! demo-frames)
+(when (main-script? "tweens.scm")
+  (run! (script-number-argument 0 demo-frames))
   (format #t "sounds: ~s~%" (game-sounds game)))

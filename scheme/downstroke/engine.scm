@@ -13,7 +13,7 @@
             input-pressed? input-held? input-released? play-sound
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
-            frame-pacing))
+            frame-pacing main-script? script-number-argument))
 
 ;;; Input: what is held this frame, and what was held the frame before.
 (define-record-type <input>
@@ -103,6 +103,23 @@ from, and the game continues from that frame (its input script included)."
     ;; Forget the future we left: the next frames record it anew.
     (game-history-set! game (filter (lambda (e) (< (car e) target)) (game-history-list game)))
     game))
+
+;;; ---------------------------------------------------------------- scripts
+
+(define (main-script? name)
+  "Whether the script the host was started with is named NAME (its base
+name): a file can define a game for others to load and run it only when it
+is the program itself."
+  (let ((args (program-arguments)))
+    (and (pair? args) (string? (car args)) (string=? (basename (car args)) name))))
+
+(define (script-number-argument n default)
+  "The script's Nth argument (from 0) as a number, or DEFAULT: e.g. how many
+frames to run, as in `downstroke demo/sandbox.scm 3600'."
+  (let* ((args (program-arguments))
+         (arg (and (> (length args) (+ n 1)) (list-ref args (+ n 1))))
+         (v (and arg (string->number arg))))
+    (or v default)))
 
 ;;; ---------------------------------------------------------------- frame hooks
 ;;; Procedures of no arguments called once at the start of every frame on the

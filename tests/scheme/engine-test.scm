@@ -221,6 +221,14 @@
 (game-run! g17 frames: 6)
 (test-equal '(0 1 2 3 4 2 3 4 5) (reverse g17-frames))
 
+;;; ---------------------------------------------------------------- scripts
+;; Under the test runner, the host's script is run-suite.scm with this file
+;; as its argument.
+(test-equal #t (main-script? "run-suite.scm"))
+(test-equal #f (main-script? "engine-test.scm"))
+(test-equal "argument 0 is not a number: the default" 60 (script-number-argument 0 60))
+(test-equal "no argument 1" 7 (script-number-argument 1 7))
+
 ;;; ---------------------------------------------------------------- frame hooks
 (define hook-calls 0)
 (define (count-hook) (set! hook-calls (+ hook-calls 1)))
