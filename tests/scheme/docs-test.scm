@@ -1,0 +1,196 @@
+;;; Every Scheme example of the documentation, run.
+;;;
+;;; For each docs/*.org file (in name order) the `#+begin_src scheme' blocks
+;;; are taken in order and evaluated, form by form, in one fresh module per
+;;; file, so a later block sees what an earlier block of the same file
+;;; defined. The module imports (downstroke), (srfi srfi-1) and
+;;; (srfi srfi-11); the text is read as the host reads scripts, with postfix
+;;; keywords (`entities:' is #:entities).
+;;;
+;;; Conventions for the documentation:
+;;;
+;;; - A form may be followed by a comment `; ⇒ VALUE' (any number of
+;;;   semicolons), either on the line where the form ends or alone on the
+;;;   line right after it. VALUE is read as a datum and the form's value
+;;;   must be equal? to it: 103 and 103.0 differ, so exact and inexact
+;;;   results are both checked. A ⇒ anywhere else in a block (after a
+;;;   blank line, say, or inside a form) is reported as a failure, so no
+;;;   claimed value goes unchecked.
+;;; - Blocks that must not run use another language (sh, cpp, text, ...) or
+;;;   the header argument `:eval no', e.g. `#+begin_src scheme :eval no'.
+;;; - Examples run with the project root as the working directory (as under
+;;;   ctest), so they load maps by their paths in the repository:
+;;;   (load-tilemap "demo/maps/level1.tmx"). The module also predefines
+;;;   `demo-map', the absolute path of demo/maps/level1.tmx, and
+;;;   `test-data', the absolute path of tests/data, for examples that would
+;;;   rather not depend on the working directory.
+;;;
+;;; Tests: one per block, named FILE:LINE (the line of its #+begin_src),
+;;; passing when every form of the block evaluated without an error; and one
+;;; per ⇒ check, named FILE:LINE => (the line of the comment).
+(use-modules (srfi srfi-1) (srfi srfi-64) (ice-9 textual-ports) (ice-9 rdelim) (ice-9 ftw))
+
+;;; ---------------------------------------------------------------- locations
+(define project-root
+  (let ((here (current-filename)))
+    (if here
+        (dirname (dirname (dirname (canonicalize-path here))))
+        (getcwd))))
+(define docs-dir (string-append project-root "/docs"))
+(define demo-map-path (string-append project-root "/demo/maps/level1.tmx"))
+(define test-data-path (string-append project-root "/tests/data"))
+
+;;; ---------------------------------------------------------------- org parsing
+(define (read-lines path)
+  (let ((text (call-with-input-file path get-string-all #:encoding "UTF-8")))
+    (string-split text #\newline)))
+
+(define (string-prefix-ci*? prefix s)
+  (and (>= (string-length s) (string-length prefix))
+       (string-ci=? prefix (substring s 0 (string-length prefix)))))
+
+(define (words s)
+  (remove string-null? (string-split s #\space)))
+
+;;; A block: (line language headers text), LINE being the 1-based line of
+;;; its #+begin_src.
+(define (org-blocks path)
+  (let loop ((lines (read-lines path)) (n 1) (acc '()))
+    (if (null? lines)
+        (reverse acc)
+        (let ((line (string-trim (car lines))))
+          (if (string-prefix-ci*? "#+begin_src" line)
+              (let* ((ws (words (substring line (string-length "#+begin_src"))))
+                     (lang (if (null? ws) "" (car ws)))
+                     (headers (if (null? ws) '() (cdr ws))))
+                (let body ((rest (cdr lines)) (m (+ n 1)) (text '()))
+                  (cond ((null? rest)
+                         (error "unterminated #+begin_src" path n))
+                        ((string-prefix-ci*? "#+end_src" (string-trim (car rest)))
+                         (loop (cdr rest) (+ m 1)
+                               (cons (list n lang headers
+                                           (string-join (reverse text) "\n"))
+                                     acc)))
+                        (else (body (cdr rest) (+ m 1) (cons (car rest) text))))))
+              (loop (cdr lines) (+ n 1) acc))))))
+
+;;; Whether a block's header arguments contain `:eval no' (or `:eval never').
+(define (eval-no? headers)
+  (let loop ((h headers))
+    (cond ((or (null? h) (null? (cdr h))) #f)
+          ((and (string=? (car h) ":eval") (member (cadr h) '("no" "never"))) #t)
+          (else (loop (cdr h))))))
+
+(define (runnable? block)
+  (and (string=? (cadr block) "scheme") (not (eval-no? (caddr block)))))
+
+;;; "  ;; ⇒ 42" → "42"; anything else → #f.
+(define (arrow-comment text)
+  (let ((t (string-trim text)))
+    (and (string-prefix? ";" t)
+         (let ((after (string-trim (string-trim t #\;))))
+           (and (string-prefix? "⇒" after)
+                (string-trim (substring after 1)))))))
+
+(define (count-arrows text)
+  (let loop ((i 0) (n 0))
+    (let ((j (string-index text #\⇒ i)))
+      (if j (loop (+ j 1) (+ n 1)) n))))
+
+;;; ---------------------------------------------------------------- running
+(define (fresh-docs-module)
+  (let ((m (make-fresh-user-module)))
+    (for-each (lambda (name) (module-use! m (resolve-interface name)))
+              '((downstroke) (srfi srfi-1) (srfi srfi-11)))
+    (module-define! m 'demo-map demo-map-path)
+    (module-define! m 'test-data test-data-path)
+    m))
+
+(define (describe-error key args)
+  (call-with-output-string
+   (lambda (port) (print-exception port #f key args))))
+
+;;; Evaluates the block's forms in MODULE. Returns #t, or the text of the
+;;; first error (evaluation of the block stops there). Runs one test per ⇒.
+(define (run-block file block module)
+  (let* ((first-line (+ (car block) 1))  ; the block's first line of code
+         (text (cadddr block))
+         (port (open-input-string text))
+         (checked 0))
+    (set-port-line! port 0)
+    (let loop ()
+      (let ((form (catch #t
+                    (lambda () (read port))
+                    (lambda (key . args) (cons 'read-error (describe-error key args))))))
+        (cond
+         ((eof-object? form)
+          (if (= checked (count-arrows text))
+              #t
+              (format #f "~a arrows (=>) in the block, only ~a of them after a form's last line"
+                      (count-arrows text) checked)))
+         ((and (pair? form) (eq? (car form) 'read-error))
+          (string-append "read error: " (cdr form)))
+         (else
+          ;; The rest of the line the form ended on: a ⇒ comment, or more code.
+          (let* ((pos (seek port 0 SEEK_CUR))
+                 (line-index (port-line port))
+                 (column (port-column port))
+                 (rest (read-line port))
+                 ;; On the form's last line, or alone on the next line.
+                 (same-line (and (string? rest) (arrow-comment rest)))
+                 (next (and (not same-line) (string? rest)
+                            (string-null? (string-trim rest))
+                            (read-line port)))
+                 (next-line (and (string? next) (arrow-comment next)))
+                 (expected-text (or same-line next-line))
+                 (line (+ first-line line-index (if next-line 1 0))))
+            (unless expected-text
+              (seek port pos SEEK_SET)
+              (set-port-line! port line-index)
+              (set-port-column! port column))
+            (let ((result (catch #t
+                            (lambda () (cons 'ok (eval form module)))
+                            (lambda (key . args) (cons 'error (describe-error key args))))))
+              (cond
+               ((eq? (car result) 'error)
+                (format #f "line ~a: ~a" line (cdr result)))
+               (expected-text
+                (set! checked (+ checked 1))
+                (let ((expected (catch #t
+                                  (lambda () (read (open-input-string expected-text)))
+                                  (lambda _ (list 'unreadable expected-text)))))
+                  (test-equal (format #f "~a:~a =>" file line) expected (cdr result)))
+                (loop))
+               (else (loop)))))))))))
+
+(define (doc-files)
+  (sort (filter (lambda (f) (string-suffix? ".org" f))
+                (or (scandir docs-dir) '()))
+        string<?))
+
+(test-begin "docs")
+
+(define examples 0)
+(define checks-before 0)
+
+;; Examples load maps by their repository paths.
+(chdir project-root)
+
+(for-each
+ (lambda (file)
+   (let ((blocks (filter runnable? (org-blocks (string-append docs-dir "/" file))))
+         (module (fresh-docs-module)))
+     (for-each
+      (lambda (block)
+        (set! examples (+ examples 1))
+        (let ((outcome (run-block file block module)))
+          (unless (eq? outcome #t)
+            (format (current-error-port) "~a:~a: ~a~%" file (car block) outcome))
+          (test-equal (format #f "~a:~a" file (car block)) #t outcome)))
+      blocks)))
+ (doc-files))
+
+(test-assert "the documentation has examples" (> examples 0))
+(format #t "docs: ~a example blocks~%" examples)
+
+(test-end "docs")
