@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "broadphase.hpp"
+
 namespace ds {
 
 namespace {
@@ -82,19 +84,39 @@ void resolve_pair(Body& a, Body& b) {
     }
 }
 
-void resolve_entity_collisions(std::span<Body> bodies) {
-    // Only solid, non-ghost bodies take part; walking just those, in list
-    // order, visits the eligible pairs in exactly the all-pairs order.
-    thread_local std::vector<size_t> members;
-    members.clear();
-    for (size_t i = 0; i < bodies.size(); ++i)
-        if (bodies[i].solid && !bodies[i].skips(kSkipEntityCollisions)) members.push_back(i);
+namespace {
+
+void all_pairs(std::span<Body> bodies, std::span<const size_t> members) {
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
             if (aabb_overlap(first, second)) resolve_pair(first, second);
         }
+}
+
+// Below this many solid bodies trying every pair is cheaper than a grid.
+constexpr size_t kSweepFrom = 48;
+
+}  // namespace
+
+void resolve_entity_collisions(std::span<Body> bodies) {
+    resolve_entity_collisions_by(bodies, PairMethod::Auto);
+}
+
+void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method) {
+    // Only solid, non-ghost bodies take part; walking just those, in list
+    // order, visits the eligible pairs in exactly the all-pairs order.
+    thread_local std::vector<size_t> members;
+    thread_local PairSweep sweep;
+    members.clear();
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].solid && !bodies[i].skips(kSkipEntityCollisions)) members.push_back(i);
+    if (members.size() < 2) return;
+    const bool grid = method == PairMethod::Grid ||
+                      (method == PairMethod::Auto && members.size() >= kSweepFrom);
+    if (grid) sweep.run(bodies, members);
+    else all_pairs(bodies, members);
 }
 
 }  // namespace ds

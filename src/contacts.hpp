@@ -19,8 +19,13 @@ bool collision_eligible(const Body& a, const Body& b);
 // Pushes one eligible pair apart (a is the earlier in list order).
 void resolve_pair(Body& a, Body& b);
 
+// How resolve_entity_collisions finds pairs. Both give identical results;
+// Auto uses the grid from a few dozen solid bodies on.
+enum class PairMethod { Auto, AllPairs, Grid };
+
 // One pass over the pairs (i, j), i < j, in list order; each pair sees what
 // earlier pairs produced.
 void resolve_entity_collisions(std::span<Body> bodies);
+void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method);
 
 }  // namespace ds

@@ -1,0 +1,141 @@
+#include "broadphase.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <functional>
+
+#include "contacts.hpp"
+
+namespace ds {
+
+namespace {
+
+// A box spanning more cells than this on an axis is not put in the grid:
+// it is checked against everyone (a floor under a crowd).
+constexpr int64_t kMaxSpan = 8;
+
+int64_t cell_index(double v, double cell) {
+    // Monotone in v, so overlapping intervals always share a cell; huge
+    // coordinates are clamped (they only make extra candidates).
+    constexpr double kLimit = 4.0e18;
+    return static_cast<int64_t>(std::clamp(std::floor(v / cell), -kLimit, kLimit));
+}
+
+}  // namespace
+
+PairSweep::CellRange PairSweep::cells(const Body& b) const {
+    // The closed hull of each interval: for any widths (zero or negative too),
+    // two boxes that overlap by the strict formula have intersecting hulls.
+    const double xa = b.x.v, xb = b.x.v + b.w.v, ya = b.y.v, yb = b.y.v + b.h.v;
+    return {cell_index(std::min(xa, xb), cell_), cell_index(std::min(ya, yb), cell_),
+            cell_index(std::max(xa, xb), cell_), cell_index(std::max(ya, yb), cell_)};
+}
+
+bool PairSweep::is_big(const CellRange& r) const {
+    return r.x1 - r.x0 >= kMaxSpan || r.y1 - r.y0 >= kMaxSpan;
+}
+
+size_t PairSweep::bucket(int64_t cx, int64_t cy) const {
+    // Distinct cells may share a bucket: that only adds candidates.
+    const uint64_t h = static_cast<uint64_t>(cx) * 0x9E3779B97F4A7C15ull ^
+                       static_cast<uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full;
+    return static_cast<size_t>((h ^ (h >> 29)) & (buckets_.size() - 1));
+}
+
+void PairSweep::insert(uint32_t m, const CellRange& r) {
+    range_[m] = r;
+    for (int64_t cy = r.y0; cy <= r.y1; ++cy)
+        for (int64_t cx = r.x0; cx <= r.x1; ++cx) buckets_[bucket(cx, cy)].push_back(m);
+}
+
+void PairSweep::remove(uint32_t m, const CellRange& r) {
+    for (int64_t cy = r.y0; cy <= r.y1; ++cy)
+        for (int64_t cx = r.x0; cx <= r.x1; ++cx) {
+            auto& b = buckets_[bucket(cx, cy)];
+            auto it = std::find(b.begin(), b.end(), m);
+            if (it != b.end()) {
+                *it = b.back();
+                b.pop_back();
+            }
+        }
+}
+
+void PairSweep::query(const CellRange& r, uint32_t after, std::span<const size_t> members, bool all) {
+    auto push = [&](uint32_t m) {
+        if (m <= after || queued_[m] == current_ + 1) return;
+        queued_[m] = current_ + 1;
+        heap_.push_back(m);
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+    };
+    if (all) {
+        for (uint32_t m = after + 1; m < members.size(); ++m) push(m);
+        return;
+    }
+    for (int64_t cy = r.y0; cy <= r.y1; ++cy)
+        for (int64_t cx = r.x0; cx <= r.x1; ++cx)
+            for (uint32_t m : buckets_[bucket(cx, cy)]) push(m);
+    for (uint32_t m : big_) push(m);
+}
+
+void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
+    const auto n = static_cast<uint32_t>(members.size());
+    // Cells twice the median box size: most boxes then touch 1-4 cells.
+    sizes_.clear();
+    for (size_t i : members)
+        sizes_.push_back(std::max(std::fabs(bodies[i].w.v), std::fabs(bodies[i].h.v)));
+    std::nth_element(sizes_.begin(), sizes_.begin() + n / 2, sizes_.end());
+    cell_ = std::max(2 * sizes_[n / 2], 1.0);
+
+    const size_t want = std::bit_ceil(static_cast<size_t>(2 * n));
+    if (buckets_.size() != want) buckets_.resize(want);
+    for (auto& b : buckets_) b.clear();
+    big_.clear();
+    is_big_.assign(n, 0);
+    range_.resize(n);
+    queued_.assign(n, 0);
+    for (uint32_t m = 0; m < n; ++m) {
+        const CellRange r = cells(bodies[members[m]]);
+        range_[m] = r;
+        if (is_big(r)) {
+            is_big_[m] = 1;
+            big_.push_back(m);
+        } else {
+            insert(m, r);
+        }
+    }
+    for (uint32_t a = 0; a < n; ++a) {
+        current_ = a;
+        // Only later bodies are ever a's partners: take a out of the grid.
+        if (is_big_[a]) big_.erase(std::find(big_.begin(), big_.end(), a));
+        else remove(a, range_[a]);
+        Body& first = bodies[members[a]];
+        heap_.clear();
+        query(cells(first), a, members, is_big_[a] != 0);
+        while (!heap_.empty()) {
+            std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+            const uint32_t b = heap_.back();
+            heap_.pop_back();
+            Body& second = bodies[members[b]];
+            if (!aabb_overlap(first, second)) continue;
+            const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
+            resolve_pair(first, second);
+            if ((second.x.v != bx || second.y.v != by) && !is_big_[b]) {
+                const CellRange moved = cells(second);
+                if (is_big(moved)) {  // cannot happen (sizes do not change); kept exact anyway
+                    remove(b, range_[b]);
+                    is_big_[b] = 1;
+                    big_.push_back(b);
+                } else {
+                    remove(b, range_[b]);
+                    insert(b, moved);
+                }
+            }
+            // a moved: later bodies it now overlaps become partners too —
+            // only those after b, as the all-pairs loop has passed the rest.
+            if (first.x.v != ax || first.y.v != ay) query(cells(first), b, members, is_big_[a] != 0);
+        }
+    }
+}
+
+}  // namespace ds

@@ -1,0 +1,45 @@
+// The entity push-apart pass for many bodies: the same sequential pass over
+// the pairs (i, j), i < j, in list order as the all-pairs loop — same pairs,
+// same order, each seeing what earlier pairs did — but finding each body's
+// partners through a hashed grid of the current boxes instead of trying every
+// later body.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "body.hpp"
+
+namespace ds {
+
+class PairSweep {
+public:
+    // Runs the pass over bodies[members[0]], bodies[members[1]], … (the
+    // solid, non-ghost bodies in list order).
+    void run(std::span<Body> bodies, std::span<const size_t> members);
+
+private:
+    struct CellRange {
+        int64_t x0, y0, x1, y1;
+    };
+    CellRange cells(const Body& b) const;
+    bool is_big(const CellRange& r) const;
+    size_t bucket(int64_t cx, int64_t cy) const;
+    void insert(uint32_t m, const CellRange& r);
+    void remove(uint32_t m, const CellRange& r);
+    // Queues the members after `after` that share a bucket with box r (or
+    // are big) and are not queued yet for the current body.
+    void query(const CellRange& r, uint32_t after, std::span<const size_t> members, bool all);
+
+    double cell_ = 1;
+    std::vector<std::vector<uint32_t>> buckets_;
+    std::vector<uint32_t> big_;        // members spanning too many cells: everyone's candidates
+    std::vector<uint8_t> is_big_;      // by member
+    std::vector<CellRange> range_;     // by member: where it is registered
+    std::vector<uint32_t> queued_;     // by member: the body (+1) it was last queued for
+    std::vector<uint32_t> heap_;       // candidates of the current body, smallest first
+    std::vector<double> sizes_;
+    uint32_t current_ = 0;
+};
+
+}  // namespace ds
