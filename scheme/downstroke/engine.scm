@@ -63,8 +63,7 @@ collision mode."
 (define* (make-game #:key (title "Downstroke") (width 640) (height 480)
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
-                    (collision-mode 'swept) (input-script '()) (history 0)
-                    #:allow-other-keys)
+                    (collision-mode 'swept) (input-script '()) (history 0))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. HISTORY keeps the
 scenes of that many past frames for game-rewind!."
@@ -91,7 +90,8 @@ started from."
 
 (define (game-rewind! game k)
   "Go back K frames: the scene becomes the one frame (current − K) started
-from, and the game continues from that frame (its input script included)."
+from, and the game continues from that frame (its input script included).
+Returns that frame's number."
   (let* ((target (- (game-frame game) k))
          (entry (assv target (game-history-list game))))
     (unless (and (exact-integer? k) (> k 0) entry)
@@ -102,7 +102,7 @@ from, and the game continues from that frame (its input script included)."
     (game-frame-set! game target)
     ;; Forget the future we left: the next frames record it anew.
     (game-history-set! game (filter (lambda (e) (< (car e) target)) (game-history-list game)))
-    game))
+    target))
 
 ;;; ---------------------------------------------------------------- scripts
 

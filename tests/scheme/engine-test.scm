@@ -198,7 +198,7 @@
 (game-run! g16 frames: 10)
 (test-equal "falls: y after 10 frames = 1+2+…+10" 55 (y-of g16))
 (test-equal "history keeps 5 frames, newest first" '(9 8 7 6 5) (map car (game-history g16)))
-(game-rewind! g16 3)
+(test-equal "game-rewind! returns the frame it goes back to" 7 (game-rewind! g16 3))
 (test-equal "rewound to frame 7" 7 (game-frame g16))
 (test-equal "the scene frame 7 started from: 1+…+7" 28 (y-of g16))
 (test-equal "the future is forgotten" '(6 5) (map car (game-history g16)))
@@ -208,6 +208,8 @@
   (mentions? (error-text (lambda () (game-rewind! g16 6))) "game-rewind!" "6"))
 (test-assert "no history by default"
   (error-text (lambda () (let ((g (make-game scene: (faller)))) (game-run! g frames: 2) (game-rewind! g 1)))))
+(test-assert "a misspelt keyword is an error, not silently ignored"
+  (mentions? (error-text (lambda () (make-game histroy: 10))) "histroy"))
 (test-assert "history: must be a count"
   (mentions? (error-text (lambda () (make-game history: -1))) "make-game" "history"))
 ;; A rewind from inside a frame (as the REPL does between frames) takes effect
