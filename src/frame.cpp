@@ -62,6 +62,9 @@ void logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
 void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         std::span<FirstWrites> writes) {
     const CollisionMode mode = opts.mode;
+    // A handful of supporters are cheaper to scan than to index.
+    const bool indexed = supporters_.size() >= 32;
+    if (indexed) support_index_.build(supporters_);
     for (size_t i = 0; i < bodies.size(); ++i) {
         Body& b = bodies[i];
         FirstWrites* w = writes.empty() ? nullptr : &writes[i];
@@ -71,8 +74,10 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
         logged(b, w, kFieldX | kFieldVx, [&](Body& c) { resolve_tile_collisions_x(c, grid, mode); });
         logged(b, w, kFieldY, apply_velocity_y);
         logged(b, w, kFieldY | kFieldVy, [&](Body& c) { resolve_tile_collisions_y(c, grid, mode); });
-        logged(b, w, kFieldOnGround,
-               [&](Body& c) { detect_on_solid(c, supporters_, support_slot_[i], grid); });
+        logged(b, w, kFieldOnGround, [&](Body& c) {
+            if (indexed) detect_on_solid(c, supporters_, support_index_, support_slot_[i], grid);
+            else detect_on_solid(c, supporters_, support_slot_[i], grid);
+        });
     }
 }
 

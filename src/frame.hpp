@@ -84,6 +84,7 @@ private:
     std::vector<Body> supporters_;
     std::vector<std::ptrdiff_t> support_slot_;
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
+    SupportIndex support_index_;     // over supporters_, when there are many
     FrameReport report_;
 };
 

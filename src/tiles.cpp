@@ -86,15 +86,29 @@ bool entity_supports(const Body& b, const Body& o) {
            std::fabs(b.vy.v - o.vy.v) <= kOnSolidTolerance;
 }
 
+namespace {
+
+bool supports_other(const Body& b, const Body& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
+    if (k == self_slot || (b.id != 0 && other.id == b.id)) return false;
+    return entity_supports(b, other);
+}
+
+}  // namespace
+
 void detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid) {
     if (!b.gravity || b.skips(kSkipOnSolid)) return;
     bool ground = grid && tile_supports(b, *grid);
-    for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n && !ground; ++k) {
-        if (k == self_slot || (b.id != 0 && scene[k].id == b.id)) continue;
-        ground = entity_supports(b, scene[k]);
-    }
+    for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n && !ground; ++k)
+        ground = supports_other(b, scene[k], k, self_slot);
     b.on_ground = ground;
+}
+
+void detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
+                     std::ptrdiff_t self_slot, const TileGrid* grid) {
+    if (!b.gravity || b.skips(kSkipOnSolid)) return;
+    b.on_ground = (grid && tile_supports(b, *grid)) ||
+                  index.any(b, [&](uint32_t k) { return supports_other(b, scene[k], k, self_slot); });
 }
 
 }  // namespace ds

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "body.hpp"
+#include "support_index.hpp"
 #include "tile_grid.hpp"
 
 namespace ds {
@@ -31,5 +32,8 @@ bool entity_supports(const Body& b, const Body& other);
 // Needs #:gravity?; skipped by 'on-solid.
 void detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid);
+// The same, finding the candidates in `scene` through an index built on it.
+void detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
+                     std::ptrdiff_t self_slot, const TileGrid* grid);
 
 }  // namespace ds

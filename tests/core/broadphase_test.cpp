@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "contacts.hpp"
+#include "support_index.hpp"
+#include "tiles.hpp"
 #include "support.hpp"
 
 using namespace dst;
@@ -34,7 +36,8 @@ std::vector<Body> crowd(Gen& g, int n, int64_t region) {
         b.h = g.num(1, 16);
         if (g.chance(30)) b.w = I(0);
         if (g.chance(40)) b.h = I(-static_cast<double>(g.i(1, 8)));
-        if (g.chance(25)) b.w = I(static_cast<double>(g.i(100, region)));  // a floor
+        if (g.chance(25)) b.w = I(static_cast<double>(g.i(100, std::max<int64_t>(100, region))));  // a floor
+        if (g.chance(200)) b.w = F(3e18);  // a giant
         if (g.chance(60)) b.x = F(1e15 * (g.chance(2) ? 1 : -1));
         b.solid = !g.chance(8);
         b.immovable = g.chance(6);
@@ -90,6 +93,39 @@ TEST_CASE("a pushed body meets partners it did not overlap before the push") {
     CHECK_EXACT(v[0].x, 19);  // then pushed out of the wall to its right side
     for (size_t k = 0; k < v.size(); ++k) CHECK(same_body(v[k], w[k]));
     CHECK_EXACT(w[0].x, 19);
+}
+
+TEST_CASE("indexed ground detection answers as the linear scan does") {
+    int grounded = 0, total = 0;
+    for (uint64_t seed = 1; seed <= 200; ++seed) {
+        Gen g(seed);
+        const int n = static_cast<int>(g.i(1, seed % 10 == 0 ? 500 : 100));
+        std::vector<Body> scene = crowd(g, n, g.i(20, 300));
+        for (size_t k = 0; k < scene.size(); ++k) {
+            // stacked on each other: feet near tops, similar speeds
+            if (g.chance(2) && k > 0) {
+                const Body& below = scene[static_cast<size_t>(g.i(0, static_cast<int64_t>(k) - 1))];
+                scene[k].x = below.x + I(static_cast<double>(g.i(-8, 8)));
+                scene[k].y = below.y - scene[k].h + I(static_cast<double>(g.i(-5, 5)));
+            }
+            scene[k].gravity = !g.chance(10);
+            scene[k].id = g.chance(5) ? g.i(1, 4) : 0;
+        }
+        ds::SupportIndex index;
+        index.build(scene);
+        for (size_t k = 0; k < scene.size(); ++k) {
+            Body linear = scene[k], indexed = scene[k];
+            linear.on_ground = indexed.on_ground = g.chance(2);
+            const std::ptrdiff_t self = g.chance(3) ? -1 : static_cast<std::ptrdiff_t>(k);
+            ds::detect_on_solid(linear, scene, self, nullptr);
+            ds::detect_on_solid(indexed, scene, index, self, nullptr);
+            INFO("seed " << seed << " body " << k);
+            REQUIRE(linear.on_ground == indexed.on_ground);
+            grounded += linear.on_ground;
+            ++total;
+        }
+    }
+    CHECK(grounded > total / 10);  // plenty of bodies really stand on others
 }
 
 }  // TEST_SUITE

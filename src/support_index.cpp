@@ -1,0 +1,75 @@
+#include "support_index.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "steps.hpp"
+
+namespace ds {
+
+namespace {
+
+constexpr int64_t kMaxSpan = 8;  // columns; wider supporters go to the big list
+
+int64_t cell_index(double v, double cell) {
+    constexpr double kLimit = 4.0e18;  // huge coordinates clamp: extra candidates only
+    return static_cast<int64_t>(std::clamp(std::floor(v / cell), -kLimit, kLimit));
+}
+
+}  // namespace
+
+SupportIndex::Cells SupportIndex::top_cells(const Body& o) const {
+    const double xa = o.x.v, xb = o.x.v + o.w.v;
+    const int64_t row = cell_index(o.y.v, ch_);
+    return {cell_index(std::min(xa, xb), cw_), row, cell_index(std::max(xa, xb), cw_), row};
+}
+
+SupportIndex::Cells SupportIndex::query_cells(const Body& b) const {
+    // Supporters' tops within the tolerance of the feet, one cell of slack
+    // each way against rounding.
+    const double xa = b.x.v, xb = b.x.v + b.w.v, feet = b.y.v + b.h.v;
+    return {cell_index(std::min(xa, xb), cw_), cell_index(feet - kOnSolidTolerance, ch_) - 1,
+            cell_index(std::max(xa, xb), cw_), cell_index(feet + kOnSolidTolerance, ch_) + 1};
+}
+
+size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {
+    const uint64_t h = static_cast<uint64_t>(cx) * 0x9E3779B97F4A7C15ull ^
+                       static_cast<uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full;
+    return static_cast<size_t>((h ^ (h >> 29)) & mask_);
+}
+
+void SupportIndex::build(std::span<const Body> bodies) {
+    const auto n = static_cast<uint32_t>(bodies.size());
+    widths_.clear();
+    for (const Body& o : bodies) widths_.push_back(std::fabs(o.w.v));
+    if (n > 0) {
+        std::nth_element(widths_.begin(), widths_.begin() + n / 2, widths_.end());
+        cw_ = std::max(2 * widths_[n / 2], 1.0);
+    }
+    const size_t buckets = std::bit_ceil(static_cast<size_t>(std::max<uint32_t>(2 * n, 2)));
+    start_.assign(buckets + 1, 0);
+    mask_ = buckets - 1;
+    big_.clear();
+    seen_.assign(n, 0);
+    stamp_ = 0;
+    // Counting sort by bucket: count, prefix-sum, place.
+    auto each_cell = [&](const Cells& r, auto&& f) {
+        for (int64_t cx = r.x0; cx <= r.x1; ++cx) f(bucket(cx, r.y0));
+    };
+    for (uint32_t k = 0; k < n; ++k) {
+        const Cells r = top_cells(bodies[k]);
+        if (r.x1 - r.x0 >= kMaxSpan) big_.push_back(k);
+        else each_cell(r, [&](size_t h) { ++start_[h + 1]; });
+    }
+    for (size_t h = 0; h < buckets; ++h) start_[h + 1] += start_[h];
+    items_.resize(start_[buckets]);
+    cursor_.assign(start_.begin(), start_.end() - 1);
+    for (uint32_t k = 0; k < n; ++k) {
+        const Cells r = top_cells(bodies[k]);
+        if (r.x1 - r.x0 >= kMaxSpan) continue;
+        each_cell(r, [&](size_t h) { items_[cursor_[h]++] = k; });
+    }
+}
+
+}  // namespace ds

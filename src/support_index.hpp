@@ -1,0 +1,67 @@
+// Which frame-start bodies could hold a body up: a hashed grid over the
+// supporters' top edges, so ground detection looks at the few bodies near a
+// body's feet instead of the whole scene. The answer is the same as the
+// linear scan's (ground detection only asks whether any supporter qualifies).
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "body.hpp"
+
+namespace ds {
+
+class SupportIndex {
+public:
+    // Indexes bodies (the solid, non-ghost frame-start bodies).
+    void build(std::span<const Body> bodies);
+
+    // Calls accept(k) for every indexed body k whose top edge lies near b's
+    // feet and whose span meets b's (each at most once); true as soon as one
+    // call returns true.
+    template <class Accept>
+    bool any(const Body& b, Accept&& accept) {
+        ++stamp_;
+        for (uint32_t k : big_)
+            if (visit(k) && accept(k)) return true;
+        const Cells r = query_cells(b);
+        if (r.x1 - r.x0 > kMaxQuerySpan) {  // a very wide body: everyone is near
+            for (uint32_t k = 0; k < seen_.size(); ++k)
+                if (visit(k) && accept(k)) return true;
+            return false;
+        }
+        for (int64_t cy = r.y0; cy <= r.y1; ++cy)
+            for (int64_t cx = r.x0; cx <= r.x1; ++cx) {
+                const size_t h = bucket(cx, cy);
+                for (uint32_t i = start_[h]; i < start_[h + 1]; ++i)
+                    if (visit(items_[i]) && accept(items_[i])) return true;
+            }
+        return false;
+    }
+
+private:
+    static constexpr int64_t kMaxQuerySpan = 64;  // columns
+    struct Cells {
+        int64_t x0, y0, x1, y1;
+    };
+    Cells top_cells(const Body& o) const;
+    Cells query_cells(const Body& b) const;
+    size_t bucket(int64_t cx, int64_t cy) const;
+    bool visit(uint32_t k) {
+        if (seen_[k] == stamp_) return false;
+        seen_[k] = stamp_;
+        return true;
+    }
+
+    double cw_ = 1, ch_ = 16;
+    std::vector<uint32_t> start_;  // bucket h holds items_[start_[h] .. start_[h+1])
+    std::vector<uint32_t> items_;
+    std::vector<uint32_t> cursor_;  // build scratch
+    std::vector<uint32_t> big_;    // spanning many columns: always candidates
+    std::vector<uint32_t> seen_;
+    std::vector<double> widths_;
+    uint32_t stamp_ = 0;
+    size_t mask_ = 0;
+};
+
+}  // namespace ds
