@@ -1,5 +1,6 @@
 #include "batch.hpp"
 
+#include <algorithm>
 #include <memory>
 
 #include "plist.hpp"
@@ -22,18 +23,41 @@ Batch& lease_batch() {
     return b;
 }
 
+namespace {
+
+// Room for n entries in the cache vector (grown by doubling, re-protected).
+void reserve_cache(Batch& batch, size_t n) {
+    const size_t have = scm_is_true(batch.cache) ? SCM_SIMPLE_VECTOR_LENGTH(batch.cache) : 0;
+    if (n <= have) return;
+    SCM grown = scm_c_make_vector(std::max(n, 2 * have), SCM_BOOL_F);
+    for (size_t i = 0; i < have; ++i) SCM_SIMPLE_VECTOR_SET(grown, i, SCM_SIMPLE_VECTOR_REF(batch.cache, i));
+    scm_gc_protect_object(grown);
+    if (scm_is_true(batch.cache)) scm_gc_unprotect_object(batch.cache);
+    batch.cache = grown;
+    batch.cached.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
+}
+
+}  // namespace
+
 bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.before.clear();
-    batch.bodies.clear();
     batch.has_tween.clear();
     batch.writes.clear();
+    size_t i = 0;
     SCM p = entities;
-    for (; scm_is_pair(p); p = SCM_CDR(p)) {
-        Decoded d;
-        if (!decode_entity(SCM_CAR(p), d, f)) return false;
-        batch.before.push_back(d.body);
-        batch.has_tween.push_back(scm_is_true(d.tween));
-        batch.writes.push_back(FirstWrites{.watched = watched_fields(d)});
+    for (; scm_is_pair(p); p = SCM_CDR(p), ++i) {
+        SCM e = SCM_CAR(p);
+        reserve_cache(batch, i + 1);
+        CachedEntity& c = batch.cached[i];
+        if (!scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.cache, i), e)) {
+            Decoded d;
+            if (!decode_entity(e, d, f)) return false;
+            c = {d.body, watched_fields(d), scm_is_true(d.tween)};
+            SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
+        }
+        batch.before.push_back(c.body);
+        batch.has_tween.push_back(c.has_tween);
+        batch.writes.push_back(FirstWrites{.watched = c.watched});
     }
     if (!scm_is_null(p)) {
         fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");

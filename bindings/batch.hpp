@@ -12,6 +12,14 @@
 
 namespace ds::guile {
 
+// What decoding an entity produced, kept for as long as the same plist
+// (eq?) comes back: plists are values, so the same object decodes the same.
+struct CachedEntity {
+    Body body;
+    uint16_t watched = 0;
+    bool has_tween = false;
+};
+
 struct Batch {
     std::vector<Body> before;  // as decoded
     std::vector<Body> bodies;  // what the steps work on
@@ -19,6 +27,11 @@ struct Batch {
     std::vector<FirstWrites> writes;  // per body: watched fields and first writes
     std::vector<Body> frame_start;  // before the tweens, for ground detection
     Frame frame;               // the core's scratch for whole frames
+    // The entities decoded last time, by position: a Guile vector (so the
+    // collector sees them and they cannot be recycled into look-alikes),
+    // protected while this Batch holds it, and their decodings.
+    SCM cache = SCM_BOOL_F;
+    std::vector<CachedEntity> cached;
 
     size_t size() const { return bodies.size(); }
 };

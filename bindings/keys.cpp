@@ -21,12 +21,6 @@ const Keys* keys = nullptr;
 
 const char* key_name(uint8_t k) { return k < kPhysKeyCount ? kKeyNames[k] : "?"; }
 
-uint8_t Keys::lookup(SCM keyword) const {
-    for (uint8_t k = 0; k < kPhysKeyCount; ++k)
-        if (scm_is_eq(key[k], keyword)) return k;
-    return kNotPhysics;
-}
-
 namespace {
 SCM keep(SCM obj) { return scm_gc_protect_object(obj); }
 }  // namespace
@@ -34,6 +28,13 @@ SCM keep(SCM obj) { return scm_gc_protect_object(obj); }
 void init_keys() {
     if (keys) return;
     for (uint8_t k = 0; k < kPhysKeyCount; ++k) storage.key[k] = keep(scm_from_utf8_keyword(kKeyNames[k]));
+    for (SCM& slot : storage.slot_key) slot = SCM_BOOL_F;
+    for (uint8_t k = 0; k < kPhysKeyCount; ++k) {
+        size_t slot = Keys::hash(storage.key[k]);
+        while (scm_is_true(storage.slot_key[slot])) slot = (slot + 1) & (Keys::kSlots - 1);
+        storage.slot_key[slot] = storage.key[k];
+        storage.slot_index[slot] = k;
+    }
     for (int bit = 0; bit < 9; ++bit)
         storage.skip_symbol[bit] = keep(scm_from_utf8_symbol(skip_name(static_cast<uint16_t>(1u << bit))));
     storage.swept = keep(scm_from_utf8_symbol("swept"));

@@ -23,8 +23,22 @@ struct Keys {
     SCM skip_symbol[9];  // by bit index of ds::Skip
     SCM swept, discrete;
 
-    // Which physics key a keyword is, or kNotPhysics.
-    uint8_t lookup(SCM keyword) const;
+    // Which physics key a keyword (or any object) is, or kNotPhysics: one
+    // probe of a small open-addressed table on the object's address, as it
+    // runs for every key of every entity of every frame.
+    uint8_t lookup(SCM obj) const {
+        for (size_t slot = hash(obj);; slot = (slot + 1) & (kSlots - 1)) {
+            if (scm_is_eq(slot_key[slot], obj)) return slot_index[slot];
+            if (scm_is_false(slot_key[slot])) return kNotPhysics;
+        }
+    }
+
+    static constexpr size_t kSlots = 64;
+    static size_t hash(SCM obj) {
+        return static_cast<size_t>((SCM_UNPACK(obj) >> 3) * 0x9E3779B97F4A7C15ull >> 58);
+    }
+    SCM slot_key[kSlots];
+    uint8_t slot_index[kSlots];
 };
 
 // Valid after init_keys().

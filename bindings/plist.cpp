@@ -97,7 +97,8 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
     SCM p = plist;
     for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p))) {
         SCM key = SCM_CAR(p);
-        if (!scm_is_keyword(key)) {
+        const uint8_t k = keys->lookup(key);  // a physics key is a keyword: no need to ask
+        if (k == kNotPhysics && !scm_is_keyword(key)) {
             fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: ~S in key position of ~S");
             return false;
         }
@@ -105,7 +106,6 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: key ~S has no value in ~S");
             return false;
         }
-        const uint8_t k = keys->lookup(key);
         if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) continue;  // first occurrence wins
         d.present |= 1u << k;
         if (!decode_value(k, key, SCM_CAR(SCM_CDR(p)), d, f)) return false;

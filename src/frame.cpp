@@ -68,12 +68,17 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
     for (size_t i = 0; i < bodies.size(); ++i) {
         Body& b = bodies[i];
         FirstWrites* w = writes.empty() ? nullptr : &writes[i];
-        logged(b, w, kFieldVy | kFieldAy, apply_acceleration);
+        // What each step can write given the body as it is: acceleration
+        // resets only a non-zero ay, tile steps do nothing at zero speed.
+        const auto unless_zero = [](Num n, uint32_t fields) { return n.v != 0 ? fields : 0u; };
+        logged(b, w, kFieldVy | unless_zero(b.ay, kFieldAy), apply_acceleration);
         logged(b, w, kFieldVy, apply_gravity);
         logged(b, w, kFieldX, apply_velocity_x);
-        logged(b, w, kFieldX | kFieldVx, [&](Body& c) { resolve_tile_collisions_x(c, grid, mode); });
+        logged(b, w, unless_zero(b.vx, kFieldX | kFieldVx),
+               [&](Body& c) { resolve_tile_collisions_x(c, grid, mode); });
         logged(b, w, kFieldY, apply_velocity_y);
-        logged(b, w, kFieldY | kFieldVy, [&](Body& c) { resolve_tile_collisions_y(c, grid, mode); });
+        logged(b, w, unless_zero(b.vy, kFieldY | kFieldVy),
+               [&](Body& c) { resolve_tile_collisions_y(c, grid, mode); });
         logged(b, w, kFieldOnGround, [&](Body& c) {
             if (indexed) detect_on_solid(c, supporters_, support_index_, support_slot_[i], grid);
             else detect_on_solid(c, supporters_, support_slot_[i], grid);
@@ -96,10 +101,10 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
 
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                          std::span<const Body> scene, std::span<FirstWrites> writes) {
-    if (scene.empty()) {
-        start_.assign(bodies.begin(), bodies.end());
-        scene = start_;
-    }
+    // Ground detection reads only the supporters, copied out below before
+    // any body moves: with no separate frame-start scene, the bodies as they
+    // are now are that scene.
+    if (scene.empty()) scene = bodies;
     supporters_.clear();
     support_slot_.assign(bodies.size(), -1);
     for (size_t i = 0; i < scene.size(); ++i) {
