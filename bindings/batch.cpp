@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "cons.hpp"
 #include "plist.hpp"
 
 namespace ds::guile {
@@ -75,11 +76,12 @@ SCM encode_batch(SCM entities, const Batch& batch) {
             last = i + 1;
     if (last == 0) return entities;
     SCM head = SCM_EOL, tail = SCM_BOOL_F, p = entities;
+    const Conser cons;
     for (size_t i = 0; i < last; ++i, p = SCM_CDR(p)) {
         Edit edits[16];
         SCM plist = SCM_CAR(p);
         SCM entity = rewrite_plist(plist, edits, field_edits(batch.before[i], batch.bodies[i], edits, &batch.writes[i]));
-        SCM cell = scm_cons(entity, SCM_EOL);
+        SCM cell = cons(entity, SCM_EOL);
         if (scm_is_false(tail)) head = cell;
         else scm_set_cdr_x(tail, cell);
         tail = cell;

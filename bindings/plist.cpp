@@ -1,5 +1,6 @@
 #include "plist.hpp"
 
+#include "cons.hpp"
 #include "scm_number.hpp"
 
 namespace ds::guile {
@@ -137,8 +138,9 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
     bool appends = false;
     for (size_t i = 0; i < count; ++i) appends |= !((found >> i) & 1u) && !edits[i].remove;
     SCM head = SCM_EOL, tail = SCM_BOOL_F;
+    const Conser cons;
     auto emit = [&](SCM key, SCM value) {
-        SCM cell = scm_cons(key, scm_cons(value, SCM_EOL));
+        SCM cell = cons(key, cons(value, SCM_EOL));
         if (scm_is_false(tail)) head = cell;
         else scm_set_cdr_x(tail, cell);
         tail = SCM_CDR(cell);
