@@ -24,6 +24,10 @@ int64_t cell_index(double v, double cell) {
 
 }  // namespace
 
+bool PairSweep::same_cells(const CellRange& a, const CellRange& b) {
+    return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+}
+
 PairSweep::CellRange PairSweep::cells(const Body& b) const {
     // The closed hull of each interval: for any widths (zero or negative too),
     // two boxes that overlap by the strict formula have intersecting hulls.
@@ -111,7 +115,8 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
         else remove(a, range_[a]);
         Body& first = bodies[members[a]];
         heap_.clear();
-        query(cells(first), a, members, is_big_[a] != 0);
+        CellRange queried = cells(first);
+        query(queried, a, members, is_big_[a] != 0);
         while (!heap_.empty()) {
             std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
             const uint32_t b = heap_.back();
@@ -120,20 +125,26 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
             resolve_pair(first, second);
+            // Re-file b only when it changed cells (sizes never change, so
+            // a small body stays small).
             if ((second.x.v != bx || second.y.v != by) && !is_big_[b]) {
                 const CellRange moved = cells(second);
-                if (is_big(moved)) {  // cannot happen (sizes do not change); kept exact anyway
-                    remove(b, range_[b]);
-                    is_big_[b] = 1;
-                    big_.push_back(b);
-                } else {
+                if (!same_cells(moved, range_[b])) {
                     remove(b, range_[b]);
                     insert(b, moved);
                 }
             }
-            // a moved: later bodies it now overlaps become partners too —
-            // only those after b, as the all-pairs loop has passed the rest.
-            if (first.x.v != ax || first.y.v != ay) query(cells(first), b, members, is_big_[a] != 0);
+            // a moved into other cells: later bodies it may now overlap
+            // become partners too — only those after b, as the all-pairs loop
+            // has passed the rest. (Within the same cells, they are all
+            // queued already.)
+            if ((first.x.v != ax || first.y.v != ay) && !is_big_[a]) {
+                const CellRange now = cells(first);
+                if (!same_cells(now, queried)) {
+                    query(now, b, members, false);
+                    queried = now;
+                }
+            }
         }
     }
 }

@@ -23,6 +23,7 @@ private:
         int64_t x0, y0, x1, y1;
     };
     CellRange cells(const Body& b) const;
+    static bool same_cells(const CellRange& a, const CellRange& b);
     bool is_big(const CellRange& r) const;
     size_t bucket(int64_t cx, int64_t cy) const;
     void insert(uint32_t m, const CellRange& r);
