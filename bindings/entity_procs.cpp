@@ -42,7 +42,7 @@ SCM apply_velocity_x_1(SCM e) { return step_entity("apply-velocity-x", e, apply_
 SCM apply_velocity_y_1(SCM e) { return step_entity("apply-velocity-y", e, apply_velocity_y); }
 SCM apply_velocity_1(SCM e) { return step_entity("apply-velocity", e, apply_velocity); }
 
-template <void (*Resolve)(Body&, const TileGrid*, CollisionMode)>
+template <bool (*Resolve)(Body&, const TileGrid*, CollisionMode)>
 SCM resolve_tiles(const char* proc, SCM e, SCM tilemap, SCM mode) {
     Failure f{.proc = proc};
     const TileGrid* grid = nullptr;

@@ -1,5 +1,6 @@
 // One whole engine pass over an entity list in one native call.
 #include <algorithm>
+#include <chrono>
 
 #include "args.hpp"
 #include "batch.hpp"
@@ -30,6 +31,20 @@ SCM step_list_tweens(SCM entities, const Batch& batch, double dt, Failure& f) {
     return changed ? scm_reverse_x(out, SCM_EOL) : entities;
 }
 
+// The last whole frame stepped on this thread: the core's per-step figures
+// plus the boundary's own (plist decoding and encoding, the tween stage).
+struct LastFrame {
+    FrameStats core;
+    StepStats decode, encode;
+    size_t entities = 0;
+};
+thread_local LastFrame last_frame;
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
 SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
     Failure f{.proc = "step-scene"};
     SCM result = entities;
@@ -38,17 +53,34 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
         FrameOptions opts;
         const TileGrid* grid = nullptr;
         Batch& batch = lease_batch();
+        LastFrame stats;
+        auto t0 = Clock::now();
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             decode_batch(entities, batch, f)) {
+            stats.decode.ms = ms_since(t0);
+            t0 = Clock::now();
             SCM list = step_list_tweens(entities, batch, opts.dt, f);
             const bool tweened = !scm_is_eq(list, entities);
+            const auto tweens = static_cast<uint64_t>(
+                std::count(batch.has_tween.begin(), batch.has_tween.end(), uint8_t{1}));
+            stats.core.step[kStepTweens] = {tweens, batch.size() - tweens, ms_since(t0)};
             if (tweened) batch.frame_start = batch.before;  // the scene before the tweens
+            t0 = Clock::now();
             if (!f && (!tweened || decode_batch(list, batch, f))) {
+                stats.decode.ms += ms_since(t0);
                 batch.frame.step_physics(batch.bodies, grid, opts,
                                          tweened ? std::span<const Body>(batch.frame_start)
                                                  : std::span<const Body>(),
                                          batch.writes);
+                t0 = Clock::now();
                 result = encode_batch(list, batch);
+                stats.encode.ms = ms_since(t0);
+                const StepStats tween_stats = stats.core.step[kStepTweens];
+                stats.core = batch.frame.stats();
+                stats.core.step[kStepTweens] = tween_stats;
+                stats.entities = batch.size();
+                stats.decode.processed = stats.encode.processed = batch.size();
+                last_frame = stats;
             }
         }
     }
@@ -57,12 +89,28 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
     return result;
 }
 
+SCM step_stats(const char* name, const StepStats& s) {
+    return scm_list_4(scm_from_utf8_symbol(name), scm_from_uint64(s.processed),
+                      scm_from_uint64(s.skipped), scm_from_double(s.ms));
+}
+
+SCM frame_stats() {
+    const LastFrame& l = last_frame;
+    SCM rows = scm_list_1(step_stats("encode", l.encode));
+    for (int id = kStepCount - 1; id >= 0; --id)
+        rows = scm_cons(step_stats(step_name(static_cast<StepId>(id)), l.core.step[id]), rows);
+    return scm_cons(step_stats("decode", l.decode), rows);
+}
+
 }  // namespace
 
 void register_frame_procedures() {
     define_procedure("%step-entities", 4, 0, 0, (Subr)step_entities,
                      "(entities tilemap dt mode): the whole default-engine-update pass over a list of "
                      "entities: tweens, motion, tiles, ground, push-apart, groups.");
+    define_procedure("%frame-stats", 0, 0, 0, (Subr)frame_stats,
+                     "The last whole frame stepped on this thread: ((step processed skipped ms) …) "
+                     "for decode, each step in order, and encode.");
 }
 
 }  // namespace ds::guile

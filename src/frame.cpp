@@ -1,6 +1,7 @@
 #include "frame.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 #include "contacts.hpp"
 #include "groups.hpp"
@@ -24,6 +25,8 @@ Num* body_field(Body& b, uint32_t key) {
 }
 
 void Frame::step_tweens(World& world, double dt) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const size_t tracks = world.tweens.size();
     auto done = [&](TweenTrack& track) {
         Body& b = world.bodies[track.body];
         if (b.skips(kSkipTweens)) return false;
@@ -40,50 +43,88 @@ void Frame::step_tweens(World& world, double dt) {
         return phase.finished;
     };
     std::erase_if(world.tweens, done);
+    stats_.step[kStepTweens] = {
+        tracks, world.bodies.size() - tracks,
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()};
 }
 
 namespace {
 
 // Runs one per-entity step; when it may write a field the entity lacks,
-// compares around it so the first write is logged.
+// compares around it so the first write is logged. Returns whether it applied.
 template <class Step>
-void logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
-    if (w == nullptr || (w->watched & may_write) == 0) {
-        step(b);
-        return;
-    }
+bool logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
+    if (w == nullptr || (w->watched & may_write) == 0) return step(b);
     const Body before = b;
-    step(b);
+    const bool ran = step(b);
     w->note(changed_fields(before, b) & may_write);
+    return ran;
 }
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+uint32_t unless_zero(Num n, uint32_t fields) { return n.v != 0 ? fields : 0u; }
 
 }  // namespace
 
-void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                        std::span<FirstWrites> writes) {
-    const CollisionMode mode = opts.mode;
-    // A handful of supporters are cheaper to scan than to index.
-    const bool indexed = supporters_.size() >= 32;
-    if (indexed) support_index_.build(supporters_);
+const char* step_name(StepId id) {
+    static constexpr const char* kNames[kStepCount] = {
+        "tweens", "acceleration", "gravity", "velocity-x", "tile-collisions-x", "velocity-y",
+        "tile-collisions-y", "on-solid", "entity-collisions", "groups"};
+    return kNames[id];
+}
+
+template <class MayWrite, class Step>
+void Frame::pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
+                 MayWrite&& may_write, Step&& step) {
+    const auto t0 = Clock::now();
+    uint64_t ran = 0;
     for (size_t i = 0; i < bodies.size(); ++i) {
         Body& b = bodies[i];
-        FirstWrites* w = writes.empty() ? nullptr : &writes[i];
-        // What each step can write given the body as it is: acceleration
-        // resets only a non-zero ay, tile steps do nothing at zero speed.
-        const auto unless_zero = [](Num n, uint32_t fields) { return n.v != 0 ? fields : 0u; };
-        logged(b, w, kFieldVy | unless_zero(b.ay, kFieldAy), apply_acceleration);
-        logged(b, w, kFieldVy, apply_gravity);
-        logged(b, w, kFieldX, apply_velocity_x);
-        logged(b, w, unless_zero(b.vx, kFieldX | kFieldVx),
-               [&](Body& c) { resolve_tile_collisions_x(c, grid, mode); });
-        logged(b, w, kFieldY, apply_velocity_y);
-        logged(b, w, unless_zero(b.vy, kFieldY | kFieldVy),
-               [&](Body& c) { resolve_tile_collisions_y(c, grid, mode); });
-        logged(b, w, kFieldOnGround, [&](Body& c) {
-            if (indexed) detect_on_solid(c, supporters_, support_index_, support_slot_[i], grid);
-            else detect_on_solid(c, supporters_, support_slot_[i], grid);
-        });
+        ran += logged(b, writes.empty() ? nullptr : &writes[i], may_write(b),
+                      [&](Body& c) { return step(c, i); });
     }
+    StepStats& st = stats_.step[id];
+    st.processed += ran;
+    st.skipped += bodies.size() - ran;
+    st.ms += ms_since(t0);
+}
+
+void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                        std::span<FirstWrites> writes) {
+    // Step by step over all bodies rather than body by body: the same result
+    // (each per-entity step reads only its own body and the frame-start
+    // supporters), and each step's cost can be reported. The masks say what
+    // a step can write given the body as it is: acceleration resets only a
+    // non-zero ay, tile steps do nothing at zero speed.
+    const CollisionMode mode = opts.mode;
+    pass(kStepAcceleration, bodies, writes,
+         [](const Body& b) { return kFieldVy | unless_zero(b.ay, kFieldAy); },
+         [](Body& b, size_t) { return apply_acceleration(b); });
+    pass(kStepGravity, bodies, writes, [](const Body&) { return kFieldVy; },
+         [](Body& b, size_t) { return apply_gravity(b); });
+    pass(kStepVelocityX, bodies, writes, [](const Body&) { return kFieldX; },
+         [](Body& b, size_t) { return apply_velocity_x(b); });
+    pass(kStepTileX, bodies, writes, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
+         [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode); });
+    pass(kStepVelocityY, bodies, writes, [](const Body&) { return kFieldY; },
+         [](Body& b, size_t) { return apply_velocity_y(b); });
+    pass(kStepTileY, bodies, writes, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
+         [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode); });
+    // A handful of supporters are cheaper to scan than to index.
+    const auto t0 = Clock::now();
+    const bool indexed = supporters_.size() >= 32;
+    if (indexed) support_index_.build(supporters_);
+    stats_.step[kStepOnSolid].ms += ms_since(t0);
+    pass(kStepOnSolid, bodies, writes, [](const Body&) { return kFieldOnGround; },
+         [&](Body& b, size_t i) {
+             return indexed ? detect_on_solid(b, supporters_, support_index_, support_slot_[i], grid)
+                            : detect_on_solid(b, supporters_, support_slot_[i], grid);
+         });
 }
 
 template <class Bulk>
@@ -105,6 +146,8 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
     // any body moves: with no separate frame-start scene, the bodies as they
     // are now are that scene.
     if (scene.empty()) scene = bodies;
+    for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
+        stats_.step[id] = {};
     supporters_.clear();
     support_slot_.assign(bodies.size(), -1);
     for (size_t i = 0; i < scene.size(); ++i) {
@@ -113,8 +156,15 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
         supporters_.push_back(scene[i]);
     }
     step_bodies(bodies, grid, opts, writes);
+    auto t0 = Clock::now();
     logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, resolve_entity_collisions);
+    const auto solid = static_cast<uint64_t>(supporters_.size());
+    stats_.step[kStepEntityCollisions] = {solid, bodies.size() - solid, ms_since(t0)};
+    t0 = Clock::now();
     logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
+    const auto grouped = static_cast<uint64_t>(
+        std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return b.group != 0; }));
+    stats_.step[kStepGroups] = {grouped, bodies.size() - grouped, ms_since(t0)};
 }
 
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {

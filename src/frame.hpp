@@ -49,6 +49,25 @@ struct FrameOptions {
     double dt = 1000.0 / 60.0;  // ms; only tweens use it
 };
 
+// The steps of a frame, in order, for reporting what each cost.
+enum StepId : int {
+    kStepTweens, kStepAcceleration, kStepGravity, kStepVelocityX, kStepTileX, kStepVelocityY,
+    kStepTileY, kStepOnSolid, kStepEntityCollisions, kStepGroups, kStepCount,
+};
+const char* step_name(StepId id);  // the skip symbol's spelling: "velocity-x", "groups", …
+
+// For one step of the last frame: bodies it applied to, bodies it left
+// alone (guarded out, skipped by #:skip-pipelines, nothing to do such as no
+// speed on a tile step's axis, not solid, not in a group), and wall time.
+struct StepStats {
+    uint64_t processed = 0;
+    uint64_t skipped = 0;
+    double ms = 0;
+};
+struct FrameStats {
+    StepStats step[kStepCount];
+};
+
 // What a frame did besides moving bodies.
 struct FrameReport {
     std::vector<UserWrite> user_writes;
@@ -62,6 +81,11 @@ public:
     // The whole pass over a world.
     const FrameReport& step(World& world, const FrameOptions& opts);
 
+    // The cost of each step in the last frame (tweens: only when step() ran
+    // them; callers running tweens themselves may record theirs here).
+    const FrameStats& stats() const { return stats_; }
+    FrameStats& stats() { return stats_; }
+
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the
     // tweens); empty means the bodies as they are now. With `writes` (one per
@@ -73,6 +97,9 @@ private:
     void step_tweens(World& world, double dt);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      std::span<FirstWrites> writes);
+    template <class MayWrite, class Step>
+    void pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes, MayWrite&& may_write,
+              Step&& step);
     template <class Bulk>
     void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                      Bulk&& bulk);
@@ -86,6 +113,7 @@ private:
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
     SupportIndex support_index_;     // over supporters_, when there are many
     FrameReport report_;
+    FrameStats stats_;
 };
 
 }  // namespace ds

@@ -2,28 +2,35 @@
 
 namespace ds {
 
-void apply_acceleration(Body& b) {
-    if (!b.gravity || b.skips(kSkipAcceleration)) return;
+bool apply_acceleration(Body& b) {
+    if (!b.gravity || b.skips(kSkipAcceleration)) return false;
     b.vy = b.vy + b.ay;
     if (b.ay.v != 0) b.ay = Num::integer(0);
+    return true;
 }
 
-void apply_gravity(Body& b) {
-    if (!b.gravity || b.skips(kSkipGravity)) return;
+bool apply_gravity(Body& b) {
+    if (!b.gravity || b.skips(kSkipGravity)) return false;
     b.vy = b.vy + Num::integer(kGravity);
+    return true;
 }
 
-void apply_velocity_x(Body& b) {
-    if (!b.skips(kSkipVelocityX)) b.x = b.x + b.vx;
+bool apply_velocity_x(Body& b) {
+    if (b.skips(kSkipVelocityX)) return false;
+    b.x = b.x + b.vx;
+    return true;
 }
 
-void apply_velocity_y(Body& b) {
-    if (!b.skips(kSkipVelocityY)) b.y = b.y + b.vy;
+bool apply_velocity_y(Body& b) {
+    if (b.skips(kSkipVelocityY)) return false;
+    b.y = b.y + b.vy;
+    return true;
 }
 
-void apply_velocity(Body& b) {
-    apply_velocity_x(b);
-    apply_velocity_y(b);
+bool apply_velocity(Body& b) {
+    const bool x = apply_velocity_x(b);
+    const bool y = apply_velocity_y(b);
+    return x || y;
 }
 
 }  // namespace ds

@@ -53,22 +53,24 @@ void resolve_axis(Axis a, CellRange along, CellRange across, Solid solid) {
 
 }  // namespace
 
-void resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode) {
-    if (!grid || b.vx.v == 0 || b.skips(kSkipTileX)) return;
+bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode) {
+    if (!grid || b.vx.v == 0 || b.skips(kSkipTileX)) return false;
     Axis a{b.x, b.vx, b.w, grid->tile_width()};
     const CellRange cols = grid->clip_cols(candidates(a, mode));
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
     resolve_axis(a, cols, rows,
                  [&](int64_t c, int64_t r) { return grid->solid(c, r); });
+    return true;
 }
 
-void resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode) {
-    if (!grid || b.vy.v == 0 || b.skips(kSkipTileY)) return;
+bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode) {
+    if (!grid || b.vy.v == 0 || b.skips(kSkipTileY)) return false;
     Axis a{b.y, b.vy, b.h, grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
     resolve_axis(a, rows, cols,
                  [&](int64_t r, int64_t c) { return grid->solid(c, r); });
+    return true;
 }
 
 bool tile_supports(const Body& b, const TileGrid& grid) {
@@ -95,20 +97,22 @@ bool supports_other(const Body& b, const Body& other, std::ptrdiff_t k, std::ptr
 
 }  // namespace
 
-void detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
+bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid) {
-    if (!b.gravity || b.skips(kSkipOnSolid)) return;
+    if (!b.gravity || b.skips(kSkipOnSolid)) return false;
     bool ground = grid && tile_supports(b, *grid);
     for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n && !ground; ++k)
         ground = supports_other(b, scene[k], k, self_slot);
     b.on_ground = ground;
+    return true;
 }
 
-void detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
+bool detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
                      std::ptrdiff_t self_slot, const TileGrid* grid) {
-    if (!b.gravity || b.skips(kSkipOnSolid)) return;
+    if (!b.gravity || b.skips(kSkipOnSolid)) return false;
     b.on_ground = (grid && tile_supports(b, *grid)) ||
                   index.any(b, [&](uint32_t k) { return supports_other(b, scene[k], k, self_slot); });
+    return true;
 }
 
 }  // namespace ds

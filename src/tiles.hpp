@@ -16,9 +16,9 @@ enum class CollisionMode : uint8_t {
 
 // Snap out of solid cells along x after apply-velocity-x. No-op without a
 // grid, when vx = 0, or when the body skips 'tile-collisions-x.
-void resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode);
+bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode);
 // The same along y, after apply-velocity-y ('tile-collisions-y).
-void resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode);
+bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode);
 
 // Whether a solid cell lies in row ⌊(y+h)/th⌋ under any column the box spans.
 bool tile_supports(const Body& b, const TileGrid& grid);
@@ -27,13 +27,15 @@ bool tile_supports(const Body& b, const TileGrid& grid);
 // (Identity — "other is not b itself" — is the caller's business.)
 bool entity_supports(const Body& b, const Body& other);
 
+// Tile steps return whether they looked at the map (false: no map, no speed
+// on that axis, or skipped); detect_on_solid whether it applied.
 // Sets on_ground from the tiles and from the frame-start scene. self_slot is
 // b's own index in `scene` (or -1); bodies with b's nonzero id are skipped too.
 // Needs #:gravity?; skipped by 'on-solid.
-void detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
+bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid);
 // The same, finding the candidates in `scene` through an index built on it.
-void detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
+bool detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
                      std::ptrdiff_t self_slot, const TileGrid* grid);
 
 }  // namespace ds

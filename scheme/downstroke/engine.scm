@@ -6,6 +6,7 @@
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
   #:use-module (downstroke tilemap)
+  #:use-module ((downstroke native) #:select (%frame-stats))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
@@ -13,7 +14,7 @@
             input-pressed? input-held? input-released? play-sound
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
-            frame-pacing main-script? script-number-argument))
+            frame-pacing main-script? script-number-argument engine-stats))
 
 ;;; Input: what is held this frame, and what was held the frame before.
 (define-record-type <input>
@@ -103,6 +104,19 @@ Returns that frame's number."
     ;; Forget the future we left: the next frames record it anew.
     (game-history-set! game (filter (lambda (e) (< (car e) target)) (game-history-list game)))
     target))
+
+;;; ---------------------------------------------------------------- costs
+
+(define (engine-stats game)
+  "What the last physics frame cost, step by step: a list of
+(step processed skipped ms) — decode (reading the plists), each step of the
+frame in order (tweens acceleration gravity velocity-x tile-collisions-x
+velocity-y tile-collisions-y on-solid entity-collisions groups), and encode
+(writing back what changed). PROCESSED counts the entities a step applied
+to; SKIPPED those it left alone (skip-pipelines, no #:gravity?, no speed on
+a tile step's axis, not solid, not in a group). It is the last step-scene run
+on this thread, which for a running game is its own last frame."
+  (%frame-stats))
 
 ;;; ---------------------------------------------------------------- scripts
 

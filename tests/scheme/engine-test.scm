@@ -223,6 +223,26 @@
 (game-run! g17 frames: 6)
 (test-equal '(0 1 2 3 4 2 3 4 5) (reverse g17-frames))
 
+;;; ---------------------------------------------------------------- engine-stats
+;; A falling solid box, a solid box it overlaps (no gravity), and a box that
+;; skips velocity-x; no tilemap, no tweens, no groups.
+(define g18 (make-game scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 8 #:height 8 #:gravity? #t #:solid? #t)
+                                                          '(#:x 4 #:y 2 #:width 8 #:height 8 #:solid? #t)
+                                                          '(#:x 50 #:y 0 #:width 8 #:height 8 #:skip-pipelines (velocity-x))))))
+(game-run! g18 frames: 3)
+(define stats18 (engine-stats g18))
+(test-equal "engine-stats: every step in frame order, between decode and encode"
+  '(decode tweens acceleration gravity velocity-x tile-collisions-x velocity-y tile-collisions-y
+    on-solid entity-collisions groups encode)
+  (map car stats18))
+(test-equal "engine-stats: processed and skipped per step"
+  '((decode 3 0) (tweens 0 3) (acceleration 1 2) (gravity 1 2) (velocity-x 2 1)
+    (tile-collisions-x 0 3) (velocity-y 3 0) (tile-collisions-y 0 3) (on-solid 1 2)
+    (entity-collisions 2 1) (groups 0 3) (encode 3 0))
+  (map (lambda (row) (list-head row 3)) stats18))
+(test-assert "engine-stats: times are real milliseconds ≥ 0"
+  (every (lambda (row) (and (real? (cadddr row)) (>= (cadddr row) 0))) stats18))
+
 ;;; ---------------------------------------------------------------- scripts
 ;; Under the test runner, the host's script is run-suite.scm with this file
 ;; as its argument.
