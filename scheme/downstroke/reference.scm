@@ -284,16 +284,25 @@ within the tolerance of E's feet, moving at nearly E's vertical speed."
   (let ((id (entity-ref e #:id #f)))
     (and id (equal? id (entity-ref o #:id #f)))))
 
-(define (on-solid e tm others itself?)
-  "#:on-ground? from the tiles and from the entities OTHERS, leaving out
-those for which (ITSELF? index entity) holds and those sharing E's #:id."
+(define (holders entities)
+  "The entities that can hold another up (solid, not ghosts), each as
+(index . entity) with its index in ENTITIES."
+  (filter (lambda (slot) (and (flag (cdr slot) #:solid?)
+                              (not (skips? (cdr slot) 'entity-collisions))))
+          (map cons (iota (length entities)) entities)))
+
+(define (on-solid e tm holders itself?)
+  "#:on-ground? from the tiles and from HOLDERS ((index . entity) …),
+leaving out those for which (ITSELF? index entity) holds and those sharing
+E's #:id."
   (if (or (not (flag e #:gravity?)) (skips? e 'on-solid))
       e
       (let ((ground (or (tile-supports? e tm)
-                        (any (lambda (o i)
-                               (and (not (itself? i o)) (not (same-id? e o))
-                                    (entity-supports? e o)))
-                             others (iota (length others))))))
+                        (any (lambda (slot)
+                               (let ((i (car slot)) (o (cdr slot)))
+                                 (and (not (itself? i o)) (not (same-id? e o))
+                                      (entity-supports? e o))))
+                             holders))))
         (put e #:on-ground? (flag e #:on-ground?) ground))))
 
 (define-step (detect-on-solid e scene dt)
@@ -301,7 +310,7 @@ those for which (ITSELF? index entity) holds and those sharing E's #:id."
 itself: not eq?, no equal #:id)."
   (let ((others (if scene (scene-entities scene) '())))
     (check-all 'detect-on-solid others)
-    (on-solid e (scene-tiles scene) others (lambda (i o) (eq? o e)))))
+    (on-solid e (scene-tiles scene) (holders others) (lambda (i o) (eq? o e)))))
 
 ;;; ---------------------------------------------------------------- bulk steps (§4)
 ;;; A bulk step works on every entity's numbers and then writes each
@@ -559,6 +568,7 @@ per-entity steps, all reading the scene as it was at the start of the
 frame; then push-apart; then groups."
   (let* ((start (scene-entities scene))
          (tm (scene-tilemap scene))
+         (supporters (holders start))   ; read once: they are the frame-start scene
          (tweened (map-keeping (lambda (e) (step-tweens e scene dt)) start))
          (moved
           (same-or
@@ -572,7 +582,7 @@ frame; then push-apart; then groups."
                               (lambda (e) (apply-velocity-y e scene dt))
                               (lambda (e) (resolve-tile-collisions-y e scene dt))
                               ;; not itself: its own slot of the frame-start list
-                              (lambda (e) (on-solid e tm start (lambda (i o) (= i slot)))))))
+                              (lambda (e) (on-solid e tm supporters (lambda (i o) (= i slot)))))))
                 tweened (iota (length tweened)))
            tweened))
          (result (same-or (map keep-if-unchanged

@@ -1,0 +1,37 @@
+// The benchmark scenes: plain data every path builds its own world from, so
+// each path starts from the same bodies, tiles and velocities.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+struct SceneBody {
+    int64_t x = 0, y = 0, w = 0, h = 0;  // px, exact integers
+    int64_t vx = 0, vy = 0;              // px/frame
+    bool gravity = false, solid = false, immovable = false, on_ground = false;
+    // The velocity the bounce update restores, with its sign flipped, on an
+    // axis a collision zeroed (0: that axis does not bounce).
+    int64_t rvx = 0, rvy = 0;
+};
+
+struct Scene {
+    std::string name;
+    int n = 0;  // the N asked for: the number of moving bodies
+    // Tiles: cols × rows cells of tile px, row-major, 1 = solid.
+    int cols = 0, rows = 0, tile = 16;
+    std::vector<uint8_t> solid;
+    std::string map_path;  // set when the tiles come from a Tiled map (load-tilemap)
+    std::vector<SceneBody> bodies;  // movers first, then immovable pillars
+    bool bounce = false;            // run the bounce update after every frame
+    bool bullets = false;           // Box2D: make movers bullet bodies
+    bool settle_box2d = false;      // Box2D: step until asleep before warm-up
+};
+
+const std::vector<std::string>& scene_names();
+bool is_scene(const std::string& name);
+// Builds scene `name` with n movers; deterministic for a given (name, n).
+Scene make_scene(const std::string& name, int n);
+
+}  // namespace bench
