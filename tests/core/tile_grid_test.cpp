@@ -197,4 +197,17 @@ TEST_CASE("TileGrid: a mask of the wrong length or a non-positive tile is reject
     CHECK_NOTHROW(TileGrid(0, 0, 16, 16, {}));
 }
 
+TEST_CASE("cells of exact coordinates far past int64 do not overflow") {
+    const auto r = ds::cells_of(ds::Num::integer(1e300), ds::Num::integer(16), 16);
+    CHECK(r.first > (1LL << 61));  // clamped: far outside any map
+    CHECK(ds::cell_of(ds::Num::integer(-1e300), 16) < -(1LL << 60));
+    // power-of-two tiles take the shift path: floors negatives like floor_div
+    CHECK(ds::cells_of(ds::Num::integer(-17), ds::Num::integer(2), 16).first == -2);
+    CHECK(ds::cells_of(ds::Num::integer(-17), ds::Num::integer(2), 16).last == -1);
+    CHECK(ds::cells_of(ds::Num::integer(-17), ds::Num::integer(1), 16).last == -2);
+    CHECK(ds::cell_of(ds::Num::integer(-16), 16) == -1);
+    CHECK(ds::cell_of(ds::Num::integer(-15), 16) == -1);
+    CHECK(ds::cells_of(ds::Num::integer(-17), ds::Num::integer(2), 12).first == -2);
+}
+
 }  // TEST_SUITE
