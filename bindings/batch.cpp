@@ -44,18 +44,21 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.before.clear();
     batch.has_tween.clear();
     batch.writes.clear();
+    batch.hit.clear();
     size_t i = 0;
     SCM p = entities;
     for (; scm_is_pair(p); p = SCM_CDR(p), ++i) {
         SCM e = SCM_CAR(p);
         reserve_cache(batch, i + 1);
         CachedEntity& c = batch.cached[i];
-        if (!scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.cache, i), e)) {
+        const bool hit = scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.cache, i), e);
+        if (!hit) {
             Decoded d;
             if (!decode_entity(e, d, f)) return false;
-            c = {d.body, watched_fields(d), scm_is_true(d.tween)};
+            c = {d.body, watched_fields(d), scm_is_true(d.tween), false};
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
         }
+        batch.hit.push_back(hit);
         batch.before.push_back(c.body);
         batch.has_tween.push_back(c.has_tween);
         batch.writes.push_back(FirstWrites{.watched = c.watched});
@@ -66,6 +69,30 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     }
     batch.bodies = batch.before;
     return true;
+}
+
+void plan_quiet(Batch& batch, const TileGrid* grid, CollisionMode mode) {
+    const bool same_inputs = grid == batch.frame_grid && mode == batch.frame_mode;
+    batch.frame_grid = grid;
+    batch.frame_mode = mode;
+    const bool supporters = std::any_of(batch.bodies.begin(), batch.bodies.end(), [](const Body& b) {
+        return b.solid && !b.skips(kSkipEntityCollisions);
+    });
+    batch.quiet.assign(batch.size(), 0);
+    if (!same_inputs) return;
+    for (size_t i = 0; i < batch.size(); ++i)
+        batch.quiet[i] = batch.hit[i] && batch.cached[i].settled && !batch.has_tween[i] &&
+                         !depends_on_others(batch.bodies[i], supporters);
+}
+
+void note_settled(Batch& batch) {
+    const bool supporters = std::any_of(batch.before.begin(), batch.before.end(), [](const Body& b) {
+        return b.solid && !b.skips(kSkipEntityCollisions);
+    });
+    for (size_t i = 0; i < batch.size(); ++i)
+        batch.cached[i].settled = !batch.has_tween[i] && batch.writes[i].count == 0 &&
+                                  changed_fields(batch.before[i], batch.bodies[i]) == 0 &&
+                                  !depends_on_others(batch.before[i], supporters);
 }
 
 SCM encode_batch(SCM entities, const Batch& batch) {

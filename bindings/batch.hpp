@@ -9,6 +9,7 @@
 #include "body.hpp"
 #include "failure.hpp"
 #include "frame.hpp"
+#include "tile_grid.hpp"
 
 namespace ds::guile {
 
@@ -18,6 +19,9 @@ struct CachedEntity {
     Body body;
     uint16_t watched = 0;
     bool has_tween = false;
+    // Came out of the last frame unchanged while depending on no other
+    // entity: under the same map and mode it will again.
+    bool settled = false;
 };
 
 struct Batch {
@@ -32,6 +36,11 @@ struct Batch {
     // protected while this Batch holds it, and their decodings.
     SCM cache = SCM_BOOL_F;
     std::vector<CachedEntity> cached;
+    std::vector<uint8_t> hit;    // by position: taken from the cache this time
+    std::vector<uint8_t> quiet;  // by position: the frame may leave it alone
+    // The map and mode of the last whole frame, which settled entities assume.
+    const TileGrid* frame_grid = nullptr;
+    CollisionMode frame_mode = CollisionMode::Swept;
 
     size_t size() const { return bodies.size(); }
 };
@@ -44,6 +53,12 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f);
 // the same objects, the spine after the last changed entity is shared, and
 // the list itself comes back when nothing changed.
 SCM encode_batch(SCM entities, const Batch& batch);
+
+// Marks the entities a whole frame can leave alone (settled, same object,
+// same map and mode, still depending on no other entity), and after the
+// frame records which entities settled. Both by position.
+void plan_quiet(Batch& batch, const TileGrid* grid, CollisionMode mode);
+void note_settled(Batch& batch);
 
 // A scratch Batch for the current native call. Nested calls (a Scheme
 // callback stepping another scene) get their own; the lease is returned by a

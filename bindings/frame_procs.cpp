@@ -68,12 +68,14 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
             t0 = Clock::now();
             if (!f && (!tweened || decode_batch(list, batch, f))) {
                 stats.decode.ms += ms_since(t0);
+                plan_quiet(batch, grid, opts.mode);
                 batch.frame.step_physics(batch.bodies, grid, opts,
                                          tweened ? std::span<const Body>(batch.frame_start)
                                                  : std::span<const Body>(),
-                                         batch.writes);
+                                         batch.writes, batch.quiet);
                 t0 = Clock::now();
                 result = encode_batch(list, batch);
+                note_settled(batch);
                 stats.encode.ms = ms_since(t0);
                 const StepStats tween_stats = stats.core.step[kStepTweens];
                 stats.core = batch.frame.stats();

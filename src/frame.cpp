@@ -78,12 +78,18 @@ const char* step_name(StepId id) {
     return kNames[id];
 }
 
+bool depends_on_others(const Body& b, bool supporters_exist) {
+    return (b.solid && !b.skips(kSkipEntityCollisions)) || b.group != 0 ||
+           (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
+}
+
 template <class MayWrite, class Step>
 void Frame::pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
-                 MayWrite&& may_write, Step&& step) {
+                 std::span<const uint8_t> quiet, MayWrite&& may_write, Step&& step) {
     const auto t0 = Clock::now();
     uint64_t ran = 0;
     for (size_t i = 0; i < bodies.size(); ++i) {
+        if (!quiet.empty() && quiet[i]) continue;
         Body& b = bodies[i];
         ran += logged(b, writes.empty() ? nullptr : &writes[i], may_write(b),
                       [&](Body& c) { return step(c, i); });
@@ -95,32 +101,32 @@ void Frame::pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> write
 }
 
 void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                        std::span<FirstWrites> writes) {
+                        std::span<FirstWrites> writes, std::span<const uint8_t> quiet) {
     // Step by step over all bodies rather than body by body: the same result
     // (each per-entity step reads only its own body and the frame-start
     // supporters), and each step's cost can be reported. The masks say what
     // a step can write given the body as it is: acceleration resets only a
     // non-zero ay, tile steps do nothing at zero speed.
     const CollisionMode mode = opts.mode;
-    pass(kStepAcceleration, bodies, writes,
+    pass(kStepAcceleration, bodies, writes, quiet,
          [](const Body& b) { return kFieldVy | unless_zero(b.ay, kFieldAy); },
          [](Body& b, size_t) { return apply_acceleration(b); });
-    pass(kStepGravity, bodies, writes, [](const Body&) { return kFieldVy; },
+    pass(kStepGravity, bodies, writes, quiet, [](const Body&) { return kFieldVy; },
          [](Body& b, size_t) { return apply_gravity(b); });
-    pass(kStepVelocityX, bodies, writes, [](const Body&) { return kFieldX; },
+    pass(kStepVelocityX, bodies, writes, quiet, [](const Body&) { return kFieldX; },
          [](Body& b, size_t) { return apply_velocity_x(b); });
-    pass(kStepTileX, bodies, writes, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
+    pass(kStepTileX, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
          [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode); });
-    pass(kStepVelocityY, bodies, writes, [](const Body&) { return kFieldY; },
+    pass(kStepVelocityY, bodies, writes, quiet, [](const Body&) { return kFieldY; },
          [](Body& b, size_t) { return apply_velocity_y(b); });
-    pass(kStepTileY, bodies, writes, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
+    pass(kStepTileY, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
          [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode); });
     // A handful of supporters are cheaper to scan than to index.
     const auto t0 = Clock::now();
     const bool indexed = supporters_.size() >= 32;
     if (indexed) support_index_.build(supporters_);
     stats_.step[kStepOnSolid].ms += ms_since(t0);
-    pass(kStepOnSolid, bodies, writes, [](const Body&) { return kFieldOnGround; },
+    pass(kStepOnSolid, bodies, writes, quiet, [](const Body&) { return kFieldOnGround; },
          [&](Body& b, size_t i) {
              return indexed ? detect_on_solid(b, supporters_, support_index_, support_slot_[i], grid)
                             : detect_on_solid(b, supporters_, support_slot_[i], grid);
@@ -141,7 +147,8 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
 }
 
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                         std::span<const Body> scene, std::span<FirstWrites> writes) {
+                         std::span<const Body> scene, std::span<FirstWrites> writes,
+                         std::span<const uint8_t> quiet) {
     // Ground detection reads only the supporters, copied out below before
     // any body moves: with no separate frame-start scene, the bodies as they
     // are now are that scene.
@@ -155,7 +162,7 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
         support_slot_[i] = std::ssize(supporters_);
         supporters_.push_back(scene[i]);
     }
-    step_bodies(bodies, grid, opts, writes);
+    step_bodies(bodies, grid, opts, writes, quiet);
     auto t0 = Clock::now();
     logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, resolve_entity_collisions);
     const auto solid = static_cast<uint64_t>(supporters_.size());

@@ -68,6 +68,11 @@ struct FrameStats {
     StepStats step[kStepCount];
 };
 
+// Whether a body's frame can depend on other bodies: it pushes or is pushed
+// (solid, not a ghost), follows a group, or — when any supporters exist —
+// looks for one under its feet.
+bool depends_on_others(const Body& b, bool supporters_exist);
+
 // What a frame did besides moving bodies.
 struct FrameReport {
     std::vector<UserWrite> user_writes;
@@ -90,16 +95,20 @@ public:
     // `scene` is the frame-start state ground detection reads (before the
     // tweens); empty means the bodies as they are now. With `writes` (one per
     // body), each step's first writes to watched fields are logged in order.
+    // Bodies marked in `quiet` are left as they are: the caller knows the
+    // frame cannot change them (unchanged last frame, under the same map and
+    // mode, depending on no other body).
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                      std::span<const Body> scene = {}, std::span<FirstWrites> writes = {});
+                      std::span<const Body> scene = {}, std::span<FirstWrites> writes = {},
+                      std::span<const uint8_t> quiet = {});
 
 private:
     void step_tweens(World& world, double dt);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                     std::span<FirstWrites> writes);
+                     std::span<FirstWrites> writes, std::span<const uint8_t> quiet);
     template <class MayWrite, class Step>
-    void pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes, MayWrite&& may_write,
-              Step&& step);
+    void pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
+              std::span<const uint8_t> quiet, MayWrite&& may_write, Step&& step);
     template <class Bulk>
     void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                      Bulk&& bulk);

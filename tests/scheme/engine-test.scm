@@ -236,12 +236,38 @@
     on-solid entity-collisions groups encode)
   (map car stats18))
 (test-equal "engine-stats: processed and skipped per step"
+  ;; the third box came out of frame 1 unchanged and depends on nobody: from
+  ;; then on the frame leaves it alone (velocity-y skips it too)
   '((decode 3 0) (tweens 0 3) (acceleration 1 2) (gravity 1 2) (velocity-x 2 1)
-    (tile-collisions-x 0 3) (velocity-y 3 0) (tile-collisions-y 0 3) (on-solid 1 2)
+    (tile-collisions-x 0 3) (velocity-y 2 1) (tile-collisions-y 0 3) (on-solid 1 2)
     (entity-collisions 2 1) (groups 0 3) (encode 3 0))
   (map (lambda (row) (list-head row 3)) stats18))
 (test-assert "engine-stats: times are real milliseconds ≥ 0"
   (every (lambda (row) (and (real? (cadddr row)) (>= (cadddr row) 0))) stats18))
+
+;;; ---------------------------------------------------------------- settled entities
+;; An entity that came out of a frame unchanged, depending on nobody, is left
+;; alone by the next frames — but only while the map, the mode and its
+;; independence hold.
+(define floor-map (grid-map 4 4 '((0 . 3) (1 . 3) (2 . 3) (3 . 3))))
+(define sitter '(#:id s #:x 0 #:y 32 #:width 16 #:height 16 #:gravity? #t #:vy 0 #:on-ground? #t))
+(define sat (step-scene (step-scene (make-scene entities: (list sitter) tilemap: floor-map) 16) 16))
+(test-eq "resting on the floor: the same object, frame after frame" sitter (car (scene-entities sat)))
+(test-equal "the map is taken away: it falls (y 33, vy 1)" '(33 1)
+  (let ((e (car (scene-entities (step-scene (update-scene sat tilemap: (grid-map 4 4 '())) 16)))))
+    (list (entity-ref e #:y) (entity-ref e #:vy))))
+;; Hovering (gravity skipped) in mid-air: settled with #:on-ground? #f. A
+;; solid platform appearing under its feet must still be noticed.
+(define hover '(#:id h #:x 0 #:y 0 #:width 8 #:height 8 #:gravity? #t #:skip-pipelines (gravity)
+                #:on-ground? #f))
+(define hovered (step-scene (step-scene (make-scene entities: (list hover)) 16) 16))
+(test-eq "hovering: unchanged" hover (car (scene-entities hovered)))
+(test-equal "a platform arrives under it: on-ground" #t
+  (entity-ref (car (scene-entities
+                    (step-scene (update-scene hovered entities: (list hover '(#:x 0 #:y 8 #:width 32 #:height 8
+                                                                              #:solid? #t #:immovable? #t)))
+                                16)))
+              #:on-ground?))
 
 ;;; ---------------------------------------------------------------- scripts
 ;; Under the test runner, the host's script is run-suite.scm with this file
