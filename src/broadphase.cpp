@@ -15,11 +15,12 @@ namespace {
 // it is checked against everyone (a floor under a crowd).
 constexpr int64_t kMaxSpan = 8;
 
-int64_t cell_index(double v, double cell) {
-    // Monotone in v, so overlapping intervals always share a cell; huge
-    // coordinates are clamped (they only make extra candidates).
+int64_t cell_index(double v, double inv_cell) {
+    // Monotone in v (a product with a positive constant rounds monotonely),
+    // so overlapping intervals always share a cell; huge coordinates are
+    // clamped (they only make extra candidates).
     constexpr double kLimit = 4.0e18;
-    return static_cast<int64_t>(std::clamp(std::floor(v / cell), -kLimit, kLimit));
+    return static_cast<int64_t>(std::clamp(std::floor(v * inv_cell), -kLimit, kLimit));
 }
 
 }  // namespace
@@ -32,8 +33,8 @@ PairSweep::CellRange PairSweep::cells(const Body& b) const {
     // The closed hull of each interval: for any widths (zero or negative too),
     // two boxes that overlap by the strict formula have intersecting hulls.
     const double xa = b.x.v, xb = b.x.v + b.w.v, ya = b.y.v, yb = b.y.v + b.h.v;
-    return {cell_index(std::min(xa, xb), cell_), cell_index(std::min(ya, yb), cell_),
-            cell_index(std::max(xa, xb), cell_), cell_index(std::max(ya, yb), cell_)};
+    return {cell_index(std::min(xa, xb), inv_cell_), cell_index(std::min(ya, yb), inv_cell_),
+            cell_index(std::max(xa, xb), inv_cell_), cell_index(std::max(ya, yb), inv_cell_)};
 }
 
 bool PairSweep::is_big(const CellRange& r) const {
@@ -89,7 +90,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
     for (size_t i : members)
         sizes_.push_back(std::max(std::fabs(bodies[i].w.v), std::fabs(bodies[i].h.v)));
     std::nth_element(sizes_.begin(), sizes_.begin() + n / 2, sizes_.end());
-    cell_ = std::max(2 * sizes_[n / 2], 1.0);
+    inv_cell_ = 1 / std::max(2 * sizes_[n / 2], 1.0);
 
     const size_t want = std::bit_ceil(static_cast<size_t>(2 * n));
     if (buckets_.size() != want) buckets_.resize(want);
@@ -110,9 +111,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
     }
     for (uint32_t a = 0; a < n; ++a) {
         current_ = a;
-        // Only later bodies are ever a's partners: take a out of the grid.
-        if (is_big_[a]) big_.erase(std::find(big_.begin(), big_.end(), a));
-        else remove(a, range_[a]);
+        // Earlier bodies stay in the grid: query() passes over them.
         Body& first = bodies[members[a]];
         heap_.clear();
         CellRange queried = cells(first);

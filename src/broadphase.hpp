@@ -32,7 +32,7 @@ private:
     // are big) and are not queued yet for the current body.
     void query(const CellRange& r, uint32_t after, std::span<const size_t> members, bool all);
 
-    double cell_ = 1;
+    double inv_cell_ = 1;  // 1 / cell size
     std::vector<std::vector<uint32_t>> buckets_;
     std::vector<uint32_t> big_;        // members spanning too many cells: everyone's candidates
     std::vector<uint8_t> is_big_;      // by member

@@ -12,25 +12,26 @@ namespace {
 
 constexpr int64_t kMaxSpan = 8;  // columns; wider supporters go to the big list
 
-int64_t cell_index(double v, double cell) {
-    constexpr double kLimit = 4.0e18;  // huge coordinates clamp: extra candidates only
-    return static_cast<int64_t>(std::clamp(std::floor(v / cell), -kLimit, kLimit));
+int64_t cell_index(double v, double inv_cell) {
+    // Monotone in v; huge coordinates clamp: extra candidates only.
+    constexpr double kLimit = 4.0e18;
+    return static_cast<int64_t>(std::clamp(std::floor(v * inv_cell), -kLimit, kLimit));
 }
 
 }  // namespace
 
 SupportIndex::Cells SupportIndex::top_cells(const Body& o) const {
     const double xa = o.x.v, xb = o.x.v + o.w.v;
-    const int64_t row = cell_index(o.y.v, ch_);
-    return {cell_index(std::min(xa, xb), cw_), row, cell_index(std::max(xa, xb), cw_), row};
+    const int64_t row = cell_index(o.y.v, inv_ch_);
+    return {cell_index(std::min(xa, xb), inv_cw_), row, cell_index(std::max(xa, xb), inv_cw_), row};
 }
 
 SupportIndex::Cells SupportIndex::query_cells(const Body& b) const {
     // Supporters' tops within the tolerance of the feet, one cell of slack
     // each way against rounding.
     const double xa = b.x.v, xb = b.x.v + b.w.v, feet = b.y.v + b.h.v;
-    return {cell_index(std::min(xa, xb), cw_), cell_index(feet - kOnSolidTolerance, ch_) - 1,
-            cell_index(std::max(xa, xb), cw_), cell_index(feet + kOnSolidTolerance, ch_) + 1};
+    return {cell_index(std::min(xa, xb), inv_cw_), cell_index(feet - kOnSolidTolerance, inv_ch_) - 1,
+            cell_index(std::max(xa, xb), inv_cw_), cell_index(feet + kOnSolidTolerance, inv_ch_) + 1};
 }
 
 size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {
@@ -45,7 +46,7 @@ void SupportIndex::build(std::span<const Body> bodies) {
     for (const Body& o : bodies) widths_.push_back(std::fabs(o.w.v));
     if (n > 0) {
         std::nth_element(widths_.begin(), widths_.begin() + n / 2, widths_.end());
-        cw_ = std::max(2 * widths_[n / 2], 1.0);
+        inv_cw_ = 1 / std::max(2 * widths_[n / 2], 1.0);
     }
     const size_t buckets = std::bit_ceil(static_cast<size_t>(std::max<uint32_t>(2 * n, 2)));
     start_.assign(buckets + 1, 0);

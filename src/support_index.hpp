@@ -53,7 +53,7 @@ private:
         return true;
     }
 
-    double cw_ = 1, ch_ = 16;
+    double inv_cw_ = 1, inv_ch_ = 1.0 / 16;  // 1 / cell width and height
     std::vector<uint32_t> start_;  // bucket h holds items_[start_[h] .. start_[h+1])
     std::vector<uint32_t> items_;
     std::vector<uint32_t> cursor_;  // build scratch
