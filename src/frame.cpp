@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 
 #include "contacts.hpp"
 #include "groups.hpp"
@@ -174,19 +175,79 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
     stats_.step[kStepGroups] = {grouped, bodies.size() - grouped, ms_since(t0)};
 }
 
+namespace {
+
+bool any_supporter(std::span<const Body> bodies) {
+    return std::any_of(bodies.begin(), bodies.end(),
+                       [](const Body& b) { return b.solid && !b.skips(kSkipEntityCollisions); });
+}
+
+}  // namespace
+
+void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
+    const size_t n = world.bodies.size();
+    const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.mode == last_mode_;
+    const bool supporters = any_supporter(world.bodies);
+    quiet_.assign(n, 0);
+    untouched_.assign(n, 0);
+    tweened_.assign(n, 0);
+    for (const TweenTrack& t : world.tweens)
+        if (t.body < n) tweened_[t.body] = 1;
+    if (!same_inputs) return;
+    for (size_t i = 0; i < n; ++i) {
+        // As the last frame left it (the caller did not change it since).
+        untouched_[i] = std::memcmp(&world.bodies[i], &last_out_[i], sizeof(Body)) == 0;
+        quiet_[i] = untouched_[i] && settled_[i] && !tweened_[i] &&
+                    !depends_on_others(world.bodies[i], supporters);
+    }
+}
+
+void Frame::note_settled(const World& world, const FrameOptions& opts) {
+    const size_t n = world.bodies.size();
+    const bool supporters = any_supporter(world.bodies);
+    last_grid_ = world.grid;
+    last_mode_ = opts.mode;
+    last_out_.resize(n);
+    settled_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        if (quiet_[i]) continue;  // still settled, still as it was
+        // Settled: it entered this frame as the last one left it, and leaves
+        // it the same, depending on nobody.
+        settled_[i] = untouched_[i] && !tweened_[i] &&
+                      changed_fields(last_out_[i], world.bodies[i]) == 0 &&
+                      !depends_on_others(world.bodies[i], supporters);
+        last_out_[i] = world.bodies[i];
+    }
+}
+
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
     report_.user_writes.clear();
     report_.completed.clear();
+    // Bodies that came out of the last frame unchanged, depending on no other
+    // body, and that nobody touched since, are left alone. Tracking that
+    // costs a copy of every body; it is done only while a fair share of the
+    // bodies is at rest (a falling crowd would pay for nothing).
+    const bool track = worth_tracking_;
+    if (track) {
+        plan_quiet(world, opts);
+    } else {
+        quiet_.assign(world.bodies.size(), 0);
+        last_out_.clear();  // no longer known: nothing is settled
+    }
     // Every per-entity step sees the scene as it was before the tweens ran
     // (without tweens, that is the bodies as they are: no copy needed).
     if (world.tweens.empty()) {
         stats_.step[kStepTweens] = {0, world.bodies.size(), 0};
-        step_physics(world.bodies, world.grid, opts);
-        return report_;
+        step_physics(world.bodies, world.grid, opts, {}, {}, quiet_);
+    } else {
+        start_.assign(world.bodies.begin(), world.bodies.end());
+        step_tweens(world, opts.dt);
+        step_physics(world.bodies, world.grid, opts, start_, {}, quiet_);
     }
-    start_.assign(world.bodies.begin(), world.bodies.end());
-    step_tweens(world, opts.dt);
-    step_physics(world.bodies, world.grid, opts, start_);
+    if (track) note_settled(world, opts);
+    const auto resting = std::count_if(world.bodies.begin(), world.bodies.end(),
+                                       [](const Body& b) { return b.vx.v == 0 && b.vy.v == 0; });
+    worth_tracking_ = static_cast<size_t>(resting) * 8 >= world.bodies.size();
     return report_;
 }
 

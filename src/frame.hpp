@@ -104,6 +104,8 @@ public:
 
 private:
     void step_tweens(World& world, double dt);
+    void plan_quiet(const World& world, const FrameOptions& opts);
+    void note_settled(const World& world, const FrameOptions& opts);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      std::span<FirstWrites> writes, std::span<const uint8_t> quiet);
     template <class MayWrite, class Step>
@@ -123,6 +125,14 @@ private:
     SupportIndex support_index_;     // over supporters_, when there are many
     FrameReport report_;
     FrameStats stats_;
+    // Settled bodies (World path): each body's state after the last frame,
+    // whether that frame left it unchanged while it depended on nobody, and
+    // the map and mode it ran under; this frame's plan.
+    std::vector<Body> last_out_;
+    std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
+    const TileGrid* last_grid_ = nullptr;
+    CollisionMode last_mode_ = CollisionMode::Swept;
+    bool worth_tracking_ = true;
 };
 
 }  // namespace ds

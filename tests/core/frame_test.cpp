@@ -608,3 +608,38 @@ TEST_CASE("an empty world") {
 }
 
 }  // TEST_SUITE
+
+TEST_SUITE("frame") {
+
+TEST_CASE("settled bodies are left alone, until something they depend on changes") {
+    const auto g = grid({"....", "....", "####"});
+    World w;
+    w.grid = &g;
+    Body b = box(16, 16, 16, 16);
+    b.gravity = true;
+    b.on_ground = true;
+    w.bodies = {b, b};
+    Frame f;
+    for (int k = 0; k < 3; ++k) f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepGravity].processed == 0);  // both settled
+    CHECK(same_body(w.bodies[0], b));
+    // The caller moves one: it is stepped again (and falls back onto the floor).
+    w.bodies[1].y = I(10);
+    f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepGravity].processed == 1);
+    CHECK_EXACT(w.bodies[1].y, 11);
+    CHECK_EXACT(w.bodies[1].vy, 1);
+    // A solid body appears: everyone might stand on it, so nobody is quiet.
+    w.bodies.push_back(solid_box(100, 0, 8, 8));
+    f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepGravity].processed == 2);
+    // The map goes: the settled body falls.
+    w.bodies.pop_back();
+    for (int k = 0; k < 8; ++k) f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepGravity].processed == 0);
+    w.grid = nullptr;
+    f.step(w, opts());
+    CHECK_EXACT(w.bodies[0].y, 17);
+}
+
+}  // TEST_SUITE
