@@ -75,32 +75,28 @@ void plan_quiet(Batch& batch, const TileGrid* grid, CollisionMode mode) {
     const bool same_inputs = grid == batch.frame_grid && mode == batch.frame_mode;
     batch.frame_grid = grid;
     batch.frame_mode = mode;
-    const bool supporters = std::any_of(batch.bodies.begin(), batch.bodies.end(), [](const Body& b) {
-        return b.solid && !b.skips(kSkipEntityCollisions);
-    });
+    batch.colliders = any_collider(batch.bodies);
     batch.quiet.assign(batch.size(), 0);
     if (!same_inputs) return;
     for (size_t i = 0; i < batch.size(); ++i)
         batch.quiet[i] = batch.hit[i] && batch.cached[i].settled && !batch.has_tween[i] &&
-                         !depends_on_others(batch.bodies[i], supporters);
+                         !depends_on_others(batch.bodies[i], batch.colliders);
 }
 
 void note_settled(Batch& batch) {
-    const bool supporters = std::any_of(batch.before.begin(), batch.before.end(), [](const Body& b) {
-        return b.solid && !b.skips(kSkipEntityCollisions);
-    });
     for (size_t i = 0; i < batch.size(); ++i)
-        batch.cached[i].settled = !batch.has_tween[i] && batch.writes[i].count == 0 &&
-                                  changed_fields(batch.before[i], batch.bodies[i]) == 0 &&
-                                  !depends_on_others(batch.before[i], supporters);
+        batch.cached[i].settled = !batch.has_tween[i] && !batch.changed[i] &&
+                                  !depends_on_others(batch.before[i], batch.colliders);
 }
 
-SCM encode_batch(SCM entities, const Batch& batch) {
+SCM encode_batch(SCM entities, Batch& batch) {
     // Find the last entity that changed: the spine is copied up to it.
     size_t last = 0;
-    for (size_t i = 0; i < batch.size(); ++i)
-        if (changed_fields(batch.before[i], batch.bodies[i]) != 0 || batch.writes[i].count != 0)
-            last = i + 1;
+    batch.changed.resize(batch.size());
+    for (size_t i = 0; i < batch.size(); ++i) {
+        batch.changed[i] = changed_fields(batch.before[i], batch.bodies[i]) != 0 || batch.writes[i].count != 0;
+        if (batch.changed[i]) last = i + 1;
+    }
     if (last == 0) return entities;
     SCM head = SCM_EOL, tail = SCM_BOOL_F, p = entities;
     const Conser cons;

@@ -38,6 +38,8 @@ struct Batch {
     std::vector<CachedEntity> cached;
     std::vector<uint8_t> hit;    // by position: taken from the cache this time
     std::vector<uint8_t> quiet;  // by position: the frame may leave it alone
+    std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
+    bool colliders = false;        // the frame has bodies that collide
     // The map and mode of the last whole frame, which settled entities assume.
     const TileGrid* frame_grid = nullptr;
     CollisionMode frame_mode = CollisionMode::Swept;
@@ -52,11 +54,12 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f);
 // The entity list after the steps: entities whose bodies did not change are
 // the same objects, the spine after the last changed entity is shared, and
 // the list itself comes back when nothing changed.
-SCM encode_batch(SCM entities, const Batch& batch);
+// Also records which entities changed (Batch::changed).
+SCM encode_batch(SCM entities, Batch& batch);
 
 // Marks the entities a whole frame can leave alone (settled, same object,
 // same map and mode, still depending on no other entity), and after the
-// frame records which entities settled. Both by position.
+// frame (after encode_batch) records which entities settled. Both by position.
 void plan_quiet(Batch& batch, const TileGrid* grid, CollisionMode mode);
 void note_settled(Batch& batch);
 

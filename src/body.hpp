@@ -58,6 +58,8 @@ struct Body {
     int64_t group = 0;
 
     bool skips(uint16_t bit) const { return (skip & bit) != 0; }
+    // Solid and not a ghost: takes part in push-apart and can hold others up.
+    bool collides() const { return solid && !skips(kSkipEntityCollisions); }
 };
 
 // Which Fields differ between two states of one body (value or exactness).

@@ -67,8 +67,7 @@ bool aabb_overlap(const Body& a, const Body& b) {
 }
 
 bool collision_eligible(const Body& a, const Body& b) {
-    return a.solid && b.solid && !a.skips(kSkipEntityCollisions) &&
-           !b.skips(kSkipEntityCollisions) && aabb_overlap(a, b);
+    return a.collides() && b.collides() && aabb_overlap(a, b);
 }
 
 void resolve_pair(Body& a, Body& b) {
@@ -111,7 +110,7 @@ void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method) {
     thread_local PairSweep sweep;
     members.clear();
     for (size_t i = 0; i < bodies.size(); ++i)
-        if (bodies[i].solid && !bodies[i].skips(kSkipEntityCollisions)) members.push_back(i);
+        if (bodies[i].collides()) members.push_back(i);
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kSweepFrom);

@@ -80,7 +80,7 @@ const char* step_name(StepId id) {
 }
 
 bool depends_on_others(const Body& b, bool supporters_exist) {
-    return (b.solid && !b.skips(kSkipEntityCollisions)) || b.group != 0 ||
+    return b.collides() || b.group != 0 ||
            (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
 }
 
@@ -159,7 +159,7 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
     supporters_.clear();
     support_slot_.assign(bodies.size(), -1);
     for (size_t i = 0; i < scene.size(); ++i) {
-        if (!scene[i].solid || scene[i].skips(kSkipEntityCollisions)) continue;
+        if (!scene[i].collides()) continue;
         support_slot_[i] = std::ssize(supporters_);
         supporters_.push_back(scene[i]);
     }
@@ -175,19 +175,14 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
     stats_.step[kStepGroups] = {grouped, bodies.size() - grouped, ms_since(t0)};
 }
 
-namespace {
-
-bool any_supporter(std::span<const Body> bodies) {
-    return std::any_of(bodies.begin(), bodies.end(),
-                       [](const Body& b) { return b.solid && !b.skips(kSkipEntityCollisions); });
+bool any_collider(std::span<const Body> bodies) {
+    return std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.collides(); });
 }
-
-}  // namespace
 
 void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
     const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.mode == last_mode_;
-    const bool supporters = any_supporter(world.bodies);
+    colliders_ = any_collider(world.bodies);
     quiet_.assign(n, 0);
     untouched_.assign(n, 0);
     tweened_.assign(n, 0);
@@ -198,13 +193,12 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
         // As the last frame left it (the caller did not change it since).
         untouched_[i] = std::memcmp(&world.bodies[i], &last_out_[i], sizeof(Body)) == 0;
         quiet_[i] = untouched_[i] && settled_[i] && !tweened_[i] &&
-                    !depends_on_others(world.bodies[i], supporters);
+                    !depends_on_others(world.bodies[i], colliders_);
     }
 }
 
 void Frame::note_settled(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
-    const bool supporters = any_supporter(world.bodies);
     last_grid_ = world.grid;
     last_mode_ = opts.mode;
     last_out_.resize(n);
@@ -215,7 +209,7 @@ void Frame::note_settled(const World& world, const FrameOptions& opts) {
         // it the same, depending on nobody.
         settled_[i] = untouched_[i] && !tweened_[i] &&
                       changed_fields(last_out_[i], world.bodies[i]) == 0 &&
-                      !depends_on_others(world.bodies[i], supporters);
+                      !depends_on_others(world.bodies[i], colliders_);
         last_out_[i] = world.bodies[i];
     }
 }

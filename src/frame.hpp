@@ -72,6 +72,9 @@ struct FrameStats {
 // (solid, not a ghost), follows a group, or — when any supporters exist —
 // looks for one under its feet.
 bool depends_on_others(const Body& b, bool supporters_exist);
+// Whether any body collides (Body::collides): then ground detection has
+// supporters to look for.
+bool any_collider(std::span<const Body> bodies);
 
 // What a frame did besides moving bodies.
 struct FrameReport {
@@ -133,6 +136,7 @@ private:
     const TileGrid* last_grid_ = nullptr;
     CollisionMode last_mode_ = CollisionMode::Swept;
     bool worth_tracking_ = true;
+    bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
 };
 
 }  // namespace ds

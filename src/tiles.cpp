@@ -82,7 +82,7 @@ bool tile_supports(const Body& b, const TileGrid& grid) {
 }
 
 bool entity_supports(const Body& b, const Body& o) {
-    if (!o.solid || o.skips(kSkipEntityCollisions)) return false;
+    if (!o.collides()) return false;
     if (!(b.x.v < o.x.v + o.w.v && o.x.v < b.x.v + b.w.v)) return false;
     return std::fabs((b.y.v + b.h.v) - o.y.v) <= kOnSolidTolerance &&
            std::fabs(b.vy.v - o.vy.v) <= kOnSolidTolerance;
