@@ -1,12 +1,12 @@
 // One whole engine pass over an entity list in one native call.
 #include <algorithm>
-#include <chrono>
 
 #include "args.hpp"
 #include "batch.hpp"
 #include "keys.hpp"
 #include "registry.hpp"
 #include "scm_number.hpp"
+#include "stopwatch.hpp"
 #include "tilemap_type.hpp"
 #include "tween_step.hpp"
 
@@ -39,11 +39,6 @@ struct LastFrame {
     size_t entities = 0;
 };
 thread_local LastFrame last_frame;
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
     Failure f{.proc = "step-scene"};

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 
+#include "cell_hash.hpp"
 #include "contacts.hpp"
 
 namespace ds {
@@ -14,14 +15,6 @@ namespace {
 // A box spanning more cells than this on an axis is not put in the grid:
 // it is checked against everyone (a floor under a crowd).
 constexpr int64_t kMaxSpan = 8;
-
-int64_t cell_index(double v, double inv_cell) {
-    // Monotone in v (a product with a positive constant rounds monotonely),
-    // so overlapping intervals always share a cell; huge coordinates are
-    // clamped (they only make extra candidates).
-    constexpr double kLimit = 4.0e18;
-    return static_cast<int64_t>(std::clamp(std::floor(v * inv_cell), -kLimit, kLimit));
-}
 
 }  // namespace
 
@@ -42,10 +35,7 @@ bool PairSweep::is_big(const CellRange& r) const {
 }
 
 size_t PairSweep::bucket(int64_t cx, int64_t cy) const {
-    // Distinct cells may share a bucket: that only adds candidates.
-    const uint64_t h = static_cast<uint64_t>(cx) * 0x9E3779B97F4A7C15ull ^
-                       static_cast<uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full;
-    return static_cast<size_t>((h ^ (h >> 29)) & (buckets_.size() - 1));
+    return cell_bucket(cx, cy, buckets_.size() - 1);
 }
 
 void PairSweep::insert(uint32_t m, const CellRange& r) {

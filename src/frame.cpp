@@ -1,12 +1,12 @@
 #include "frame.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 
 #include "contacts.hpp"
 #include "groups.hpp"
 #include "steps.hpp"
+#include "stopwatch.hpp"
 
 namespace ds {
 
@@ -26,7 +26,7 @@ Num* body_field(Body& b, uint32_t key) {
 }
 
 void Frame::step_tweens(World& world, double dt) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     const size_t tracks = world.tweens.size();
     auto done = [&](TweenTrack& track) {
         Body& b = world.bodies[track.body];
@@ -44,9 +44,7 @@ void Frame::step_tweens(World& world, double dt) {
         return phase.finished;
     };
     std::erase_if(world.tweens, done);
-    stats_.step[kStepTweens] = {
-        tracks, world.bodies.size() - tracks,
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()};
+    stats_.step[kStepTweens] = {tracks, world.bodies.size() - tracks, ms_since(t0)};
 }
 
 namespace {
@@ -60,12 +58,6 @@ bool logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
     const bool ran = step(b);
     w->note(changed_fields(before, b) & may_write);
     return ran;
-}
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
 uint32_t unless_zero(Num n, uint32_t fields) { return n.v != 0 ? fields : 0u; }

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 
+#include "cell_hash.hpp"
 #include "steps.hpp"
 
 namespace ds {
@@ -11,12 +12,6 @@ namespace ds {
 namespace {
 
 constexpr int64_t kMaxSpan = 8;  // columns; wider supporters go to the big list
-
-int64_t cell_index(double v, double inv_cell) {
-    // Monotone in v; huge coordinates clamp: extra candidates only.
-    constexpr double kLimit = 4.0e18;
-    return static_cast<int64_t>(std::clamp(std::floor(v * inv_cell), -kLimit, kLimit));
-}
 
 }  // namespace
 
@@ -35,9 +30,7 @@ SupportIndex::Cells SupportIndex::query_cells(const Body& b) const {
 }
 
 size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {
-    const uint64_t h = static_cast<uint64_t>(cx) * 0x9E3779B97F4A7C15ull ^
-                       static_cast<uint64_t>(cy) * 0xC2B2AE3D27D4EB4Full;
-    return static_cast<size_t>((h ^ (h >> 29)) & mask_);
+    return cell_bucket(cx, cy, mask_);
 }
 
 void SupportIndex::build(std::span<const Body> bodies) {
