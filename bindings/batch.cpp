@@ -89,21 +89,47 @@ void note_settled(Batch& batch) {
                                   !depends_on_others(batch.before[i], batch.colliders);
 }
 
+namespace {
+
+// What decoding the entity just encoded at position i would give, so the
+// next frame, handed that entity back, need not decode it. Every edited field
+// now holds a fixnum, bignum or flonum, so it is present and no longer lossy;
+// exact zeros are +0.0, as decoding makes them. Tweened entities are left to
+// be decoded again: their #:tween changes outside the body.
+void remember(Batch& batch, size_t i, SCM entity) {
+    if (batch.has_tween[i]) return;
+    CachedEntity& c = batch.cached[i];
+    Body b = batch.bodies[i];
+    for (Num* n : {&b.x, &b.y, &b.w, &b.h, &b.vx, &b.vy, &b.ay, &b.local_x, &b.local_y})
+        if (n->exact && n->v == 0.0) n->v = 0.0;
+    const uint32_t edited = batch.fields[i] | batch.writes[i].written();
+    c.body = b;
+    c.watched = static_cast<uint16_t>(c.watched & ~edited);
+    SCM_SIMPLE_VECTOR_SET(batch.cache, i, entity);
+}
+
+}  // namespace
+
 SCM encode_batch(SCM entities, Batch& batch) {
     // Find the last entity that changed: the spine is copied up to it.
     size_t last = 0;
     batch.changed.resize(batch.size());
+    batch.fields.resize(batch.size());
     for (size_t i = 0; i < batch.size(); ++i) {
-        batch.changed[i] = changed_fields(batch.before[i], batch.bodies[i]) != 0 || batch.writes[i].count != 0;
+        batch.fields[i] = changed_fields(batch.before[i], batch.bodies[i]);
+        batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
         if (batch.changed[i]) last = i + 1;
     }
     if (last == 0) return entities;
     SCM head = SCM_EOL, tail = SCM_BOOL_F, p = entities;
     const Conser cons;
     for (size_t i = 0; i < last; ++i, p = SCM_CDR(p)) {
-        Edit edits[16];
-        SCM plist = SCM_CAR(p);
-        SCM entity = rewrite_plist(plist, edits, field_edits(batch.before[i], batch.bodies[i], edits, &batch.writes[i]));
+        SCM plist = SCM_CAR(p), entity = plist;
+        if (batch.changed[i]) {
+            Edit edits[16];
+            entity = rewrite_plist(plist, edits, field_edits(batch.fields[i], batch.bodies[i], edits, &batch.writes[i]));
+            remember(batch, i, entity);
+        }
         SCM cell = cons(entity, SCM_EOL);
         if (scm_is_false(tail)) head = cell;
         else scm_set_cdr_x(tail, cell);

@@ -39,6 +39,7 @@ struct Batch {
     std::vector<uint8_t> hit;    // by position: taken from the cache this time
     std::vector<uint8_t> quiet;  // by position: the frame may leave it alone
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
+    std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
     // The map and mode of the last whole frame, which settled entities assume.
     const TileGrid* frame_grid = nullptr;

@@ -29,7 +29,7 @@ SCM step_entity(const char* proc, SCM entity, Step step) {
             const Body before = d.body;
             step(d.body);
             Edit edits[16];
-            result = rewrite_plist(entity, edits, field_edits(before, d.body, edits));
+            result = rewrite_plist(entity, edits, field_edits(changed_fields(before, d.body), d.body, edits));
         }
     }
     if (f) raise(f);

@@ -129,7 +129,8 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
     // Pass 1: where is each edited key, and how far must we copy?
     uint64_t found = 0;  // bit i: edits[i].key occurs
     size_t last = 0, index = 0;
-    for (SCM p = plist; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p)), ++index)
+    const uint64_t all = count == 64 ? ~0ull : (1ull << count) - 1;
+    for (SCM p = plist; scm_is_pair(p) && found != all; p = SCM_CDR(SCM_CDR(p)), ++index)
         for (size_t i = 0; i < count; ++i)
             if (!((found >> i) & 1u) && scm_is_eq(SCM_CAR(p), edits[i].key)) {
                 found |= 1ull << i;
@@ -193,8 +194,7 @@ uint16_t watched_fields(const Decoded& d) {
     return absent | d.lossy;
 }
 
-size_t field_edits(const Body& before, const Body& after, Edit* out, const FirstWrites* writes) {
-    uint32_t changed = changed_fields(before, after);
+size_t field_edits(uint32_t changed, const Body& after, Edit* out, const FirstWrites* writes) {
     size_t n = 0;
     // Watched fields a step wrote are written whatever their final value: an
     // absent key goes last, in the order written (where the composition

@@ -47,10 +47,11 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count);
 // even if the frame restores the value read).
 uint16_t watched_fields(const Decoded& d);
 
-// Collects the edits for the fields that differ between before and after,
-// plus (with `writes`) every absent field a step wrote, appended in the order
-// written. Returns how many were written to out (room for 16 is enough).
-size_t field_edits(const Body& before, const Body& after, Edit* out,
+// Collects the edits for the fields in `changed` (changed_fields of the
+// body before and after), plus (with `writes`) every absent field a step
+// wrote, appended in the order written; values are taken from `after`.
+// Returns how many were written to out (room for 16 is enough).
+size_t field_edits(uint32_t changed, const Body& after, Edit* out,
                    const FirstWrites* writes = nullptr);
 
 // The value of the first occurrence of key in plist, or fallback. No checks:
