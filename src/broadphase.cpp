@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
 #include <cmath>
 #include <functional>
 
@@ -35,7 +36,42 @@ bool PairSweep::is_big(const CellRange& r) const {
 }
 
 size_t PairSweep::bucket(int64_t cx, int64_t cy) const {
+    const uint64_t dx = static_cast<uint64_t>(cx - gx0_), dy = static_cast<uint64_t>(cy - gy0_);
+    if (dx < static_cast<uint64_t>(gw_) && dy < static_cast<uint64_t>(gh_))
+        return static_cast<size_t>(dy * static_cast<uint64_t>(gw_) + dx);
     return cell_bucket(cx, cy, buckets_.size() - 1);
+}
+
+void PairSweep::file_members(std::span<const Body> bodies, std::span<const size_t> members) {
+    const auto n = static_cast<uint32_t>(members.size());
+    int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+    for (uint32_t m = 0; m < n; ++m) {
+        const CellRange r = cells(bodies[members[m]]);
+        range_[m] = r;
+        is_big_[m] = is_big(r);
+        if (is_big_[m]) continue;
+        x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
+        x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
+    }
+    // A hull of at most 4n cells is laid out densely; a sparser one (bodies
+    // scattered over a big world) is hashed like the cells outside it.
+    size_t want = std::bit_ceil(static_cast<size_t>(2 * n));
+    gw_ = gh_ = 0;
+    if (x0 <= x1) {
+        const double w = static_cast<double>(x1) - static_cast<double>(x0) + 1;
+        const double h = static_cast<double>(y1) - static_cast<double>(y0) + 1;
+        if (w * h <= 4.0 * n) {
+            gx0_ = x0, gy0_ = y0, gw_ = x1 - x0 + 1, gh_ = y1 - y0 + 1;
+            want = std::max(want, std::bit_ceil(static_cast<size_t>(gw_ * gh_)));
+        }
+    }
+    if (buckets_.size() != want) buckets_.resize(want);
+    for (auto& b : buckets_) b.clear();
+    big_.clear();
+    for (uint32_t m = 0; m < n; ++m) {
+        if (is_big_[m]) big_.push_back(m);
+        else insert(m, range_[m]);
+    }
 }
 
 void PairSweep::insert(uint32_t m, const CellRange& r) {
@@ -82,23 +118,10 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
     std::nth_element(sizes_.begin(), sizes_.begin() + n / 2, sizes_.end());
     inv_cell_ = 1 / std::max(2 * sizes_[n / 2], 1.0);
 
-    const size_t want = std::bit_ceil(static_cast<size_t>(2 * n));
-    if (buckets_.size() != want) buckets_.resize(want);
-    for (auto& b : buckets_) b.clear();
-    big_.clear();
     is_big_.assign(n, 0);
     range_.resize(n);
     queued_.assign(n, 0);
-    for (uint32_t m = 0; m < n; ++m) {
-        const CellRange r = cells(bodies[members[m]]);
-        range_[m] = r;
-        if (is_big(r)) {
-            is_big_[m] = 1;
-            big_.push_back(m);
-        } else {
-            insert(m, r);
-        }
-    }
+    file_members(bodies, members);
     for (uint32_t a = 0; a < n; ++a) {
         current_ = a;
         // Earlier bodies stay in the grid: query() passes over them.

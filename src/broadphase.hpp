@@ -32,7 +32,15 @@ private:
     // are big) and are not queued yet for the current body.
     void query(const CellRange& r, uint32_t after, std::span<const size_t> members, bool all);
 
+    // Fills the grid, choosing the bucket layout from where the members are.
+    void file_members(std::span<const Body> bodies, std::span<const size_t> members);
+
     double inv_cell_ = 1;  // 1 / cell size
+    // Cells in the members' starting hull map row by row onto the first
+    // buckets, so neighbouring cells are neighbours in memory; cells outside
+    // it (a body pushed out) are hashed. Any fixed map from cells to buckets
+    // is correct: sharing a bucket only adds candidates.
+    int64_t gx0_ = 0, gy0_ = 0, gw_ = 0, gh_ = 0;
     std::vector<std::vector<uint32_t>> buckets_;
     std::vector<uint32_t> big_;        // members spanning too many cells: everyone's candidates
     std::vector<uint8_t> is_big_;      // by member
