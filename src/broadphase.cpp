@@ -6,7 +6,6 @@
 #include <cmath>
 #include <functional>
 
-#include "cell_hash.hpp"
 #include "contacts.hpp"
 
 namespace ds {
@@ -35,12 +34,7 @@ bool PairSweep::is_big(const CellRange& r) const {
     return r.x1 - r.x0 >= kMaxSpan || r.y1 - r.y0 >= kMaxSpan;
 }
 
-size_t PairSweep::bucket(int64_t cx, int64_t cy) const {
-    const uint64_t dx = static_cast<uint64_t>(cx - gx0_), dy = static_cast<uint64_t>(cy - gy0_);
-    if (dx < static_cast<uint64_t>(gw_) && dy < static_cast<uint64_t>(gh_))
-        return static_cast<size_t>(dy * static_cast<uint64_t>(gw_) + dx);
-    return cell_bucket(cx, cy, buckets_.size() - 1);
-}
+size_t PairSweep::bucket(int64_t cx, int64_t cy) const { return layout_.bucket(cx, cy); }
 
 void PairSweep::file_members(std::span<const Body> bodies, std::span<const size_t> members) {
     const auto n = static_cast<uint32_t>(members.size());
@@ -53,18 +47,7 @@ void PairSweep::file_members(std::span<const Body> bodies, std::span<const size_
         x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
         x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
     }
-    // A hull of at most 4n cells is laid out densely; a sparser one (bodies
-    // scattered over a big world) is hashed like the cells outside it.
-    size_t want = std::bit_ceil(static_cast<size_t>(2 * n));
-    gw_ = gh_ = 0;
-    if (x0 <= x1) {
-        const double w = static_cast<double>(x1) - static_cast<double>(x0) + 1;
-        const double h = static_cast<double>(y1) - static_cast<double>(y0) + 1;
-        if (w * h <= 4.0 * n) {
-            gx0_ = x0, gy0_ = y0, gw_ = x1 - x0 + 1, gh_ = y1 - y0 + 1;
-            want = std::max(want, std::bit_ceil(static_cast<size_t>(gw_ * gh_)));
-        }
-    }
+    const size_t want = layout_.plan(x0, y0, x1, y1, n);
     if (buckets_.size() != want) buckets_.resize(want);
     for (auto& b : buckets_) b.clear();
     big_.clear();

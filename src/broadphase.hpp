@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "cell_hash.hpp"
 
 namespace ds {
 
@@ -36,11 +37,7 @@ private:
     void file_members(std::span<const Body> bodies, std::span<const size_t> members);
 
     double inv_cell_ = 1;  // 1 / cell size
-    // Cells in the members' starting hull map row by row onto the first
-    // buckets, so neighbouring cells are neighbours in memory; cells outside
-    // it (a body pushed out) are hashed. Any fixed map from cells to buckets
-    // is correct: sharing a bucket only adds candidates.
-    int64_t gx0_ = 0, gy0_ = 0, gw_ = 0, gh_ = 0;
+    CellLayout layout_;    // dense over the members' starting hull
     std::vector<std::vector<uint32_t>> buckets_;
     std::vector<uint32_t> big_;        // members spanning too many cells: everyone's candidates
     std::vector<uint8_t> is_big_;      // by member

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
 #include <cmath>
 
 #include "cell_hash.hpp"
@@ -30,7 +31,7 @@ SupportIndex::Cells SupportIndex::query_cells(const Body& b) const {
 }
 
 size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {
-    return cell_bucket(cx, cy, mask_);
+    return layout_.bucket(cx, cy);
 }
 
 void SupportIndex::build(std::span<const Body> bodies) {
@@ -41,9 +42,15 @@ void SupportIndex::build(std::span<const Body> bodies) {
         std::nth_element(widths_.begin(), widths_.begin() + n / 2, widths_.end());
         inv_cw_ = 1 / std::max(2 * widths_[n / 2], 1.0);
     }
-    const size_t buckets = std::bit_ceil(static_cast<size_t>(std::max<uint32_t>(2 * n, 2)));
+    int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+    for (const Body& o : bodies) {
+        const Cells r = top_cells(o);
+        if (r.x1 - r.x0 >= kMaxSpan) continue;
+        x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
+        x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
+    }
+    const size_t buckets = layout_.plan(x0, y0, x1, y1, n);
     start_.assign(buckets + 1, 0);
-    mask_ = buckets - 1;
     big_.clear();
     seen_.assign(n, 0);
     stamp_ = 0;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "cell_hash.hpp"
 
 namespace ds {
 
@@ -61,7 +62,7 @@ private:
     std::vector<uint32_t> seen_;
     std::vector<double> widths_;
     uint32_t stamp_ = 0;
-    size_t mask_ = 0;
+    CellLayout layout_;  // dense over the supporters' top edges
 };
 
 }  // namespace ds
