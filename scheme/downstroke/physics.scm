@@ -54,4 +54,4 @@ done in one native call."
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode))))
     (if (eq? stepped entities)
         scene
-        (update-scene scene #:entities stepped))))
+        (%scene-with-entities scene stepped))))

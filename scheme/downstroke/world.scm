@@ -4,6 +4,7 @@
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
             scene-map-entities scene-transform-entities
+            %scene-with-entities
             make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
 
 (define-record-type <camera>
@@ -41,6 +42,12 @@
   "A copy of SCENE with the given fields replaced."
   (check-entities "update-scene" entities)
   (%make-scene entities tilemap camera camera-target))
+
+(define (%scene-with-entities scene entities)
+  "SCENE with ENTITIES, a list the caller vouches for (no O(n) list? check):
+for the native steps, whose result is always a proper list."
+  (%make-scene entities (scene-tilemap scene) (scene-camera scene)
+               (scene-camera-target scene)))
 
 (define (map-keeping proc lst)
   ;; Like map, but returns LST itself when PROC returned every element as is.
