@@ -12,6 +12,20 @@ bool mode_from_scm(SCM mode, CollisionMode& out, Failure& f) {
     return !f;
 }
 
+bool substeps_from_scm(SCM k, int& out, Failure& f) {
+    if (SCM_UNBNDP(k)) {
+        out = 1;
+        return true;
+    }
+    if (!SCM_I_INUMP(k) || SCM_I_INUM(k) < 1 || SCM_I_INUM(k) > kMaxSubsteps) {
+        fail(f, "wrong-type-arg", scm_list_2(scm_from_int(kMaxSubsteps), k),
+             "substeps: expected an exact integer from 1 to ~S, got ~S");
+        return false;
+    }
+    out = static_cast<int>(SCM_I_INUM(k));
+    return true;
+}
+
 bool dt_from_scm(SCM dt, double& out, Failure& f) {
     Num d;
     if (num_from_scm(dt, d) != NumCheck::Ok) {

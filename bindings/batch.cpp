@@ -71,10 +71,10 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     return true;
 }
 
-void plan_quiet(Batch& batch, const TileGrid* grid, CollisionMode mode) {
-    const bool same_inputs = grid == batch.frame_grid && mode == batch.frame_mode;
+void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
+    const bool same_inputs = grid == batch.frame_grid && opts.same_physics(batch.frame_opts);
     batch.frame_grid = grid;
-    batch.frame_mode = mode;
+    batch.frame_opts = opts;
     batch.colliders = any_collider(batch.bodies);
     batch.quiet.assign(batch.size(), 0);
     if (!same_inputs) return;

@@ -41,9 +41,10 @@ struct Batch {
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
-    // The map and mode of the last whole frame, which settled entities assume.
+    // The map and options (mode, substeps, contacts) of the last whole frame,
+    // which settled entities assume.
     const TileGrid* frame_grid = nullptr;
-    CollisionMode frame_mode = CollisionMode::Swept;
+    FrameOptions frame_opts;
 
     size_t size() const { return bodies.size(); }
 };
@@ -61,7 +62,7 @@ SCM encode_batch(SCM entities, Batch& batch);
 // Marks the entities a whole frame can leave alone (settled, same object,
 // same map and mode, still depending on no other entity), and after the
 // frame (after encode_batch) records which entities settled. Both by position.
-void plan_quiet(Batch& batch, const TileGrid* grid, CollisionMode mode);
+void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
 void note_settled(Batch& batch);
 
 // A scratch Batch for the current native call. Nested calls (a Scheme

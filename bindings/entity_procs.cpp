@@ -37,18 +37,18 @@ SCM step_entity(const char* proc, SCM entity, Step step) {
 }
 
 SCM apply_acceleration_1(SCM e) { return step_entity("apply-acceleration", e, apply_acceleration); }
-SCM apply_gravity_1(SCM e) { return step_entity("apply-gravity", e, apply_gravity); }
-SCM apply_velocity_x_1(SCM e) { return step_entity("apply-velocity-x", e, apply_velocity_x); }
-SCM apply_velocity_y_1(SCM e) { return step_entity("apply-velocity-y", e, apply_velocity_y); }
+SCM apply_gravity_1(SCM e) { return step_entity("apply-gravity", e, [](Body& b) { return apply_gravity(b); }); }
+SCM apply_velocity_x_1(SCM e) { return step_entity("apply-velocity-x", e, [](Body& b) { return apply_velocity_x(b); }); }
+SCM apply_velocity_y_1(SCM e) { return step_entity("apply-velocity-y", e, [](Body& b) { return apply_velocity_y(b); }); }
 SCM apply_velocity_1(SCM e) { return step_entity("apply-velocity", e, apply_velocity); }
 
-template <bool (*Resolve)(Body&, const TileGrid*, CollisionMode)>
+template <bool (*Resolve)(Body&, const TileGrid*, CollisionMode, SubStep)>
 SCM resolve_tiles(const char* proc, SCM e, SCM tilemap, SCM mode) {
     Failure f{.proc = proc};
     const TileGrid* grid = nullptr;
     CollisionMode m{};
     if (!grid_from_scm(tilemap, grid, f) || !mode_from_scm(mode, m, f)) raise(f);
-    return step_entity(proc, e, [&](Body& b) { Resolve(b, grid, m); });
+    return step_entity(proc, e, [&](Body& b) { Resolve(b, grid, m, SubStep{}); });
 }
 
 SCM resolve_tile_x_1(SCM e, SCM tm, SCM mode) {

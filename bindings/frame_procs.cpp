@@ -40,17 +40,19 @@ struct LastFrame {
 };
 thread_local LastFrame last_frame;
 
-SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
+SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM resting) {
     Failure f{.proc = "step-scene"};
     SCM result = entities;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
     {
         FrameOptions opts;
+        opts.resting_contacts = !SCM_UNBNDP(resting) && scm_is_true(resting);
         const TileGrid* grid = nullptr;
         Batch& batch = lease_batch();
         LastFrame stats;
         auto t0 = Clock::now();
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
+            substeps_from_scm(substeps, opts.substeps, f) &&
             decode_batch(entities, batch, f)) {
             stats.decode.ms = ms_since(t0);
             t0 = Clock::now();
@@ -63,7 +65,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode) {
             t0 = Clock::now();
             if (!f && (!tweened || decode_batch(list, batch, f))) {
                 stats.decode.ms += ms_since(t0);
-                plan_quiet(batch, grid, opts.mode);
+                plan_quiet(batch, grid, opts);
                 batch.frame.step_physics(batch.bodies, grid, opts,
                                          tweened ? std::span<const Body>(batch.frame_start)
                                                  : std::span<const Body>(),
@@ -102,9 +104,10 @@ SCM frame_stats() {
 }  // namespace
 
 void register_frame_procedures() {
-    define_procedure("%step-entities", 4, 0, 0, (Subr)step_entities,
-                     "(entities tilemap dt mode): the whole default-engine-update pass over a list of "
-                     "entities: tweens, motion, tiles, ground, push-apart, groups.");
+    define_procedure("%step-entities", 4, 2, 0, (Subr)step_entities,
+                     "(entities tilemap dt mode [substeps [resting-contacts?]]): the whole "
+                     "default-engine-update pass over a list of entities: tweens, then motion, "
+                     "tiles, ground, push-apart and groups in SUBSTEPS sub-frames (default 1).");
     define_procedure("%frame-stats", 0, 0, 0, (Subr)frame_stats,
                      "The last whole frame stepped on this thread: ((step processed skipped ms) …) "
                      "for decode, each step in order, and encode.");

@@ -58,7 +58,12 @@ bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
 
 bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
     Body& b = d.body;
-    if (!SCM_I_INUMP(v) && !SCM_REALP(v)) d.lossy |= static_cast<uint16_t>(field_of(k));
+    // Only numbers can be lossy; a flag such as #:on-ground? #f is not a
+    // number at all, and watching it would make a frame that flips it and
+    // flips it back (sub-frames) rewrite the plist for nothing.
+    const uint32_t field = field_of(k);
+    if (field != 0 && field != kFieldOnGround && !SCM_I_INUMP(v) && !SCM_REALP(v))
+        d.lossy |= static_cast<uint16_t>(field);
     switch (k) {
         case kX: return decode_number(key, v, b.x, f);
         case kY: return decode_number(key, v, b.y, f);

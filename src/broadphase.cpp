@@ -92,7 +92,9 @@ void PairSweep::query(const CellRange& r, uint32_t after, std::span<const size_t
     for (uint32_t m : big_) push(m);
 }
 
-void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
+void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
+                    std::span<const uint8_t> resting) {
+    auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
     // Cells twice the median box size: most boxes then touch 1-4 cells.
     sizes_.clear();
@@ -119,7 +121,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members) {
             Body& second = bodies[members[b]];
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
-            resolve_pair(first, second);
+            resolve_pair(first, second, rests(a), rests(b));
             // Re-file b only when it changed cells (sizes never change, so
             // a small body stays small).
             if ((second.x.v != bx || second.y.v != by) && !is_big_[b]) {

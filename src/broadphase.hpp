@@ -17,7 +17,9 @@ class PairSweep {
 public:
     // Runs the pass over bodies[members[0]], bodies[members[1]], … (the
     // solid, non-ghost bodies in list order).
-    void run(std::span<Body> bodies, std::span<const size_t> members);
+    // `resting`: empty, or per body whether it rested (see resolve_pair).
+    void run(std::span<Body> bodies, std::span<const size_t> members,
+             std::span<const uint8_t> resting = {});
 
 private:
     struct CellRange {

@@ -70,12 +70,25 @@ bool collision_eligible(const Body& a, const Body& b) {
     return a.collides() && b.collides() && aabb_overlap(a, b);
 }
 
-void resolve_pair(Body& a, Body& b) {
+namespace {
+
+// `upper` comes down on `rester`: its centre is the higher of the two.
+bool lands_on(const Body& upper, const Body& rester) {
+    return 2 * upper.y.v + upper.h.v < 2 * rester.y.v + rester.h.v;
+}
+
+}  // namespace
+
+void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     if (a.immovable && b.immovable) return;
     const double ox = overlap(a.x, a.w, b.x, b.w);
     const double oy = overlap(a.y, a.h, b.y, b.h);
     if (a.immovable || b.immovable) {
         push_off_immovable(a.immovable ? b : a, a.immovable ? a : b, ox, oy);
+    } else if (a_rests && lands_on(b, a)) {
+        push_off_immovable(b, a, ox, oy);
+    } else if (b_rests && lands_on(a, b)) {
+        push_off_immovable(a, b, ox, oy);
     } else if (ox < oy) {
         push_apart(along_x(a), along_x(b), ox);
     } else {
@@ -85,12 +98,15 @@ void resolve_pair(Body& a, Body& b) {
 
 namespace {
 
-void all_pairs(std::span<Body> bodies, std::span<const size_t> members) {
+void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
+               std::span<const uint8_t> resting) {
+    auto rests = [&](size_t i) { return !resting.empty() && resting[i] != 0; };
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
-            if (aabb_overlap(first, second)) resolve_pair(first, second);
+            if (aabb_overlap(first, second))
+                resolve_pair(first, second, rests(members[a]), rests(members[b]));
         }
 }
 
@@ -103,7 +119,12 @@ void resolve_entity_collisions(std::span<Body> bodies) {
     resolve_entity_collisions_by(bodies, PairMethod::Auto);
 }
 
-void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method) {
+void resolve_entity_collisions(std::span<Body> bodies, std::span<const uint8_t> resting) {
+    resolve_entity_collisions_by(bodies, PairMethod::Auto, resting);
+}
+
+void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
+                                  std::span<const uint8_t> resting) {
     // Only solid, non-ghost bodies take part; walking just those, in list
     // order, visits the eligible pairs in exactly the all-pairs order.
     thread_local std::vector<size_t> members;
@@ -114,8 +135,8 @@ void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method) {
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kSweepFrom);
-    if (grid) sweep.run(bodies, members);
-    else all_pairs(bodies, members);
+    if (grid) sweep.run(bodies, members, resting);
+    else all_pairs(bodies, members, resting);
 }
 
 }  // namespace ds

@@ -1,5 +1,6 @@
 // Entity against entity: the overlap test and the sequential push-apart pass.
 #pragma once
+#include <cstdint>
 #include <span>
 
 #include "body.hpp"
@@ -16,8 +17,11 @@ bool aabb_overlap(const Body& a, const Body& b);
 // 'entity-collisions, and the boxes overlap strictly.
 bool collision_eligible(const Body& a, const Body& b);
 
-// Pushes one eligible pair apart (a is the earlier in list order).
-void resolve_pair(Body& a, Body& b);
+// Pushes one eligible pair apart (a is the earlier in list order). With
+// resting contacts, a body that rested at the start of the (sub-)frame holds
+// up one whose centre is above its own, as an immovable body would: the
+// other lands on it (SPEC §4's immovable rule, first case).
+void resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
 
 // How resolve_entity_collisions finds pairs. Both give identical results;
 // Auto uses the grid from a few dozen solid bodies on.
@@ -25,7 +29,10 @@ enum class PairMethod { Auto, AllPairs, Grid };
 
 // One pass over the pairs (i, j), i < j, in list order; each pair sees what
 // earlier pairs produced.
+// `resting` (empty, or one flag per body) marks the bodies that rested.
 void resolve_entity_collisions(std::span<Body> bodies);
-void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method);
+void resolve_entity_collisions(std::span<Body> bodies, std::span<const uint8_t> resting);
+void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
+                                  std::span<const uint8_t> resting = {});
 
 }  // namespace ds

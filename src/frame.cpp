@@ -93,32 +93,55 @@ void Frame::pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> write
     st.ms += ms_since(t0);
 }
 
+bool Frame::rests(const Body& b, size_t i, const TileGrid* grid, bool indexed) {
+    if (b.vy.v != 0) return false;
+    if (grid && rests_on_tile(b, *grid)) return true;
+    auto on = [&](size_t k) {
+        return static_cast<std::ptrdiff_t>(k) != support_slot_[i] &&
+               !(b.id != 0 && supporters_[k].id == b.id) && rests_on(b, supporters_[k]);
+    };
+    if (indexed) return support_index_.any(b, on);
+    for (size_t k = 0; k < supporters_.size(); ++k)
+        if (on(k)) return true;
+    return false;
+}
+
 void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                        std::span<FirstWrites> writes, std::span<const uint8_t> quiet) {
+                        int round, std::span<FirstWrites> writes, std::span<const uint8_t> quiet) {
     // Step by step over all bodies rather than body by body: the same result
     // (each per-entity step reads only its own body and the frame-start
     // supporters), and each step's cost can be reported. The masks say what
     // a step can write given the body as it is: acceleration resets only a
     // non-zero ay, tile steps do nothing at zero speed.
     const CollisionMode mode = opts.mode;
-    pass(kStepAcceleration, bodies, writes, quiet,
-         [](const Body& b) { return kFieldVy | unless_zero(b.ay, kFieldAy); },
-         [](Body& b, size_t) { return apply_acceleration(b); });
-    pass(kStepGravity, bodies, writes, quiet, [](const Body&) { return kFieldVy; },
-         [](Body& b, size_t) { return apply_gravity(b); });
-    pass(kStepVelocityX, bodies, writes, quiet, [](const Body&) { return kFieldX; },
-         [](Body& b, size_t) { return apply_velocity_x(b); });
-    pass(kStepTileX, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
-         [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode); });
-    pass(kStepVelocityY, bodies, writes, quiet, [](const Body&) { return kFieldY; },
-         [](Body& b, size_t) { return apply_velocity_y(b); });
-    pass(kStepTileY, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
-         [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode); });
+    const SubStep sub = SubStep::of_frame(opts.substeps);
     // A handful of supporters are cheaper to scan than to index.
     const auto t0 = Clock::now();
     const bool indexed = supporters_.size() >= 32;
     if (indexed) support_index_.build(supporters_);
     stats_.step[kStepOnSolid].ms += ms_since(t0);
+    if (round == 0)
+        pass(kStepAcceleration, bodies, writes, quiet,
+             [](const Body& b) { return kFieldVy | unless_zero(b.ay, kFieldAy); },
+             [](Body& b, size_t) { return apply_acceleration(b); });
+    resting_.assign(opts.resting_contacts ? bodies.size() : 0, 0);
+    pass(kStepGravity, bodies, writes, quiet, [](const Body&) { return kFieldVy; },
+         [&](Body& b, size_t i) {
+             if (opts.resting_contacts && b.gravity && !b.skips(kSkipGravity) &&
+                 rests(b, i, grid, indexed)) {
+                 resting_[i] = 1;
+                 return false;
+             }
+             return apply_gravity(b, sub);
+         });
+    pass(kStepVelocityX, bodies, writes, quiet, [](const Body&) { return kFieldX; },
+         [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
+    pass(kStepTileX, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
+         [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode, sub); });
+    pass(kStepVelocityY, bodies, writes, quiet, [](const Body&) { return kFieldY; },
+         [&](Body& b, size_t) { return apply_velocity_y(b, sub); });
+    pass(kStepTileY, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
+         [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode, sub); });
     pass(kStepOnSolid, bodies, writes, quiet, [](const Body&) { return kFieldOnGround; },
          [&](Body& b, size_t i) {
              return indexed ? detect_on_solid(b, supporters_, support_index_, support_slot_[i], grid)
@@ -139,32 +162,43 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
             writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
 }
 
-void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                         std::span<const Body> scene, std::span<FirstWrites> writes,
-                         std::span<const uint8_t> quiet) {
-    // Ground detection reads only the supporters, copied out below before
-    // any body moves: with no separate frame-start scene, the bodies as they
-    // are now are that scene.
-    if (scene.empty()) scene = bodies;
-    for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
-        stats_.step[id] = {};
+void Frame::take_supporters(std::span<const Body> scene) {
     supporters_.clear();
-    support_slot_.assign(bodies.size(), -1);
+    support_slot_.assign(scene.size(), -1);
     for (size_t i = 0; i < scene.size(); ++i) {
         if (!scene[i].collides()) continue;
         support_slot_[i] = std::ssize(supporters_);
         supporters_.push_back(scene[i]);
     }
-    step_bodies(bodies, grid, opts, writes, quiet);
-    auto t0 = Clock::now();
-    logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, resolve_entity_collisions);
-    const auto solid = static_cast<uint64_t>(supporters_.size());
-    stats_.step[kStepEntityCollisions] = {solid, bodies.size() - solid, ms_since(t0)};
-    t0 = Clock::now();
-    logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
-    const auto grouped = static_cast<uint64_t>(
-        std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return b.group != 0; }));
-    stats_.step[kStepGroups] = {grouped, bodies.size() - grouped, ms_since(t0)};
+}
+
+void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                         std::span<const Body> scene, std::span<FirstWrites> writes,
+                         std::span<const uint8_t> quiet) {
+    for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
+        stats_.step[id] = {};
+    // With sub-frames, every statistic adds up over them.
+    const int rounds = std::max(1, opts.substeps);
+    for (int round = 0; round < rounds; ++round) {
+        // Ground detection reads only the supporters, copied out before any
+        // body moves: the caller's frame-start scene (before the tweens) for
+        // the first sub-frame, else the bodies as this sub-frame finds them.
+        take_supporters(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
+        step_bodies(bodies, grid, opts, round, writes, quiet);
+        auto t0 = Clock::now();
+        logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy,
+                    [&](std::span<Body> bs) { resolve_entity_collisions(bs, resting_); });
+        const auto solid = static_cast<uint64_t>(supporters_.size());
+        StepStats& push = stats_.step[kStepEntityCollisions];
+        push = {push.processed + solid, push.skipped + bodies.size() - solid, push.ms + ms_since(t0)};
+        t0 = Clock::now();
+        logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
+        const auto grouped = static_cast<uint64_t>(
+            std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return b.group != 0; }));
+        StepStats& groups = stats_.step[kStepGroups];
+        groups = {groups.processed + grouped, groups.skipped + bodies.size() - grouped,
+                  groups.ms + ms_since(t0)};
+    }
 }
 
 bool any_collider(std::span<const Body> bodies) {
@@ -173,7 +207,7 @@ bool any_collider(std::span<const Body> bodies) {
 
 void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
-    const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.mode == last_mode_;
+    const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.same_physics(last_opts_);
     colliders_ = any_collider(world.bodies);
     quiet_.assign(n, 0);
     untouched_.assign(n, 0);
@@ -192,7 +226,7 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
 void Frame::note_settled(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
     last_grid_ = world.grid;
-    last_mode_ = opts.mode;
+    last_opts_ = opts;
     last_out_.resize(n);
     settled_.resize(n);
     for (size_t i = 0; i < n; ++i) {

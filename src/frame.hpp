@@ -47,6 +47,17 @@ struct World {
 struct FrameOptions {
     CollisionMode mode = CollisionMode::Swept;
     double dt = 1000.0 / 60.0;  // ms; only tweens use it
+    // Beyond the seed. substeps: the physics after the tweens runs k times,
+    // each a 1/k sub-frame (SubStep), the one-shot acceleration in the first.
+    // resting_contacts: still bodies resting exactly on a tile or a still
+    // body skip gravity and hold up what lands on them (rests_on_tile,
+    // resolve_pair).
+    int substeps = 1;
+    bool resting_contacts = false;
+
+    bool same_physics(const FrameOptions& o) const {
+        return mode == o.mode && substeps == o.substeps && resting_contacts == o.resting_contacts;
+    }
 };
 
 // The steps of a frame, in order, for reporting what each cost.
@@ -110,7 +121,9 @@ private:
     void plan_quiet(const World& world, const FrameOptions& opts);
     void note_settled(const World& world, const FrameOptions& opts);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                     std::span<FirstWrites> writes, std::span<const uint8_t> quiet);
+                     int round, std::span<FirstWrites> writes, std::span<const uint8_t> quiet);
+    void take_supporters(std::span<const Body> scene);
+    bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
     template <class MayWrite, class Step>
     void pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
               std::span<const uint8_t> quiet, MayWrite&& may_write, Step&& step);
@@ -124,6 +137,7 @@ private:
     // detection scans only these.
     std::vector<Body> supporters_;
     std::vector<std::ptrdiff_t> support_slot_;
+    std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
     SupportIndex support_index_;     // over supporters_, when there are many
     FrameReport report_;
@@ -134,7 +148,7 @@ private:
     std::vector<Body> last_out_;
     std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
     const TileGrid* last_grid_ = nullptr;
-    CollisionMode last_mode_ = CollisionMode::Swept;
+    FrameOptions last_opts_;
     bool worth_tracking_ = true;
     bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
 };

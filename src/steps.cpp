@@ -9,21 +9,32 @@ bool apply_acceleration(Body& b) {
     return true;
 }
 
-bool apply_gravity(Body& b) {
+bool apply_gravity(Body& b, SubStep s) {
     if (!b.gravity || b.skips(kSkipGravity)) return false;
-    b.vy = b.vy + Num::integer(kGravity);
+    b.vy = b.vy + s.share(Num::integer(kGravity));
     return true;
 }
 
-bool apply_velocity_x(Body& b) {
+namespace {
+
+// A sub-frame leaves a still body's coordinate as it is (exact stays exact);
+// the whole frame adds even a zero, as the seed's step does.
+void advance(Num& pos, Num vel, SubStep s) {
+    if (!s.whole() && vel.v == 0) return;
+    pos = pos + s.share(vel);
+}
+
+}  // namespace
+
+bool apply_velocity_x(Body& b, SubStep s) {
     if (b.skips(kSkipVelocityX)) return false;
-    b.x = b.x + b.vx;
+    advance(b.x, b.vx, s);
     return true;
 }
 
-bool apply_velocity_y(Body& b) {
+bool apply_velocity_y(Body& b, SubStep s) {
     if (b.skips(kSkipVelocityY)) return false;
-    b.y = b.y + b.vy;
+    advance(b.y, b.vy, s);
     return true;
 }
 

@@ -10,14 +10,26 @@ constexpr double kGravity = 1.0;            // *gravity*, px/frame²
 constexpr double kJumpForce = 15.0;         // *jump-force*
 constexpr double kOnSolidTolerance = 4.0;   // *on-solid-tolerance*, px and px/frame
 
+// A sub-frame's share of a frame (beyond the seed: make-game substeps: k).
+// The seed's frame is whole (h = 1) and its steps stay exactly as they were;
+// with k sub-frames each is h = 1/k of a frame, and a per-frame rate such as
+// a velocity or gravity advances by rate·h, computed as a flonum.
+struct SubStep {
+    double h = 1;
+
+    static SubStep of_frame(int k) { return {k <= 1 ? 1.0 : 1.0 / k}; }
+    bool whole() const { return h == 1; }
+    Num share(Num rate) const { return whole() ? rate : Num::flonum(rate.v * h); }
+};
+
 // vy += ay, then ay = 0. Needs #:gravity?; skipped by 'acceleration.
 bool apply_acceleration(Body& b);
-// vy += *gravity*. Needs #:gravity?; skipped by 'gravity.
-bool apply_gravity(Body& b);
-// x += vx; skipped by 'velocity-x.
-bool apply_velocity_x(Body& b);
-// y += vy; skipped by 'velocity-y.
-bool apply_velocity_y(Body& b);
+// vy += *gravity* (·h). Needs #:gravity?; skipped by 'gravity.
+bool apply_gravity(Body& b, SubStep s = {});
+// x += vx (·h; in a sub-frame a zero velocity moves nothing); skipped by 'velocity-x.
+bool apply_velocity_x(Body& b, SubStep s = {});
+// y += vy (·h); skipped by 'velocity-y.
+bool apply_velocity_y(Body& b, SubStep s = {});
 // The legacy step: both axes, each skippable on its own.
 bool apply_velocity(Body& b);
 

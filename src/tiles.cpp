@@ -13,6 +13,7 @@ namespace {
 struct Axis {
     Num& pos;
     Num& vel;
+    Num move;  // this (sub-)frame's displacement: vel, or vel·h
     Num size;
     int tile;
 };
@@ -22,7 +23,7 @@ struct Axis {
 // equals the box whenever |v| ≤ size.
 CellRange candidates(const Axis& a, CollisionMode mode) {
     if (mode == CollisionMode::Discrete || !(a.size.v > 0)) return cells_of(a.pos, a.size, a.tile);
-    const Num start = a.pos - a.vel;  // where the box began the move
+    const Num start = a.pos - a.move;  // where the box began the move
     if (a.vel.v > 0) {
         const Num lead_start = start + a.size;  // the right (bottom) edge before the move
         const Num lo = lead_start.v < a.pos.v ? lead_start : a.pos;
@@ -53,9 +54,9 @@ void resolve_axis(Axis a, CellRange along, CellRange across, Solid solid) {
 
 }  // namespace
 
-bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode) {
+bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
     if (!grid || b.vx.v == 0 || b.skips(kSkipTileX)) return false;
-    Axis a{b.x, b.vx, b.w, grid->tile_width()};
+    Axis a{b.x, b.vx, s.share(b.vx), b.w, grid->tile_width()};
     const CellRange cols = grid->clip_cols(candidates(a, mode));
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
     resolve_axis(a, cols, rows,
@@ -63,9 +64,9 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
     return true;
 }
 
-bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode) {
+bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
     if (!grid || b.vy.v == 0 || b.skips(kSkipTileY)) return false;
-    Axis a{b.y, b.vy, b.h, grid->tile_height()};
+    Axis a{b.y, b.vy, s.share(b.vy), b.h, grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
     resolve_axis(a, rows, cols,
@@ -79,6 +80,16 @@ bool tile_supports(const Body& b, const TileGrid& grid) {
     for (int64_t c = cols.first; c <= cols.last; ++c)
         if (grid.solid(c, row)) return true;
     return false;
+}
+
+bool rests_on_tile(const Body& b, const TileGrid& grid) {
+    const double feet = b.y.v + b.h.v;
+    return std::fmod(feet, grid.tile_height()) == 0 && tile_supports(b, grid);
+}
+
+bool rests_on(const Body& b, const Body& o) {
+    return o.collides() && o.vy.v == 0 && o.y.v == b.y.v + b.h.v &&
+           b.x.v < o.x.v + o.w.v && o.x.v < b.x.v + b.w.v;
 }
 
 bool entity_supports(const Body& b, const Body& o) {

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "body.hpp"
+#include "steps.hpp"
 #include "support_index.hpp"
 #include "tile_grid.hpp"
 
@@ -16,9 +17,10 @@ enum class CollisionMode : uint8_t {
 
 // Snap out of solid cells along x after apply-velocity-x. No-op without a
 // grid, when vx = 0, or when the body skips 'tile-collisions-x.
-bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode);
+// In a sub-frame, swept mode covers the sub-frame's move (vx·h).
+bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
 // The same along y, after apply-velocity-y ('tile-collisions-y).
-bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode);
+bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
 
 // Whether a solid cell lies in row ⌊(y+h)/th⌋ under any column the box spans.
 bool tile_supports(const Body& b, const TileGrid& grid);
@@ -26,6 +28,13 @@ bool tile_supports(const Body& b, const TileGrid& grid);
 // its top within the tolerance of b's feet and moving at nearly b's speed.
 // (Identity — "other is not b itself" — is the caller's business.)
 bool entity_supports(const Body& b, const Body& other);
+
+// Resting contact (beyond the seed; FrameOptions::resting_contacts): a still
+// body (vy = 0) whose feet are exactly on the top of a solid tile, or on the
+// top of a still solid body overlapping it horizontally. Such a body skips
+// gravity, so a stack at rest stays exactly where it is.
+bool rests_on_tile(const Body& b, const TileGrid& grid);
+bool rests_on(const Body& b, const Body& other);
 
 // Tile steps return whether they looked at the map (false: no map, no speed
 // on that axis, or skipped); detect_on_solid whether it applied.

@@ -4,6 +4,7 @@
   #:use-module (downstroke world)
   #:re-export (resolve-entity-collisions sync-groups aabb-overlap?)
   #:export (*gravity* *jump-force* *on-solid-tolerance* collision-mode
+            resting-contacts?
             step-tweens apply-acceleration apply-gravity apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
             resolve-tile-collisions-y detect-on-solid step-scene))
@@ -19,6 +20,12 @@
                       (scm-error 'wrong-type-arg "collision-mode"
                                  "expected 'swept or 'discrete, got ~S" (list mode) #f))
                     mode)))
+
+(define resting-contacts?
+  ;; Beyond the seed, off by default: a still body resting exactly on a tile
+  ;; or on a still solid body skips gravity and holds up what lands on it,
+  ;; so stacks stay put (docs/physics.org, "Resting contacts").
+  (make-parameter #f (lambda (on?) (and on? #t))))
 
 (define (tilemap-of scene) (and scene (scene-tilemap scene)))
 (define (entities-of scene) (if scene (scene-entities scene) '()))
@@ -47,11 +54,15 @@
   "Set #:on-ground? from the tiles under ENTITY and the scene's solid entities."
   (%detect-on-solid entity (tilemap-of scene) (entities-of scene)))
 
-(define (step-scene scene dt)
+(define* (step-scene scene dt #:key (substeps 1))
   "SCENE after one whole engine pass (the default-engine-update composition),
-done in one native call."
+done in one native call. With SUBSTEPS k > 1 (beyond the seed), everything
+after the tweens runs as k sub-frames of 1/k frame each: velocities and
+gravity advance by a k-th, in flonums, and the motion converges to the
+continuous one as k grows."
   (let* ((entities (scene-entities scene))
-         (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode))))
+         (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
+                                  substeps (resting-contacts?))))
     (if (eq? stepped entities)
         scene
         (%scene-with-entities scene stepped))))

@@ -10,11 +10,11 @@
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke tween)
-  #:use-module ((downstroke physics) #:select (collision-mode))
+  #:use-module ((downstroke physics) #:select (collision-mode resting-contacts?))
   #:use-module ((downstroke tilemap)
                 #:select (tilemap-tile-width tilemap-tile-height
                           tilemap-cell-solid? tilemap-solid-extent))
-  #:re-export (collision-mode)
+  #:re-export (collision-mode resting-contacts?)
   #:export (*gravity* *jump-force* *on-solid-tolerance*
             step-tweens apply-acceleration apply-gravity apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
@@ -124,6 +124,28 @@ landing) hands the entity back as itself."
 (define (scene-tiles scene) (and scene (scene-tilemap scene)))
 
 ;;; ---------------------------------------------------------------- motion (§4)
+;;; Each motion step has a sub-frame form taking H: #f for the seed's whole
+;;; frame, else the flonum 1/k of a frame that make-game's substeps: k gives.
+
+(define (share rate h)
+  "A per-frame RATE over a sub-frame: the rate itself for a whole frame (H
+#f), else rate·h computed in flonums."
+  (if h (* (fl rate) h) rate))
+
+(define (gravity-step e h)
+  (if (or (not (flag e #:gravity?)) (skips? e 'gravity))
+      e
+      (let ((vy (num e #:vy)))
+        (put e #:vy vy (num+ vy (share *gravity* h))))))
+
+(define (velocity-step e h pos-key vel-key skip)
+  ;; In a sub-frame a still body's coordinate is left as it is (exact stays
+  ;; exact); the whole frame adds even a zero, as the seed's step does.
+  (let ((vel (num e vel-key)))
+    (if (or (skips? e skip) (and h (zero? vel)))
+        e
+        (let ((pos (num e pos-key)))
+          (put e pos-key pos (num+ pos (share vel h)))))))
 
 (define-step (apply-acceleration e scene dt)
   "vy += ay, then ay = 0 (written only when it was non-zero)."
@@ -135,24 +157,15 @@ landing) hands the entity back as itself."
 
 (define-step (apply-gravity e scene dt)
   "vy += *gravity*."
-  (if (or (not (flag e #:gravity?)) (skips? e 'gravity))
-      e
-      (let ((vy (num e #:vy)))
-        (put e #:vy vy (num+ vy *gravity*)))))
+  (gravity-step e #f))
 
 (define-step (apply-velocity-x e scene dt)
   "x += vx."
-  (if (skips? e 'velocity-x)
-      e
-      (let ((x (num e #:x)))
-        (put e #:x x (num+ x (num e #:vx))))))
+  (velocity-step e #f #:x #:vx 'velocity-x))
 
 (define-step (apply-velocity-y e scene dt)
   "y += vy."
-  (if (skips? e 'velocity-y)
-      e
-      (let ((y (num e #:y)))
-        (put e #:y y (num+ y (num e #:vy))))))
+  (velocity-step e #f #:y #:vy 'velocity-y))
 
 (define-step (apply-velocity e scene dt)
   "Both axes, each skippable on its own."
@@ -214,12 +227,13 @@ exact when the position and size were."
          (v (if (> vel 0) (num- edge size) edge)))
     (if exact v (fl v))))
 
-(define (resolve-axis e tm pos-key vel-key size-key across-key across-size-key
+(define (resolve-axis e h pos-key vel-key size-key across-key across-size-key
                       tile tile-across first count first-across count-across solid?)
   ;; Cells are walked from the side the box moves from; the first solid
-  ;; one met is the one it reached first.
+  ;; one met is the one it reached first. Swept mode covers this
+  ;; (sub-)frame's move: vel, or vel·h.
   (let ((pos (num e pos-key)) (vel (num e vel-key)) (size (num e size-key)))
-    (let* ((along (clip (candidate-cells pos vel size tile (collision-mode)) first count))
+    (let* ((along (clip (candidate-cells pos (share vel h) size tile (collision-mode)) first count))
            (across (clip (cells-of (num e across-key) (num e across-size-key) tile-across)
                          first-across count-across))
            (hit (find (lambda (c)
@@ -233,11 +247,14 @@ exact when the position and size were."
 (define-step (resolve-tile-collisions-x e scene dt)
   "Moving along x into solid cells (of the rows the box spans): snap flush
 against the first one, vx = 0."
+  (tiles-x e scene #f))
+
+(define (tiles-x e scene h)
   (let ((tm (scene-tiles scene)))
     (if (or (not tm) (zero? (num e #:vx)) (skips? e 'tile-collisions-x))
         e
         (apply (lambda (col0 row0 cols rows)
-                 (resolve-axis e tm #:x #:vx #:width #:y #:height
+                 (resolve-axis e h #:x #:vx #:width #:y #:height
                                (tilemap-tile-width tm) (tilemap-tile-height tm)
                                col0 cols row0 rows
                                (lambda (col row) (tilemap-cell-solid? tm col row))))
@@ -245,11 +262,14 @@ against the first one, vx = 0."
 
 (define-step (resolve-tile-collisions-y e scene dt)
   "The same along y, in the columns the box spans; vy = 0."
+  (tiles-y e scene #f))
+
+(define (tiles-y e scene h)
   (let ((tm (scene-tiles scene)))
     (if (or (not tm) (zero? (num e #:vy)) (skips? e 'tile-collisions-y))
         e
         (apply (lambda (col0 row0 cols rows)
-                 (resolve-axis e tm #:y #:vy #:height #:x #:width
+                 (resolve-axis e h #:y #:vy #:height #:x #:width
                                (tilemap-tile-height tm) (tilemap-tile-width tm)
                                row0 rows col0 cols
                                (lambda (row col) (tilemap-cell-solid? tm col row))))
@@ -279,6 +299,36 @@ within the tolerance of E's feet, moving at nearly E's vertical speed."
        (< (num o #:x) (num+ (num e #:x) (num e #:width)))
        (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num o #:y))) *on-solid-tolerance*)
        (<= (abs (num- (num e #:vy) (num o #:vy))) *on-solid-tolerance*)))
+
+;;; Resting contacts (beyond the seed; the resting-contacts? parameter): a
+;;; still body whose feet are exactly on a solid tile's top, or on the top of
+;;; a still solid body overlapping it, skips gravity and holds up what comes
+;;; down on it.
+
+(define (rests-on-tile? e tm)
+  (let ((feet (num+ (num e #:y) (num e #:height))))
+    (and tm
+         (integer? (/ (inexact->exact feet) (tilemap-tile-height tm)))   ; fmod = 0, exactly
+         (tile-supports? e tm))))
+
+(define (rests-on? e o)
+  (and (flag o #:solid?)
+       (not (skips? o 'entity-collisions))
+       (zero? (num o #:vy))
+       (= (num o #:y) (num+ (num e #:y) (num e #:height)))
+       (< (num e #:x) (num+ (num o #:x) (num o #:width)))
+       (< (num o #:x) (num+ (num e #:x) (num e #:width)))))
+
+(define (rests? e tm holders slot)
+  "Whether E, about to take gravity, rests: still, and on a tile or on one of
+HOLDERS ((index . entity) …) other than its own SLOT and its #:id."
+  (and (flag e #:gravity?)
+       (not (skips? e 'gravity))
+       (zero? (num e #:vy))
+       (or (rests-on-tile? e tm)
+           (any (lambda (h) (and (not (= (car h) slot)) (not (same-id? e (cdr h)))
+                                 (rests-on? e (cdr h))))
+                holders))))
 
 (define (same-id? e o)
   (let ((id (entity-ref e #:id #f)))
@@ -369,13 +419,20 @@ the larger half when everything is an exact integer."
     (vector-set! a vel (if a-negative -1 1))
     (vector-set! b vel (if a-negative 1 -1))))
 
-(define (resolve-pair! ea a eb b)
+(define (above? upper lower)
+  (< (centre2 (y upper) (h upper)) (centre2 (y lower) (h lower))))
+
+(define (resolve-pair! ea a a-rests eb b b-rests)
+  "A resting body (resting contacts) holds up one whose centre is above its
+own, as an immovable body would."
   (let ((a-fixed (flag ea #:immovable?)) (b-fixed (flag eb #:immovable?))
         (ox (overlap (x a) (w a) (x b) (w b)))
         (oy (overlap (y a) (h a) (y b) (h b))))
     (cond ((and a-fixed b-fixed) #t)
           (a-fixed (push-off-immovable! b a ox oy))
           (b-fixed (push-off-immovable! a b ox oy))
+          ((and a-rests (above? b a)) (push-off-immovable! b a ox oy))
+          ((and b-rests (above? a b)) (push-off-immovable! a b ox oy))
           ((< ox oy) (push-apart! a b 0 2 4 ox))
           (else (push-apart! a b 1 3 5 oy)))))
 
@@ -384,19 +441,25 @@ the larger half when everything is an exact integer."
 earlier pairs did: solid, non-ghost, strictly overlapping pairs are pushed
 apart (SPEC §4)."
   (check-all 'resolve-entity-collisions entities)
+  (push-apart entities (map (const #f) entities)))
+
+(define (push-apart entities resting)
+  "The pass, RESTING holding each entity's resting flag."
   (let* ((before (map box entities))
          (after (map vector-copy before))
          (takes-part (map (lambda (e) (and (flag e #:solid?)
                                            (not (skips? e 'entity-collisions))))
                           entities))
-         (members (filter-map (lambda (e b part) (and part (cons e b)))
-                              entities after takes-part)))
+         ;; (entity box . rests?)
+         (members (filter-map (lambda (e b part r) (and part (cons* e b r)))
+                              entities after takes-part resting)))
     (let outer ((rest members))
       (unless (null? rest)
-        (for-each (lambda (other)
-                    (when (overlaps? (cdar rest) (cdr other))
-                      (resolve-pair! (caar rest) (cdar rest) (car other) (cdr other))))
-                  (cdr rest))
+        (let ((m (car rest)))
+          (for-each (lambda (o)
+                      (when (overlaps? (cadr m) (cadr o))
+                        (resolve-pair! (car m) (cadr m) (cddr m) (car o) (cadr o) (cddr o))))
+                    (cdr rest)))
         (outer (cdr rest))))
     (same-or (map write-box entities before after) entities)))
 
@@ -562,32 +625,45 @@ and call its on-complete."
 
 ;;; ---------------------------------------------------------------- the frame (§5)
 
-(define (step-scene scene dt)
-  "One default-engine-update pass: tweens; then each entity through the
-per-entity steps, all reading the scene as it was at the start of the
-frame; then push-apart; then groups."
+(define* (step-scene scene dt #:key (substeps 1))
+  "One default-engine-update pass: tweens; then SUBSTEPS sub-frames (one, the
+seed's frame, by default), each taking every entity through the per-entity
+steps, all reading the scene as it was at the start of the sub-frame (the
+first: of the frame, before the tweens), then push-apart, then groups."
+  (unless (and (exact-integer? substeps) (<= 1 substeps 1024))
+    (fail 'step-scene "substeps: expected an exact integer from 1 to ~S, got ~S" 1024 substeps))
   (let* ((start (scene-entities scene))
-         (tm (scene-tilemap scene))
-         (supporters (holders start))   ; read once: they are the frame-start scene
+         (h (and (> substeps 1) (fl (/ 1 substeps))))
          (tweened (map-keeping (lambda (e) (step-tweens e scene dt)) start))
-         (moved
-          (same-or
-           (map (lambda (e slot)
-                  (fold (lambda (step e) (step e))
-                        e
-                        (list (lambda (e) (apply-acceleration e scene dt))
-                              (lambda (e) (apply-gravity e scene dt))
-                              (lambda (e) (apply-velocity-x e scene dt))
-                              (lambda (e) (resolve-tile-collisions-x e scene dt))
-                              (lambda (e) (apply-velocity-y e scene dt))
-                              (lambda (e) (resolve-tile-collisions-y e scene dt))
-                              ;; not itself: its own slot of the frame-start list
-                              (lambda (e) (on-solid e tm supporters (lambda (i o) (= i slot)))))))
-                tweened (iota (length tweened)))
-           tweened))
-         (result (same-or (map keep-if-unchanged
-                               (sync-groups (resolve-entity-collisions moved)) start)
-                          start)))
+         (result
+          (let loop ((round 0) (es tweened))
+            (if (= round substeps)
+                es
+                (loop (+ round 1)
+                      (sub-frame scene dt h round (if (= round 0) start es) es)))))
+         (result (same-or (map keep-if-unchanged result start) start)))
     (if (eq? result start)
         scene
         (update-scene scene #:entities result))))
+
+(define (sub-frame scene dt h round supporting entities)
+  "One (sub-)frame of ENTITIES after the tweens; SUPPORTING is the scene
+ground detection and resting read (its holders, by slot)."
+  (let* ((tm (scene-tilemap scene))
+         (supporters (holders supporting))
+         (rest? (resting-contacts?))
+         (stepped
+          (map (lambda (e slot)
+                 (let* ((e (if (= round 0) (apply-acceleration e scene dt) e))
+                        (rests (and rest? (rests? e tm supporters slot)))
+                        (e (if rests e (gravity-step e h)))
+                        (e (velocity-step e h #:x #:vx 'velocity-x))
+                        (e (tiles-x e scene h))
+                        (e (velocity-step e h #:y #:vy 'velocity-y))
+                        (e (tiles-y e scene h))
+                        ;; not itself: its own slot of the supporting list
+                        (e (on-solid e tm supporters (lambda (i o) (= i slot)))))
+                   (cons e rests)))
+               entities (iota (length entities))))
+         (moved (same-or (map car stepped) entities)))
+    (sync-groups (push-apart moved (map cdr stepped)))))

@@ -83,7 +83,7 @@
   '(step-tweens apply-acceleration apply-gravity apply-velocity-x apply-velocity-y
     apply-velocity resolve-tile-collisions-x resolve-tile-collisions-y detect-on-solid
     resolve-entity-collisions sync-groups aabb-overlap? *gravity* *jump-force*
-    *on-solid-tolerance* collision-mode step-scene))
+    *on-solid-tolerance* collision-mode resting-contacts? step-scene))
 
 ;;; Per-entity steps, checked on every entity of the frame's input.
 (define per-entity-steps
@@ -748,5 +748,46 @@ answered #t), in how many of the ~a runs, and how many both sides refused:~%" (*
                               (vector-ref v 2)))))
                 step-names)
       (force-output (current-output-port)))))
+
+;;; ---------------------------------------------------------------- sub-frames, resting contacts
+;;; The frame options beyond the seed: seeds 1..DS_DIFF_VARIANTS (300) again,
+;;; each with substeps 1 + seed mod 4 and resting contacts on odd seeds, in
+;;; both modes; whole frames only (the single steps do not take options).
+(define variant-count (env-int "DS_DIFF_VARIANTS" 300))
+
+(define (run-variant seed scene k rest?)
+  "The first frame at which native and reference disagree, with its
+mismatch, as (frame . mismatch); #f when all FRAME-COUNT frames agree."
+  (parameterize ((resting-contacts? rest?))
+    (let loop ((frame 0) (ns scene) (rs scene))
+      (and (< frame frame-count)
+           (let* ((dt (scene-dt seed frame))
+                  (n (attempt (lambda () ((nat 'step-scene) ns dt #:substeps k))))
+                  (r (attempt (lambda () ((ref 'step-scene) rs dt #:substeps k))))
+                  (m (scene-diff ns rs n r frame)))
+             (cond (m (cons frame m))
+                   ((not (ok? n)) #f)
+                   (else (loop (+ frame 1) (cdr n) (cdr r)))))))))
+
+(when (and reference-ok? (module-variable reference 'resting-contacts?))
+  (do ((seed 1 (+ seed 1))) ((> seed variant-count))
+    (call-with-values (lambda () (generate-scene-parts seed))
+      (lambda (entities spec)
+        (let ((tilemap (tilemap-spec->tilemap spec))
+              (k (+ 1 (modulo seed 4)))
+              (rest? (odd? seed)))
+          (for-each
+           (lambda (mode)
+             (let ((d (parameterize ((collision-mode mode))
+                        (run-variant seed (make-scene #:entities entities #:tilemap tilemap) k rest?))))
+               (when d
+                 (err "DIFF variant seed ~a ~a substeps ~a resting ~a: frame ~a, entity ~a, ~a: native ~s, reference ~s~%"
+                      seed mode k rest? (car d) (mismatch-index (cdr d)) (mismatch-key (cdr d))
+                      (mismatch-nval (cdr d)) (mismatch-rval (cdr d))))
+               (test-equal (format #f "seed ~a ~a substeps ~a resting ~a" seed mode k rest?) "agree"
+                 (if d (format #f "frame ~a, entity ~a, ~a" (car d) (mismatch-index (cdr d))
+                               (mismatch-key (cdr d)))
+                     "agree"))))
+           '(swept discrete)))))))
 
 (test-end "differential")
