@@ -634,4 +634,84 @@
 (let ((e '(#:x 0 #:skip-pipelines (frobnicate))))
   (test-eq "unknown skip symbols are harmless" e (apply-velocity-x e #f 16)))
 
+;;; ---------------------------------------------------------------- sub-frames (beyond the seed)
+;;; k sub-frames of h = 1/k: vy += g·h, then y += vy·h, in flonums. From rest
+;;; after t frames y = g·t²/2 + g·t/(2k): the error against the continuous
+;;; motion falls as 1/k (k = 1 is the seed's y = g·t(t+1)/2).
+(define (entities-after scene frames . args)
+  (scene-entities
+   (let loop ((i 0) (s scene))
+     (if (= i frames) s (loop (+ i 1) (apply step-scene s 16 args))))))
+(define faller (make-scene #:entities '((#:x 0 #:y 0 #:width 8 #:height 8 #:gravity? #t))))
+(test-equal "k = 1 is the seed's frame, exact" '((#:x 0 #:y 1 #:width 8 #:height 8 #:gravity? #t #:vy 1))
+  (entities-after faller 1))
+(test-equal "k = 4, one frame: y = 1/2 + 1/8" '((#:x 0 #:y 0.625 #:width 8 #:height 8 #:gravity? #t #:vy 1.0))
+  (entities-after faller 1 #:substeps 4))
+(test-equal "k = 4, two frames: y = 2 + 2/8" '((#:x 0 #:y 2.25 #:width 8 #:height 8 #:gravity? #t #:vy 2.0))
+  (entities-after faller 2 #:substeps 4))
+(test-equal "k = 2, ten frames: y = 50 + 10/4" '(52.5 10.0)
+  (map (lambda (k) (entity-ref (car (entities-after faller 10 #:substeps 2)) k)) '(#:y #:vy)))
+(test-equal "the one-shot acceleration goes in the first sub-frame only"
+  '(-14.375 -14.0 0)
+  (map (lambda (k) (entity-ref (car (entities-after
+                                      (make-scene #:entities '((#:x 0 #:y 0 #:width 8 #:height 8
+                                                                #:gravity? #t #:ay -15)))
+                                      1 #:substeps 4))
+                               k))
+       '(#:y #:vy #:ay)))
+(test-equal "a moving coordinate becomes a flonum" '(103.0 3)
+  (map (lambda (k) (entity-ref (car (entities-after
+                                      (make-scene #:entities '((#:x 100 #:vx 3 #:width 8 #:height 8)))
+                                      1 #:substeps 2))
+                               k))
+       '(#:x #:vx)))
+(let ((s (make-scene #:entities '((#:x 100 #:y 5 #:vx 0 #:width 8 #:height 8)))))
+  (test-eq "a still body is left as it is (exact stays exact)" s (step-scene s 16 #:substeps 3)))
+(let ((wall (grid-map 8 4 (column 4 4))))
+  (test-equal "swept sub-frames still stop a fast body at the wall" '(56.0 0)
+    (map (lambda (k) (entity-ref (car (entities-after
+                                        (make-scene #:entities '((#:x 0 #:y 16 #:vx 300 #:width 8 #:height 8))
+                                                    #:tilemap wall)
+                                        1 #:substeps 2))
+                                 k))
+         '(#:x #:vx))))
+(for-each (lambda (bad)
+            (test-error (format #f "substeps ~s is refused" bad) 'wrong-type-arg
+              (step-scene faller 16 #:substeps bad)))
+          '(0 -1 2.0 1/2 x 100000))
+
+;;; ---------------------------------------------------------------- resting contacts (beyond the seed)
+(define floor-map (grid-map 4 30 (row 29 4)))
+(define (stack n)
+  (map (lambda (i) (list #:x 24 #:y (- 464 (* 8 (+ i 1))) #:width 8 #:height 8
+                         #:gravity? #t #:solid? #t #:on-ground? #t))
+       (iota n)))
+(let ((s (make-scene #:entities (stack 20) #:tilemap floor-map)))
+  (parameterize ((resting-contacts? #t))
+    (test-eq "a 20-box stack at rest is handed back as it is" s (step-scene s 16))
+    (test-eq "… with sub-frames too" s (step-scene s 16 #:substeps 4)))
+  (test-assert "under the seed's rule the same stack moves"
+    (not (equal? (map (lambda (e) (entity-ref e #:y)) (entities-after s 50))
+                 (map (lambda (e) (entity-ref e #:y)) (stack 20))))))
+(parameterize ((resting-contacts? #t))
+  ;; It falls to 452 (vy 6), 4 px into the resting box, which holds it up as
+  ;; an immovable box would; it reads on-ground? from the next frame on.
+  (let ((landed (lambda (frames)
+                  (let* ((lander '(#:x 24 #:y 446 #:vy 5 #:width 8 #:height 8 #:gravity? #t #:solid? #t))
+                         (e (cadr (entities-after (make-scene #:entities (list (car (stack 1)) lander)
+                                                              #:tilemap floor-map)
+                                                  frames))))
+                    (map (lambda (k) (entity-ref e k)) '(#:y #:vy #:on-ground?))))))
+    (test-equal "a box landing on a resting one stops exactly on top, still" '(448 0 #f) (landed 1))
+    (test-equal "… and rests there" '(448 0 #t) (landed 2))
+    (test-equal "… for good" '(448 0 #t) (landed 30)))
+  (test-equal "a body moving up does not rest" '(447 -9)
+    (map (lambda (k) (entity-ref (car (entities-after
+                                        (make-scene #:entities '((#:x 24 #:y 456 #:vy -10 #:width 8
+                                                                  #:height 8 #:gravity? #t))
+                                                    #:tilemap floor-map)
+                                        1))
+                                 k))
+         '(#:y #:vy))))
+
 (test-end "physics")
