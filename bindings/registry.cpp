@@ -20,4 +20,5 @@ extern "C" void ds_init_native() {
     register_tilemap_procedures();
     register_tween_procedures();
     register_frame_procedures();
+    register_hash_procedures();
 }

@@ -15,5 +15,6 @@ void register_entity_procedures();
 void register_tilemap_procedures();
 void register_tween_procedures();
 void register_frame_procedures();
+void register_hash_procedures();
 
 }  // namespace ds::guile

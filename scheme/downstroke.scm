@@ -5,10 +5,11 @@
   #:use-module (downstroke physics)
   #:use-module (downstroke tween)
   #:use-module (downstroke tilemap)
-  #:use-module (downstroke engine))
+  #:use-module (downstroke engine)
+  #:use-module (downstroke hash))
 
 (eval-when (expand load eval)
   (for-each (lambda (name)
               (module-use! (module-public-interface (current-module))
                            (resolve-interface (list 'downstroke name))))
-            '(entity world physics tween tilemap engine)))
+            '(entity world physics tween tilemap engine hash)))

@@ -10,6 +10,7 @@
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
+            game-substeps game-substeps-set! game-resting-contacts? game-resting-contacts-set!
             game-update game-update-set! game-engine-update game-engine-update-set!
             input-pressed? input-held? input-released? play-sound
             default-engine-update camera-follow! game-run!
@@ -35,7 +36,8 @@
 
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
-              collision-mode input input-script frame sounds history-size history)
+              collision-mode substeps resting-contacts
+              input input-script frame sounds history-size history)
   game?
   (title game-title)
   (width game-width)
@@ -46,6 +48,8 @@
   (render game-render)
   (engine-update game-engine-update game-engine-update-set!)
   (collision-mode game-collision-mode game-collision-mode-set!)
+  (substeps game-substeps %game-substeps-set!)
+  (resting-contacts game-resting-contacts? game-resting-contacts-set!)
   (input game-input game-input-set!)
   (input-script game-input-script game-input-script-set!)
   (frame game-frame game-frame-set!)
@@ -54,25 +58,41 @@
   (history game-history-list game-history-set!))  ; ((frame . scene) …), newest first
 
 (define (default-engine-update game dt)
-  "One physics pass over the game's scene (step-scene), in the game's
-collision mode."
+  "One physics pass over the game's scene (step-scene), with the game's
+collision mode, substeps and resting contacts."
   (let ((scene (game-scene game)))
     (when scene
-      (parameterize ((collision-mode (game-collision-mode game)))
-        (game-scene-set! game (step-scene scene dt))))))
+      (parameterize ((collision-mode (game-collision-mode game))
+                     (resting-contacts? (game-resting-contacts? game)))
+        (game-scene-set! game (step-scene scene dt #:substeps (game-substeps game)))))))
+
+(define (check-substeps who k)
+  (unless (and (exact-integer? k) (<= 1 k 1024))
+    (scm-error 'wrong-type-arg who "substeps: expected an exact integer from 1 to 1024, got ~S"
+               (list k) #f)))
+
+(define (game-substeps-set! game k)
+  "Split GAME's physics frames into K sub-frames from the next frame on."
+  (check-substeps "game-substeps-set!" k)
+  (%game-substeps-set! game k))
 
 (define* (make-game #:key (title "Downstroke") (width 640) (height 480)
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
-                    (collision-mode 'swept) (input-script '()) (history 0))
+                    (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
+                    (input-script '()) (history 0))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
-physics, #f disables it, a procedure (game dt) replaces it. HISTORY keeps the
-scenes of that many past frames for game-rewind!."
+physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
+each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
+rest (both beyond the seed, off by default). HISTORY keeps the scenes of
+that many past frames for game-rewind!."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
+  (check-substeps "make-game" substeps)
   (%make-game title width height frame-delay scene update render engine-update
-              collision-mode (make-input '() '()) input-script 0 '() history '()))
+              collision-mode substeps (and resting-contacts? #t)
+              (make-input '() '()) input-script 0 '() history '()))
 
 ;;; ---------------------------------------------------------------- time travel
 ;;; Scenes are values, so keeping the past costs one pointer per frame.
@@ -198,6 +218,22 @@ has a tilemap — never past the map's right or bottom edge."
   ;; The actions of the last entry at or before FRAME: entries are key frames.
   (let loop ((s script) (held '()))
     (if (or (null? s) (> (caar s) frame)) held (loop (cdr s) (cdar s)))))
+
+;;; Recording input, to replay a run exactly (a bug report, a determinism test).
+(define (input-held-actions input)
+  "The list of actions held in INPUT's frame: what an input log records."
+  (input-held-list input))
+
+(define (input-log->script log)
+  "The input script that replays LOG, a list of the actions held in each
+frame from frame 0 on: a key frame (frame . actions) for frame 0 and for
+every frame whose set of held actions differs from the frame before."
+  (let loop ((log log) (frame 0) (previous #f) (acc '()))
+    (cond ((null? log) (reverse acc))
+          ((and previous (lset= eq? previous (car log))) (loop (cdr log) (+ frame 1) previous acc))
+          (else (loop (cdr log) (+ frame 1) (car log) (cons (cons frame (car log)) acc))))))
+
+(export input-held-actions input-log->script)
 
 (define* (game-run! game #:key (frames #f))
   "Run GAME headless at a fixed timestep (dt = frame-delay ms): input, then

@@ -1,0 +1,39 @@
+// scene-hash's native half: the physical state of an entity list, hashed
+// by the core (state_hash.hpp) so that Scheme and C++ agree on the bytes.
+#include "plist.hpp"
+#include "registry.hpp"
+#include "state_hash.hpp"
+
+namespace ds::guile {
+
+namespace {
+
+// Each plist is decoded as every physics step decodes it, so the hash sees
+// exactly the state the steps see (first occurrence of a key wins, a
+// missing key is exact 0 or #f) and refuses what they refuse.
+SCM scene_hash_entities(SCM entities) {
+    Failure f{.proc = "scene-hash"};
+    uint64_t hash = 0;
+    {
+        StateHash h;
+        Decoded d;
+        SCM p = entities;
+        for (; scm_is_pair(p) && !f; p = SCM_CDR(p))
+            if (decode_entity(SCM_CAR(p), d, f)) h.add(d.body);
+        if (!f && !scm_is_null(p))
+            fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");
+        hash = h.value();
+    }
+    if (f) raise(f);
+    return scm_from_uint64(hash);
+}
+
+}  // namespace
+
+void register_hash_procedures() {
+    define_procedure("%scene-hash-entities", 1, 0, 0, (Subr)scene_hash_entities,
+                     "(entities): the 64-bit FNV-1a hash of the entities' physical state "
+                     "(x y width height vx vy ay on-ground?), as an exact integer.");
+}
+
+}  // namespace ds::guile

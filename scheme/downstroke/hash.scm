@@ -1,0 +1,19 @@
+;;; (downstroke hash) — a fingerprint of a scene's physical state, for
+;;; checking that two runs are the same run (determinism, replays, native
+;;; against reference) one integer per frame.
+(define-module (downstroke hash)
+  #:use-module ((downstroke native) #:select (%scene-hash-entities))
+  #:use-module (downstroke world)
+  #:export (scene-hash))
+
+(define (scene-hash scene)
+  "The 64-bit FNV-1a hash of SCENE's physical state, an exact integer in
+[0, 2^64): for each entity in list order, #:x #:y #:width #:height #:vx #:vy
+#:ay (each as physics reads it: exactness and, for flonums, the sign of
+zero count; a missing key is exact 0) and #:on-ground?. Nothing else counts:
+not other keys (#:id, #:solid?, your own), not key order, not the tilemap
+or the camera. The byte layout is in src/state_hash.hpp;
+(downstroke reference-hash) computes the same value in plain Scheme."
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg "scene-hash" "expected a scene, got ~S" (list scene) #f))
+  (%scene-hash-entities (scene-entities scene)))
