@@ -3,6 +3,7 @@
 
 #include "args.hpp"
 #include "batch.hpp"
+#include "plist.hpp"
 #include "keys.hpp"
 #include "registry.hpp"
 #include "scm_number.hpp"
@@ -71,15 +72,17 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                                                  : std::span<const Body>(),
                                          batch.writes, batch.quiet);
                 t0 = Clock::now();
-                result = encode_batch(list, batch);
-                note_settled(batch);
-                stats.encode.ms = ms_since(t0);
-                const StepStats tween_stats = stats.core.step[kStepTweens];
-                stats.core = batch.frame.stats();
-                stats.core.step[kStepTweens] = tween_stats;
-                stats.entities = batch.size();
-                stats.decode.processed = stats.encode.processed = batch.size();
-                last_frame = stats;
+                if (check_finite(batch.bodies, f)) {
+                    result = encode_batch(list, batch);
+                    note_settled(batch);
+                    stats.encode.ms = ms_since(t0);
+                    const StepStats tween_stats = stats.core.step[kStepTweens];
+                    stats.core = batch.frame.stats();
+                    stats.core.step[kStepTweens] = tween_stats;
+                    stats.entities = batch.size();
+                    stats.decode.processed = stats.encode.processed = batch.size();
+                    last_frame = stats;
+                }
             }
         }
     }

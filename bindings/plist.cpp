@@ -1,5 +1,7 @@
 #include "plist.hpp"
 
+#include <cmath>
+
 #include "cons.hpp"
 #include "scm_number.hpp"
 
@@ -191,6 +193,20 @@ Edit field_edit(int bit, const Body& b) {
 }
 
 }  // namespace
+
+bool check_finite(std::span<const Body> bodies, Failure& f) {
+    for (const Body& b : bodies) {
+        const Num* nums[] = {&b.x, &b.y, &b.w, &b.h, &b.vx, &b.vy, &b.ay, &b.local_x, &b.local_y};
+        static constexpr PhysKey kKeys[] = {kX, kY, kWidth, kHeight, kVx, kVy, kAy, kGroupLocalX, kGroupLocalY};
+        for (int i = 0; i < 9; ++i) {
+            if (std::isfinite(nums[i]->v)) continue;
+            fail(f, "out-of-range", scm_list_2(keys->key[kKeys[i]], scm_from_double(nums[i]->v)),
+                 "entity key ~S: the result ~S is beyond the range of a double");
+            return false;
+        }
+    }
+    return true;
+}
 
 uint16_t watched_fields(const Decoded& d) {
     uint16_t absent = 0;

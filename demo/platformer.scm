@@ -35,21 +35,37 @@
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f)))
 
 ;;; ------------------------------------------------------------ bookkeeping
+;;; Both records are bounded, so that a game left running (a soak test, a
+;;; REPL session) stays in constant memory: the history is a ring of the
+;;; last `history-frames' frames; the event list is cut back to its newest
+;;; `events-kept' once it holds twice that (in batches, so a note costs O(1)).
 (define trace? (main-script? "platformer.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
-(define history '())                    ; ((frame . player) ...), newest first
+(define events-kept 500)
+(define events-count 0)
+(define history-frames 1000)
+(define history (make-vector history-frames #f)) ; slot frame mod size: (frame . player)
 
 (define (note! game what)
   (set! events (cons (cons (game-frame game) what) events))
+  (set! events-count (+ events-count 1))
+  (when (> events-count (* 2 events-kept))
+    (set! events (list-head events events-kept))
+    (set! events-count events-kept))
   (when trace? (format #t "frame ~3d: ~a~%" (game-frame game) what)))
+
+(define (remember! frame player)
+  (vector-set! history (modulo frame history-frames) (cons frame player)))
 
 (define (event-frames what)
   "The frames WHAT happened in, oldest first."
   (filter-map (lambda (e) (and (eq? (cdr e) what) (car e))) (reverse events)))
 
 (define (player-at frame)
-  "The player as it was at the end of FRAME."
-  (assv-ref history frame))
+  "The player as it was at the end of FRAME, or #f when FRAME is not one of
+the last `history-frames'."
+  (let ((slot (vector-ref history (modulo frame history-frames))))
+    (and slot (eqv? (car slot) frame) (cdr slot))))
 
 ;;; ------------------------------------------------------------ the game
 (define was-on-ground? #f)
@@ -97,7 +113,7 @@
   (let ((frame (game-frame game))
         (player (car (scene-entities (game-scene game))))
         (camera (scene-camera (game-scene game))))
-    (set! history (cons (cons frame player) history))
+    (remember! frame player)
     (when (and trace? (zero? (modulo frame 20)))
       (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)~a  camera (~a, ~a)~%"
               frame (entity-ref player #:x) (entity-ref player #:y)

@@ -21,19 +21,39 @@
 (use-modules (ice-9 format) (srfi srfi-1))
 
 ;;; ------------------------------------------------------------ bookkeeping
+;;; Both records are bounded, so that a game left running (a soak test, a
+;;; REPL session) stays in constant memory: the history is a ring of the
+;;; last `history-frames' frames; the event list is cut back to its newest
+;;; `events-kept' once it holds twice that (in batches, so a note costs O(1)).
 (define trace? (main-script? "tweens.scm"))
 (define events '())                     ; ((frame . what) ...), newest first
-(define history '())                    ; ((frame . entities) ...), newest first
+(define events-kept 500)
+(define events-count 0)
+(define history-frames 1000)
+(define history (make-vector history-frames #f)) ; slot frame mod size: (frame . entities)
 
 (define (note! what)
   ;; `game' is defined below; on-complete procedures run inside it.
   (let ((frame (game-frame game)))
     (set! events (cons (cons frame what) events))
+    (set! events-count (+ events-count 1))
+    (when (> events-count (* 2 events-kept))
+      (set! events (list-head events events-kept))
+      (set! events-count events-kept))
     (when trace? (format #t "frame ~3d: ~a~%" frame what))))
 
-(define (entities-at frame) (assv-ref history frame))
+(define (remember! frame entities)
+  (vector-set! history (modulo frame history-frames) (cons frame entities)))
+
+(define (entities-at frame)
+  "The entities as they were at the end of FRAME, or #f when FRAME is not
+one of the last `history-frames'."
+  (let ((slot (vector-ref history (modulo frame history-frames))))
+    (and slot (eqv? (car slot) frame) (cdr slot))))
+
 (define (entity-at frame id)
-  (find (lambda (e) (eq? (entity-ref e #:id) id)) (entities-at frame)))
+  (let ((entities (entities-at frame)))
+    (and entities (find (lambda (e) (eq? (entity-ref e #:id) id)) entities))))
 
 ;;; ------------------------------------------------------------ entities
 (define (tweened entity . args)
@@ -111,7 +131,7 @@
 (define (render game)
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
-    (set! history (cons (cons frame entities) history))
+    (remember! frame entities)
     (when (and trace? (zero? (modulo frame 20)))
       (let ((get (lambda (id key) (show (entity-ref (find (lambda (e) (eq? (entity-ref e #:id) id)) entities) key)))))
         (format #t "frame ~3d: slider x ~a  bouncer y ~a  pulse w ~a  repeater y ~a  looper x ~a  delayed x ~a  fader ~a  walker x ~a~%"

@@ -53,7 +53,7 @@
   (input game-input game-input-set!)
   (input-script game-input-script game-input-script-set!)
   (frame game-frame game-frame-set!)
-  (sounds game-sounds-reversed game-sounds-set!)
+  (sounds game-sound-log game-sound-log-set!)  ; (count . ((frame . name) …)), newest first
   (history-size game-history-size)
   (history game-history-list game-history-set!))  ; ((frame . scene) …), newest first
 
@@ -92,7 +92,7 @@ that many past frames for game-rewind!."
   (check-substeps "make-game" substeps)
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps (and resting-contacts? #t)
-              (make-input '() '()) input-script 0 '() history '()))
+              (make-input '() '()) input-script 0 '(0) history '()))
 
 ;;; ---------------------------------------------------------------- time travel
 ;;; Scenes are values, so keeping the past costs one pointer per frame.
@@ -172,9 +172,15 @@ frames to run, as in `downstroke demo/sandbox.scm 3600'."
     (when (< now deadline)
       (usleep (quotient (* (- deadline now) 1000000) internal-time-units-per-second)))))
 
+;; A game that runs for hours must not keep every sound it ever played: the
+;; log keeps the newest *sounds-kept*, trimmed in batches so that playing a
+;; sound stays O(1) on average.
+(define *sounds-kept* 4096)
+
 (define (game-sounds game)
-  "The sounds played so far, as (frame . name), oldest first."
-  (reverse (game-sounds-reversed game)))
+  "The sounds played lately, as (frame . name), oldest first: at least the
+newest 4096 (older ones are dropped, so a long run stays in bounded memory)."
+  (reverse (cdr (game-sound-log game))))
 
 (define (play-sound game-or-name . rest)
   "Play a sound. Headless, the sound is recorded with the frame it was played
@@ -182,8 +188,12 @@ in: (play-sound 'jump) uses the running game, (play-sound game 'jump) names it."
   (let ((game (if (game? game-or-name) game-or-name (current-game)))
         (name (if (game? game-or-name) (car rest) game-or-name)))
     (when game
-      (game-sounds-set! game (cons (cons (game-frame game) name)
-                                   (game-sounds-reversed game))))))
+      (let* ((log (game-sound-log game))
+             (count (+ (car log) 1))
+             (sounds (cons (cons (game-frame game) name) (cdr log))))
+        (game-sound-log-set! game (if (> count (* 2 *sounds-kept*))
+                                      (cons *sounds-kept* (list-head sounds *sounds-kept*))
+                                      (cons count sounds)))))))
 
 (define current-game (make-parameter #f))
 

@@ -36,7 +36,7 @@
 (define (as-double x)
   (cond ((not (exact? x)) x)
         ((and (integer? x) (< (abs x) (expt 2 53))) x)
-        ((integer? x) (inexact->exact (fl x)))
+        ((integer? x) (let ((d (fl x))) (if (inf? d) d (inexact->exact d))))   ; ∞: put refuses it
         (else (fl x))))                 ; exact fractions are read as flonums
 
 (define (num+ a b)
@@ -95,7 +95,11 @@
 
 (define (put e key old new)
   "E with KEY set to NEW, unless NEW is the value OLD that was read: a step
-writes a key only when its value or exactness changes."
+writes a key only when its value or exactness changes. A result beyond the
+range of a double (finite inputs near its limits) is an error."
+  (when (and (real? new) (inf? new))
+    (scm-error 'out-of-range #f "entity key ~S: the result ~S is beyond the range of a double"
+               (list key new) #f))
   (if (eqv? old new) e (entity-set e key new)))
 
 (define (entity-remove e key)

@@ -287,4 +287,12 @@
 (test-equal "a hook runs at the start of every frame, and once more at the end" 5 hook-calls)
 (test-equal "no pacing unless a REPL is served" #f (frame-pacing))
 
+(let ((g (make-game)))
+  (do ((i 0 (+ i 1))) ((= i 10000)) (play-sound g i))
+  (let ((sounds (game-sounds g)))
+    (test-assert "the sound log keeps at least the newest 4096, and no more than 8192"
+      (<= 4096 (length sounds) 8192))
+    (test-equal "… oldest first, ending with the newest" '(4097 9999)
+      (list (cdar sounds) (cdr (car (last-pair sounds)))))))
+
 (test-end "engine")
