@@ -1,9 +1,11 @@
-// downstroke-bench: how long one physics frame takes, per scene × N × path.
+// downstroke-bench: how long one physics frame takes, per scene × N × path
+// (speed, the default mode); how each demo's memory behaves over many frames
+// (soak, soak.cpp); run time against error (accuracy, accuracy.cpp).
 //
 //   downstroke-bench [speed] [--scene S] [--n N] [--path P] [--frames F]
 //                    [--warmup W] [--json FILE] [--org FILE]
-//
-// The first positional argument is the mode; only `speed` exists so far.
+//   downstroke-bench soak [--frames N] [--org FILE]
+//   downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -11,12 +13,14 @@
 #include <memory>
 #include <stdexcept>
 
+#include "accuracy.hpp"
 #include "isolate.hpp"
 #include "options.hpp"
 #include "paths.hpp"
 #include "runs.hpp"
 #include "report.hpp"
 #include "scenes.hpp"
+#include "soak.hpp"
 #include "timing.hpp"
 
 namespace bench {
@@ -192,13 +196,15 @@ int speed(const Options& opts) {
 int main(int argc, char** argv) {
     try {
         if (argc > 1 && std::string(argv[1]) == "child") return bench::child_main(argc, argv);
+        if (argc > 1 && std::string(argv[1]) == "accuracy") return bench::accuracy_main(argc, argv);
         const bench::Options opts = bench::parse_options(argc, argv);
         if (opts.help) {
             std::fputs(bench::usage().c_str(), stdout);
             return EXIT_SUCCESS;
         }
+        if (opts.mode == "soak") return bench::soak(opts);
         if (opts.mode != "speed") {
-            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed)\n", opts.mode.c_str());
+            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy)\n", opts.mode.c_str());
             return 2;
         }
         return bench::speed(opts);

@@ -62,7 +62,10 @@ int default_warmup() { return 10; }
 int default_reps(int n) { return n <= 100 ? 10 : n <= 1000 ? 4 : n <= 10000 ? 2 : 1; }
 
 std::string usage() {
-    return "usage: downstroke-bench [speed] [options]\n"
+    return "usage: downstroke-bench [speed] [options]   how long a frame takes\n"
+           "       downstroke-bench soak [--frames N] [--org FILE]   memory of each demo over N frames\n"
+           "       downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]   run time against error\n"
+           "speed options:\n"
            "  --scene S[,S…]   rain crowd rest bullets platformer (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"
            "  --path P[,P…]    guile native bare reference box2d box2d-discrete\n"

@@ -8,38 +8,13 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "guile_boot.hpp"
 #include "paths.hpp"
 #include "timing.hpp"
-
-extern "C" void ds_init_native();
 
 namespace bench {
 
 namespace {
-
-void prepend(const char* variable, const char* dir) {
-    SCM var = scm_c_lookup(variable);
-    scm_variable_set_x(var, scm_cons(scm_from_utf8_string(dir), scm_variable_ref(var)));
-}
-
-void* init_guile(void*) {
-    scm_c_register_extension("libdownstroke-guile", "ds_init_native",
-                             reinterpret_cast<void (*)(void*)>(+[](void*) { ds_init_native(); }), nullptr);
-    prepend("%load-path", DS_SCHEME_DIR);
-    prepend("%load-compiled-path", DS_GO_DIR);
-    prepend("%load-path", DS_BENCH_SCHEME_DIR);
-    prepend("%load-compiled-path", DS_BENCH_GO_DIR);
-    return nullptr;
-}
-
-void ensure_guile() {
-    static bool booted = false;
-    if (booted) return;
-    // Compiled modules only: never fall back to compiling at run time.
-    setenv("GUILE_AUTO_COMPILE", "0", 0);
-    scm_with_guile(init_guile, nullptr);
-    booted = true;
-}
 
 SCM kw(const char* name) { return scm_from_utf8_keyword(name); }
 SCM num(int64_t v) { return scm_from_int64(v); }

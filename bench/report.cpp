@@ -9,19 +9,11 @@
 #include <stdexcept>
 #include <thread>
 
+#include "org_file.hpp"
+
 namespace bench {
 
 namespace {
-
-// v with about three significant digits, never in exponent form.
-std::string sig3(double v) {
-    char buf[64];
-    const double a = std::fabs(v);
-    int decimals = a == 0 ? 0 : 2 - static_cast<int>(std::floor(std::log10(a)));
-    decimals = decimals < 0 ? 0 : decimals > 6 ? 6 : decimals;
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
 
 std::string count(double v) {
     char buf[64];
@@ -339,26 +331,7 @@ void write_json(const std::string& file, const RunInfo& info, const std::vector<
 }
 
 void write_org(const std::string& file, const RunInfo& info, const std::vector<Row>& rows) {
-    std::string before, after;
-    bool kept = false;
-    if (std::ifstream in(file); in) {
-        std::stringstream ss;
-        ss << in.rdbuf();
-        const std::string old = ss.str();
-        const auto b = old.find(kBegin), e = old.find(kEnd);
-        if (b != std::string::npos && e != std::string::npos && e > b) {
-            before = old.substr(0, b);
-            after = old.substr(old.find('\n', e) == std::string::npos ? old.size() : old.find('\n', e) + 1);
-            kept = true;
-        }
-    }
-    if (!kept) {
-        before = kOrgIntro;
-        after = kOrgNotes;
-    }
-    std::ofstream o(file);
-    if (!o) throw std::runtime_error("cannot write " + file);
-    o << before << org_results(info, rows) << after;
+    write_generated(file, kBegin, kEnd, org_results(info, rows), kOrgIntro, kOrgNotes);
 }
 
 }  // namespace bench

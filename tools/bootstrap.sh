@@ -5,7 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev libbox2d-dev)
+# libbox2d-dev and gnuplot-nox only serve the benchmarks (the box2d path; the accuracy plot).
+packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev libbox2d-dev gnuplot-nox)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
