@@ -84,9 +84,25 @@ void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
 }
 
 void note_settled(Batch& batch) {
-    for (size_t i = 0; i < batch.size(); ++i)
+    batch.all_settled = true;
+    for (size_t i = 0; i < batch.size(); ++i) {
         batch.cached[i].settled = !batch.has_tween[i] && !batch.changed[i] &&
                                   !depends_on_others(batch.before[i], batch.colliders);
+        batch.all_settled &= batch.cached[i].settled;
+    }
+}
+
+bool frame_is_noop(const Batch& batch, SCM entities, SCM tilemap, const FrameOptions& opts) {
+    return batch.all_settled && scm_is_true(batch.last_result) &&
+           scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 0), entities) &&
+           scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 1), tilemap) &&
+           opts.same_physics(batch.frame_opts);
+}
+
+void note_result(Batch& batch, SCM result, SCM tilemap) {
+    if (scm_is_false(batch.last_result)) batch.last_result = scm_gc_protect_object(scm_c_make_vector(2, SCM_BOOL_F));
+    SCM_SIMPLE_VECTOR_SET(batch.last_result, 0, result);
+    SCM_SIMPLE_VECTOR_SET(batch.last_result, 1, tilemap);
 }
 
 namespace {

@@ -41,6 +41,13 @@ struct Batch {
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
+    // The list the last whole frame returned and its tilemap (slots 0 and 1
+    // of a protected vector, so neither can be recycled into a look-alike at
+    // the same address), and whether every entity in it had settled: handed
+    // that very list again under the same map and options, the frame would
+    // change nothing.
+    SCM last_result = SCM_BOOL_F;
+    bool all_settled = false;
     // The map and options (mode, substeps, contacts) of the last whole frame,
     // which settled entities assume.
     const TileGrid* frame_grid = nullptr;
@@ -64,6 +71,12 @@ SCM encode_batch(SCM entities, Batch& batch);
 // frame (after encode_batch) records which entities settled. Both by position.
 void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
 void note_settled(Batch& batch);
+
+// Whether `entities` is the list the last whole frame returned, every entity
+// of it settled, under the same map and options: the frame is a no-op.
+bool frame_is_noop(const Batch& batch, SCM entities, SCM tilemap, const FrameOptions& opts);
+// Records the list a whole frame returned and its tilemap (after note_settled).
+void note_result(Batch& batch, SCM result, SCM tilemap);
 
 // A scratch Batch for the current native call. Nested calls (a Scheme
 // callback stepping another scene) get their own; the lease is returned by a

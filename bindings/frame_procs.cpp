@@ -54,7 +54,13 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
         auto t0 = Clock::now();
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
-            decode_batch(entities, batch, f)) {
+            frame_is_noop(batch, entities, tilemap, opts)) {
+            // Nothing settled can change: skip even the decoding.
+            stats.entities = batch.size();
+            stats.decode.skipped = stats.encode.skipped = batch.size();
+            for (StepStats& s : stats.core.step) s.skipped = batch.size();
+            last_frame = stats;
+        } else if (!f && decode_batch(entities, batch, f)) {
             stats.decode.ms = ms_since(t0);
             t0 = Clock::now();
             SCM list = step_list_tweens(entities, batch, opts.dt, f);
@@ -75,6 +81,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                 if (check_finite(batch.bodies, f)) {
                     result = encode_batch(list, batch);
                     note_settled(batch);
+                    note_result(batch, result, tilemap);
                     stats.encode.ms = ms_since(t0);
                     const StepStats tween_stats = stats.core.step[kStepTweens];
                     stats.core = batch.frame.stats();

@@ -331,4 +331,33 @@
 (test-equal "step-scene: same (detect-on-solid must see the frame-start scene)" #t
   (entity-ref (cadr (scene-entities (step-scene lift-scene 20))) #:on-ground?))
 
+;;; ---------------------------------------------------------------- a scene at rest
+;;; Handed back the very list it returned, with every entity settled, under
+;;; the same map and options, step-scene knows the frame is a no-op and does
+;;; not even decode: the scene comes back as itself and every step reports
+;;; all entities skipped. Any other input takes the full path.
+(define shelf (make-tilemap 4 4 16 16 (append (make-list 12 0) (make-list 4 1)) '(1)))
+(define resting-boxes
+  (map (lambda (i) (list #:x (* 16 i) #:y 40 #:width 8 #:height 8 #:gravity? #t)) (iota 4)))
+(define settled
+  (let loop ((i 0) (s (make-scene #:entities resting-boxes #:tilemap shelf)))
+    (if (= i 3) s (loop (+ i 1) (step-scene s 16)))))
+(define (noop-stats) (engine-stats (make-game)))
+(test-eq "a settled scene comes back as itself" settled (step-scene settled 16))
+(test-equal "… and no step processed anything"
+  '((decode 0 4) (tweens 0 4) (acceleration 0 4) (gravity 0 4) (velocity-x 0 4)
+    (tile-collisions-x 0 4) (velocity-y 0 4) (tile-collisions-y 0 4) (on-solid 0 4)
+    (entity-collisions 0 4) (groups 0 4) (encode 0 4))
+  (map (lambda (row) (list-head row 3)) (noop-stats)))
+(test-equal "the same list on another map is stepped: without the floor they fall"
+  '(41 41 41 41)
+  (map (lambda (e) (entity-ref e #:y))
+       (scene-entities (step-scene (update-scene settled #:tilemap (make-tilemap 4 4 16 16 (make-list 16 0) '(1)))
+                                   16))))
+(test-equal "… and with other options: two sub-frames make y a flonum" '(40.0 40.0 40.0 40.0)
+  (map (lambda (e) (entity-ref e #:y)) (scene-entities (step-scene settled 16 #:substeps 2))))
+(test-eq "a new list with the same entities takes the full path, and is unchanged"
+  (car (scene-entities settled))
+  (car (scene-entities (step-scene (update-scene settled #:entities (list-copy (scene-entities settled))) 16))))
+
 (test-end "world")
