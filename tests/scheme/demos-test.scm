@@ -3,18 +3,7 @@
 ;;; maps (demo/maps/*.tmx, written by demo/maps/make_maps.py).
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
 
-;;; demo/ is ../../demo from this file; DS_TEST_DATA (tests/data) is a
-;;; fallback, then the working directory.
-(define demo-dir
-  (let ((candidates
-         (append (let ((here (current-filename)))
-                   (if here (list (string-append (dirname here) "/../../demo")) '()))
-                 (let ((data (getenv "DS_TEST_DATA")))
-                   (if data (list (string-append data "/../../demo")) '()))
-                 (list "demo"))))
-    (canonicalize-path
-     (or (find (lambda (d) (file-exists? (string-append d "/platformer.scm"))) candidates)
-         (error "demos-test: cannot find the demo directory" candidates)))))
+(load "support.scm")   ; demo-dir
 
 (define (load-demo name)
   "A fresh module that uses (downstroke), with demo/NAME loaded into it. The

@@ -182,16 +182,7 @@
       (> (length (delete-duplicates swept)) 1))))
 
 ;;; ================================================================ the demos
-(define demo-dir
-  (let ((candidates
-         (append (let ((here (current-filename)))
-                   (if here (list (string-append (dirname here) "/../../demo")) '()))
-                 (let ((data (getenv "DS_TEST_DATA")))
-                   (if data (list (string-append data "/../../demo")) '()))
-                 (list "demo"))))
-    (canonicalize-path
-     (or (find (lambda (d) (file-exists? (string-append d "/platformer.scm"))) candidates)
-         (error "determinism-test: cannot find the demo directory" candidates)))))
+;; demo-dir comes from support.scm.
 
 (define (plist-remove plist key)
   (cond ((null? plist) '())

@@ -12,3 +12,16 @@
 ;;; Whether TEXT contains every one of PARTS.
 (define (mentions? text . parts)
   (and (string? text) (every (lambda (p) (string-contains text p)) parts) #t))
+
+;;; The demo/ directory: ../../demo from this file, else from DS_TEST_DATA
+;;; (tests/data), else the working directory's demo/.
+(define demo-dir
+  (let ((candidates
+         (append (let ((here (current-filename)))
+                   (if here (list (string-append (dirname here) "/../../demo")) '()))
+                 (let ((data (getenv "DS_TEST_DATA")))
+                   (if data (list (string-append data "/../../demo")) '()))
+                 (list "demo"))))
+    (canonicalize-path
+     (or (find (lambda (d) (file-exists? (string-append d "/platformer.scm"))) candidates)
+         (error "cannot find the demo directory" candidates)))))
