@@ -103,6 +103,7 @@ void note_result(Batch& batch, SCM result, SCM tilemap) {
     if (scm_is_false(batch.last_result)) batch.last_result = scm_gc_protect_object(scm_c_make_vector(2, SCM_BOOL_F));
     SCM_SIMPLE_VECTOR_SET(batch.last_result, 0, result);
     SCM_SIMPLE_VECTOR_SET(batch.last_result, 1, tilemap);
+    batch.last_count = batch.size();
 }
 
 namespace {

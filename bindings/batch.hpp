@@ -47,6 +47,7 @@ struct Batch {
     // that very list again under the same map and options, the frame would
     // change nothing.
     SCM last_result = SCM_BOOL_F;
+    size_t last_count = 0;  // its length (the other calls sharing this Batch resize `bodies`)
     bool all_settled = false;
     // The map and options (mode, substeps, contacts) of the last whole frame,
     // which settled entities assume.

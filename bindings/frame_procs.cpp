@@ -56,9 +56,9 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             substeps_from_scm(substeps, opts.substeps, f) &&
             frame_is_noop(batch, entities, tilemap, opts)) {
             // Nothing settled can change: skip even the decoding.
-            stats.entities = batch.size();
-            stats.decode.skipped = stats.encode.skipped = batch.size();
-            for (StepStats& s : stats.core.step) s.skipped = batch.size();
+            stats.entities = batch.last_count;
+            stats.decode.skipped = stats.encode.skipped = batch.last_count;
+            for (StepStats& s : stats.core.step) s.skipped = batch.last_count;
             last_frame = stats;
         } else if (!f && decode_batch(entities, batch, f)) {
             stats.decode.ms = ms_since(t0);

@@ -349,6 +349,10 @@
     (tile-collisions-x 0 4) (velocity-y 0 4) (tile-collisions-y 0 4) (on-solid 0 4)
     (entity-collisions 0 4) (groups 0 4) (encode 0 4))
   (map (lambda (row) (list-head row 3)) (noop-stats)))
+(resolve-entity-collisions (list '(#:x 0 #:y 0 #:width 8 #:height 8 #:solid? #t)))
+(step-scene settled 16)
+(test-equal "… its figures count the scene's entities, whatever ran in between"
+  '(decode 0 4) (list-head (car (noop-stats)) 3))
 (test-equal "the same list on another map is stepped: without the floor they fall"
   '(41 41 41 41)
   (map (lambda (e) (entity-ref e #:y))
