@@ -55,7 +55,7 @@
   (frame game-frame game-frame-set!)
   (sounds game-sound-log game-sound-log-set!)  ; (count . ((frame . name) …)), newest first
   (history-size game-history-size)
-  (history game-history-list game-history-set!))  ; ((frame . scene) …), newest first
+  (history game-history-log game-history-log-set!))  ; a bounded log of (frame . scene)
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -92,37 +92,53 @@ that many past frames for game-rewind!."
   (check-substeps "make-game" substeps)
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps (and resting-contacts? #t)
-              (make-input '() '()) input-script 0 '(0) history '()))
+              (make-input '() '()) input-script 0 (make-log) history (make-log)))
 
 ;;; ---------------------------------------------------------------- time travel
 ;;; Scenes are values, so keeping the past costs one pointer per frame.
+
+;;; ---------------------------------------------------------------- bounded logs
+;;; The history and the sound log run for as long as the game does: each is a
+;;; newest-first list kept with its length, (count . items), cut back to its
+;;; newest KEEP entries once it holds twice that — one copy per KEEP additions,
+;;; so adding stays O(1) on average and memory stays bounded.
+
+(define (make-log) '(0))
+(define (log-push log item keep)
+  (let ((count (+ (car log) 1)) (items (cons item (cdr log))))
+    (if (> count (* 2 keep)) (cons keep (list-head items keep)) (cons count items))))
+(define (log-newest log n)
+  "The newest N items (all of them when there are fewer), newest first."
+  (if (> (car log) n) (list-head (cdr log) n) (cdr log)))
 
 (define (remember-scene! game)
   "Record the scene as it is at the start of the coming frame."
   (let ((n (game-history-size game)))
     (when (> n 0)
-      (let ((past (cons (cons (game-frame game) (game-scene game)) (game-history-list game))))
-        (game-history-set! game (if (> (length past) n) (list-head past n) past))))))
+      (game-history-log-set! game (log-push (game-history-log game)
+                                            (cons (game-frame game) (game-scene game)) n)))))
 
 (define (game-history game)
   "The remembered (frame . scene) pairs, newest first: the scene each frame
 started from."
-  (game-history-list game))
+  (log-newest (game-history-log game) (game-history-size game)))
 
 (define (game-rewind! game k)
   "Go back K frames: the scene becomes the one frame (current − K) started
 from, and the game continues from that frame (its input script included).
 Returns that frame's number."
   (let* ((target (- (game-frame game) k))
-         (entry (assv target (game-history-list game))))
+         (past (game-history game))
+         (entry (assv target past)))
     (unless (and (exact-integer? k) (> k 0) entry)
       (scm-error 'out-of-range "game-rewind!"
                  "cannot go back ~S frames: ~S remembered (make-game history: N)"
-                 (list k (length (game-history-list game))) #f))
+                 (list k (length past)) #f))
     (game-scene-set! game (cdr entry))
     (game-frame-set! game target)
     ;; Forget the future we left: the next frames record it anew.
-    (game-history-set! game (filter (lambda (e) (< (car e) target)) (game-history-list game)))
+    (let ((kept (filter (lambda (e) (< (car e) target)) past)))
+      (game-history-log-set! game (cons (length kept) kept)))
     target))
 
 ;;; ---------------------------------------------------------------- costs
@@ -172,9 +188,7 @@ frames to run, as in `downstroke demo/sandbox.scm 3600'."
     (when (< now deadline)
       (usleep (quotient (* (- deadline now) 1000000) internal-time-units-per-second)))))
 
-;; A game that runs for hours must not keep every sound it ever played: the
-;; log keeps the newest *sounds-kept*, trimmed in batches so that playing a
-;; sound stays O(1) on average.
+;; A game that runs for hours must not keep every sound it ever played.
 (define *sounds-kept* 4096)
 
 (define (game-sounds game)
@@ -188,12 +202,8 @@ in: (play-sound 'jump) uses the running game, (play-sound game 'jump) names it."
   (let ((game (if (game? game-or-name) game-or-name (current-game)))
         (name (if (game? game-or-name) (car rest) game-or-name)))
     (when game
-      (let* ((log (game-sound-log game))
-             (count (+ (car log) 1))
-             (sounds (cons (cons (game-frame game) name) (cdr log))))
-        (game-sound-log-set! game (if (> count (* 2 *sounds-kept*))
-                                      (cons *sounds-kept* (list-head sounds *sounds-kept*))
-                                      (cons count sounds)))))))
+      (game-sound-log-set! game (log-push (game-sound-log game)
+                                          (cons (game-frame game) name) *sounds-kept*)))))
 
 (define current-game (make-parameter #f))
 
