@@ -12,6 +12,7 @@
 #include "accuracy_jobs.hpp"
 #include "accuracy_plot.hpp"
 #include "accuracy_report.hpp"
+#include "options.hpp"
 #include "timing.hpp"
 
 namespace bench::accuracy {
@@ -34,21 +35,9 @@ const char* kUsage =
     "  --every-frame  step every frame of the long runs, even once their state cycles\n"
     "  --jobs N     threads for the untimed runs (default: one per core)\n";
 
-int jobs_arg(const std::string& v) {
-    size_t used = 0;
-    int n = 0;
-    try {
-        n = std::stoi(v, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != v.size() || n < 1) throw std::invalid_argument("--jobs: expected a count, got '" + v + "'");
-    return n;
-}
-
 Args parse(int argc, char** argv) {
     Args a;
-    for (int i = 0; i < argc; ++i) a.command += (i ? " " : "") + std::string(argv[i]);
+    a.command = command_line(argc, argv);
     for (int i = 2; i < argc; ++i) {
         const std::string opt = argv[i];
         auto value = [&]() -> std::string {
@@ -59,7 +48,7 @@ Args parse(int argc, char** argv) {
         else if (opt == "--org") a.org = value();
         else if (opt == "--png") a.png = value();
         else if (opt == "--every-frame") a.every_frame = true;
-        else if (opt == "--jobs") a.jobs = jobs_arg(value());
+        else if (opt == "--jobs") a.jobs = count_arg(opt, value(), 1);
         else if (opt == "--help" || opt == "-h") a.help = true;
         else throw std::invalid_argument("accuracy: unknown argument " + opt);
     }

@@ -18,18 +18,6 @@ std::vector<std::string> split(const std::string& s) {
     return out;
 }
 
-int to_int(const std::string& opt, const std::string& v) {
-    size_t used = 0;
-    int n = 0;
-    try {
-        n = std::stoi(v, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != v.size() || n < 0) throw std::invalid_argument(opt + ": expected a count, got '" + v + "'");
-    return n;
-}
-
 double to_double(const std::string& opt, const std::string& v) {
     size_t used = 0;
     double d = 0;
@@ -50,6 +38,24 @@ std::string quoted(const std::string& arg) {
 }
 
 }  // namespace
+
+int count_arg(const std::string& opt, const std::string& v, int least) {
+    size_t used = 0;
+    int n = 0;
+    try {
+        n = std::stoi(v, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != v.size() || n < least) throw std::invalid_argument(opt + ": expected a count, got '" + v + "'");
+    return n;
+}
+
+std::string command_line(int argc, char** argv) {
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + quoted(argv[i]);
+    return command;
+}
 
 const std::vector<std::string>& path_names() {
     static const std::vector<std::string> names = {"guile", "native", "bare", "reference", "box2d",
@@ -83,7 +89,7 @@ std::string usage() {
 
 Options parse_options(int argc, char** argv) {
     Options o;
-    for (int i = 0; i < argc; ++i) o.command += (i ? " " : "") + quoted(argv[i]);
+    o.command = command_line(argc, argv);
     bool positional_seen = false;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
@@ -106,7 +112,7 @@ Options parse_options(int argc, char** argv) {
             }
         else if (a == "--n")
             for (auto& s : split(value)) {
-                const int n = to_int(a, s);
+                const int n = count_arg(a, s, 0);
                 if (n == 0) throw std::invalid_argument("--n: N must be at least 1");
                 o.ns.push_back(n);
             }
@@ -117,11 +123,11 @@ Options parse_options(int argc, char** argv) {
                 o.paths.push_back(s);
             }
         else if (a == "--frames") {
-            o.frames = to_int(a, value);
+            o.frames = count_arg(a, value, 0);
             if (o.frames == 0) throw std::invalid_argument("--frames: at least 1");
-        } else if (a == "--warmup") o.warmup = to_int(a, value);
+        } else if (a == "--warmup") o.warmup = count_arg(a, value, 0);
         else if (a == "--reps") {
-            o.reps = to_int(a, value);
+            o.reps = count_arg(a, value, 0);
             if (o.reps == 0) throw std::invalid_argument("--reps: at least 1");
         }
         else if (a == "--json") o.json = value;
