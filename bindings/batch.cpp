@@ -127,13 +127,14 @@ void remember(Batch& batch, size_t i, SCM entity) {
 
 }  // namespace
 
-SCM encode_batch(SCM entities, Batch& batch) {
+SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
     // Find the last entity that changed: the spine is copied up to it.
     size_t last = 0;
     batch.changed.resize(batch.size());
     batch.fields.resize(batch.size());
     for (size_t i = 0; i < batch.size(); ++i) {
         batch.fields[i] = changed_fields(batch.before[i], batch.bodies[i]);
+        if (!check_finite(batch.bodies[i], batch.fields[i], f)) return entities;
         batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
         if (batch.changed[i]) last = i + 1;
     }

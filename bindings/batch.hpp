@@ -64,8 +64,9 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f);
 // The entity list after the steps: entities whose bodies did not change are
 // the same objects, the spine after the last changed entity is shared, and
 // the list itself comes back when nothing changed.
-// Also records which entities changed (Batch::changed).
-SCM encode_batch(SCM entities, Batch& batch);
+// Also records which entities changed (Batch::changed). Fails, returning
+// the list as it was, when a changed value left the range of a double.
+SCM encode_batch(SCM entities, Batch& batch, Failure& f);
 
 // Marks the entities a whole frame can leave alone (settled, same object,
 // same map and mode, still depending on no other entity), and after the

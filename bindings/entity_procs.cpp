@@ -29,8 +29,8 @@ SCM step_entity(const char* proc, SCM entity, Step step) {
             const Body before = d.body;
             step(d.body);
             Edit edits[16];
-            if (check_finite(std::span<const Body>(&d.body, 1), f))
-                result = rewrite_plist(entity, edits, field_edits(changed_fields(before, d.body), d.body, edits));
+            const uint32_t changed = changed_fields(before, d.body);
+            if (check_finite(d.body, changed, f)) result = rewrite_plist(entity, edits, field_edits(changed, d.body, edits));
         }
     }
     if (f) raise(f);
@@ -91,7 +91,7 @@ SCM bulk_step(const char* proc, SCM entities) {
         Batch& batch = lease_batch();
         if (decode_batch(entities, batch, f)) {
             Bulk(batch.bodies);
-            if (check_finite(batch.bodies, f)) result = encode_batch(entities, batch);
+            result = encode_batch(entities, batch, f);
         }
     }
     scm_dynwind_end();

@@ -78,8 +78,8 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                                                  : std::span<const Body>(),
                                          batch.writes, batch.quiet);
                 t0 = Clock::now();
-                if (check_finite(batch.bodies, f)) {
-                    result = encode_batch(list, batch);
+                result = encode_batch(list, batch, f);
+                if (!f) {
                     note_settled(batch);
                     note_result(batch, result, tilemap);
                     stats.encode.ms = ms_since(t0);

@@ -194,16 +194,15 @@ Edit field_edit(int bit, const Body& b) {
 
 }  // namespace
 
-bool check_finite(std::span<const Body> bodies, Failure& f) {
-    for (const Body& b : bodies) {
-        const Num* nums[] = {&b.x, &b.y, &b.w, &b.h, &b.vx, &b.vy, &b.ay, &b.local_x, &b.local_y};
-        static constexpr PhysKey kKeys[] = {kX, kY, kWidth, kHeight, kVx, kVy, kAy, kGroupLocalX, kGroupLocalY};
-        for (int i = 0; i < 9; ++i) {
-            if (std::isfinite(nums[i]->v)) continue;
-            fail(f, "out-of-range", scm_list_2(keys->key[kKeys[i]], scm_from_double(nums[i]->v)),
-                 "entity key ~S: the result ~S is beyond the range of a double");
-            return false;
-        }
+bool check_finite(const Body& b, uint32_t fields, Failure& f) {
+    // In Field bit order: x y width height vx vy ay group-local-x group-local-y.
+    const Num* nums[] = {&b.x, &b.y, &b.w, &b.h, &b.vx, &b.vy, &b.ay, &b.local_x, &b.local_y};
+    static constexpr PhysKey kKeys[] = {kX, kY, kWidth, kHeight, kVx, kVy, kAy, kGroupLocalX, kGroupLocalY};
+    for (int i = 0; i < 9; ++i) {
+        if (!((fields >> i) & 1u) || std::isfinite(nums[i]->v)) continue;
+        fail(f, "out-of-range", scm_list_2(keys->key[kKeys[i]], scm_from_double(nums[i]->v)),
+             "entity key ~S: the result ~S is beyond the range of a double");
+        return false;
     }
     return true;
 }

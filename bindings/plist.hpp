@@ -4,8 +4,6 @@
 #pragma once
 #include <libguile.h>
 
-#include <span>
-
 #include <cstddef>
 #include <cstdint>
 
@@ -56,10 +54,11 @@ uint16_t watched_fields(const Decoded& d);
 size_t field_edits(uint32_t changed, const Body& after, Edit* out,
                    const FirstWrites* writes = nullptr);
 
-// Fails (out-of-range, naming the key and the value) when a step's result
-// left the range of a double: finite inputs near ±1.8e308 can overflow, and
-// the next step would refuse the infinity with a less helpful message.
-bool check_finite(std::span<const Body> bodies, Failure& f);
+// Fails (out-of-range, naming the key and the value) when one of the Field
+// bits in `fields` (those a step changed: decoding already refused non-finite
+// input) left the range of a double: finite inputs near ±1.8e308 can
+// overflow, and the next step would refuse the infinity less helpfully.
+bool check_finite(const Body& b, uint32_t fields, Failure& f);
 
 // The value of the first occurrence of key in plist, or fallback. No checks:
 // for plists already validated by decode_entity.
