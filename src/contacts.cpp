@@ -113,6 +113,16 @@ void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
 // Below this many solid bodies trying every pair is cheaper than a grid.
 constexpr size_t kSweepFrom = 48;
 
+void run_pairs(std::span<Body> bodies, std::span<const size_t> members, PairMethod method,
+               std::span<const uint8_t> resting) {
+    thread_local PairSweep sweep;
+    if (members.size() < 2) return;
+    const bool grid = method == PairMethod::Grid ||
+                      (method == PairMethod::Auto && members.size() >= kSweepFrom);
+    if (grid) sweep.run(bodies, members, resting);
+    else all_pairs(bodies, members, resting);
+}
+
 }  // namespace
 
 void resolve_entity_collisions(std::span<Body> bodies) {
@@ -128,15 +138,15 @@ void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
     // Only solid, non-ghost bodies take part; walking just those, in list
     // order, visits the eligible pairs in exactly the all-pairs order.
     thread_local std::vector<size_t> members;
-    thread_local PairSweep sweep;
     members.clear();
     for (size_t i = 0; i < bodies.size(); ++i)
         if (bodies[i].collides()) members.push_back(i);
-    if (members.size() < 2) return;
-    const bool grid = method == PairMethod::Grid ||
-                      (method == PairMethod::Auto && members.size() >= kSweepFrom);
-    if (grid) sweep.run(bodies, members, resting);
-    else all_pairs(bodies, members, resting);
+    run_pairs(bodies, members, method, resting);
+}
+
+void resolve_entity_collisions_among(std::span<Body> bodies, std::span<const size_t> members,
+                                     std::span<const uint8_t> resting) {
+    run_pairs(bodies, members, PairMethod::Auto, resting);
 }
 
 }  // namespace ds

@@ -34,5 +34,9 @@ void resolve_entity_collisions(std::span<Body> bodies);
 void resolve_entity_collisions(std::span<Body> bodies, std::span<const uint8_t> resting);
 void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting = {});
+// The same for a caller that already knows which bodies collide (Body::collides),
+// in list order: no sweep over the others.
+void resolve_entity_collisions_among(std::span<Body> bodies, std::span<const size_t> members,
+                                     std::span<const uint8_t> resting);
 
 }  // namespace ds

@@ -78,11 +78,10 @@ bool depends_on_others(const Body& b, bool supporters_exist) {
 
 template <class MayWrite, class Step>
 void Frame::pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
-                 std::span<const uint8_t> quiet, MayWrite&& may_write, Step&& step) {
+                 MayWrite&& may_write, Step&& step) {
     const auto t0 = Clock::now();
     uint64_t ran = 0;
-    for (size_t i = 0; i < bodies.size(); ++i) {
-        if (!quiet.empty() && quiet[i]) continue;
+    for (const uint32_t i : active_) {
         Body& b = bodies[i];
         ran += logged(b, writes.empty() ? nullptr : &writes[i], may_write(b),
                       [&](Body& c) { return step(c, i); });
@@ -107,7 +106,7 @@ bool Frame::rests(const Body& b, size_t i, const TileGrid* grid, bool indexed) {
 }
 
 void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                        int round, std::span<FirstWrites> writes, std::span<const uint8_t> quiet) {
+                        int round, std::span<FirstWrites> writes) {
     // Step by step over all bodies rather than body by body: the same result
     // (each per-entity step reads only its own body and the frame-start
     // supporters), and each step's cost can be reported. The masks say what
@@ -121,11 +120,11 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
     if (indexed) support_index_.build(supporters_);
     stats_.step[kStepOnSolid].ms += ms_since(t0);
     if (round == 0)
-        pass(kStepAcceleration, bodies, writes, quiet,
+        pass(kStepAcceleration, bodies, writes,
              [](const Body& b) { return kFieldVy | unless_zero(b.ay, kFieldAy); },
              [](Body& b, size_t) { return apply_acceleration(b); });
     resting_.assign(opts.resting_contacts ? bodies.size() : 0, 0);
-    pass(kStepGravity, bodies, writes, quiet, [](const Body&) { return kFieldVy; },
+    pass(kStepGravity, bodies, writes, [](const Body&) { return kFieldVy; },
          [&](Body& b, size_t i) {
              if (opts.resting_contacts && b.gravity && !b.skips(kSkipGravity) &&
                  rests(b, i, grid, indexed)) {
@@ -134,15 +133,15 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
              }
              return apply_gravity(b, sub);
          });
-    pass(kStepVelocityX, bodies, writes, quiet, [](const Body&) { return kFieldX; },
+    pass(kStepVelocityX, bodies, writes, [](const Body&) { return kFieldX; },
          [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
-    pass(kStepTileX, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
+    pass(kStepTileX, bodies, writes, [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
          [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode, sub); });
-    pass(kStepVelocityY, bodies, writes, quiet, [](const Body&) { return kFieldY; },
+    pass(kStepVelocityY, bodies, writes, [](const Body&) { return kFieldY; },
          [&](Body& b, size_t) { return apply_velocity_y(b, sub); });
-    pass(kStepTileY, bodies, writes, quiet, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
+    pass(kStepTileY, bodies, writes, [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
          [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode, sub); });
-    pass(kStepOnSolid, bodies, writes, quiet, [](const Body&) { return kFieldOnGround; },
+    pass(kStepOnSolid, bodies, writes, [](const Body&) { return kFieldOnGround; },
          [&](Body& b, size_t i) {
              return indexed ? detect_on_solid(b, supporters_, support_index_, support_slot_[i], grid)
                             : detect_on_solid(b, supporters_, support_slot_[i], grid);
@@ -162,14 +161,29 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
             writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
 }
 
+void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> quiet) {
+    active_.clear();
+    members_.clear();
+    grouped_ = 0;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const Body& b = bodies[i];
+        if (quiet.empty() || !quiet[i]) active_.push_back(static_cast<uint32_t>(i));
+        if (b.collides()) members_.push_back(i);
+        grouped_ += b.group != 0;
+    }
+}
+
 void Frame::take_supporters(std::span<const Body> scene) {
+    // Only the slots handed out last time need clearing.
+    if (support_slot_.size() != scene.size()) support_slot_.assign(scene.size(), -1);
+    else
+        for (const size_t i : slotted_) support_slot_[i] = -1;
     supporters_.clear();
-    support_slot_.assign(scene.size(), -1);
-    for (size_t i = 0; i < scene.size(); ++i) {
-        if (!scene[i].collides()) continue;
+    for (const size_t i : members_) {
         support_slot_[i] = std::ssize(supporters_);
         supporters_.push_back(scene[i]);
     }
+    slotted_.assign(members_.begin(), members_.end());
 }
 
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
@@ -177,6 +191,7 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
                          std::span<const uint8_t> quiet) {
     for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
         stats_.step[id] = {};
+    census(bodies, quiet);
     // With sub-frames, every statistic adds up over them.
     const int rounds = std::max(1, opts.substeps);
     for (int round = 0; round < rounds; ++round) {
@@ -184,19 +199,19 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
         // body moves: the caller's frame-start scene (before the tweens) for
         // the first sub-frame, else the bodies as this sub-frame finds them.
         take_supporters(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
-        step_bodies(bodies, grid, opts, round, writes, quiet);
+        step_bodies(bodies, grid, opts, round, writes);
         auto t0 = Clock::now();
-        logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy,
-                    [&](std::span<Body> bs) { resolve_entity_collisions(bs, resting_); });
+        if (members_.size() >= 2)
+            logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, [&](std::span<Body> bs) {
+                resolve_entity_collisions_among(bs, members_, resting_);
+            });
         const auto solid = static_cast<uint64_t>(supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
         push = {push.processed + solid, push.skipped + bodies.size() - solid, push.ms + ms_since(t0)};
         t0 = Clock::now();
-        logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
-        const auto grouped = static_cast<uint64_t>(
-            std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return b.group != 0; }));
+        if (grouped_ != 0) logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
         StepStats& groups = stats_.step[kStepGroups];
-        groups = {groups.processed + grouped, groups.skipped + bodies.size() - grouped,
+        groups = {groups.processed + grouped_, groups.skipped + bodies.size() - grouped_,
                   groups.ms + ms_since(t0)};
     }
 }
@@ -223,21 +238,29 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     }
 }
 
-void Frame::note_settled(const World& world, const FrameOptions& opts) {
+size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
     last_grid_ = world.grid;
     last_opts_ = opts;
     last_out_.resize(n);
     settled_.resize(n);
+    still_.resize(n);
+    size_t still = 0;
     for (size_t i = 0; i < n; ++i) {
-        if (quiet_[i]) continue;  // still settled, still as it was
+        if (quiet_[i]) {  // still settled, still as it was
+            still += still_[i];
+            continue;
+        }
+        const Body& b = world.bodies[i];
         // Settled: it entered this frame as the last one left it, and leaves
         // it the same, depending on nobody.
-        settled_[i] = untouched_[i] && !tweened_[i] &&
-                      changed_fields(last_out_[i], world.bodies[i]) == 0 &&
-                      !depends_on_others(world.bodies[i], colliders_);
-        last_out_[i] = world.bodies[i];
+        settled_[i] = untouched_[i] && !tweened_[i] && changed_fields(last_out_[i], b) == 0 &&
+                      !depends_on_others(b, colliders_);
+        last_out_[i] = b;
+        still_[i] = b.vx.v == 0 && b.vy.v == 0;
+        still += still_[i];
     }
+    return still;
 }
 
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
@@ -264,10 +287,12 @@ const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
         step_tweens(world, opts.dt);
         step_physics(world.bodies, world.grid, opts, start_, {}, quiet_);
     }
-    if (track) note_settled(world, opts);
-    const auto resting = std::count_if(world.bodies.begin(), world.bodies.end(),
-                                       [](const Body& b) { return b.vx.v == 0 && b.vy.v == 0; });
-    worth_tracking_ = static_cast<size_t>(resting) * 8 >= world.bodies.size();
+    const size_t still =
+        track ? note_settled(world, opts)
+              : static_cast<size_t>(std::count_if(world.bodies.begin(), world.bodies.end(), [](const Body& b) {
+                    return b.vx.v == 0 && b.vy.v == 0;
+                }));
+    worth_tracking_ = still * 8 >= world.bodies.size();
     return report_;
 }
 

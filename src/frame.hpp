@@ -119,14 +119,15 @@ public:
 private:
     void step_tweens(World& world, double dt);
     void plan_quiet(const World& world, const FrameOptions& opts);
-    void note_settled(const World& world, const FrameOptions& opts);
+    size_t note_settled(const World& world, const FrameOptions& opts);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                     int round, std::span<FirstWrites> writes, std::span<const uint8_t> quiet);
+                     int round, std::span<FirstWrites> writes);
+    void census(std::span<const Body> bodies, std::span<const uint8_t> quiet);
     void take_supporters(std::span<const Body> scene);
     bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
     template <class MayWrite, class Step>
     void pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
-              std::span<const uint8_t> quiet, MayWrite&& may_write, Step&& step);
+              MayWrite&& may_write, Step&& step);
     template <class Bulk>
     void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                      Bulk&& bulk);
@@ -137,6 +138,13 @@ private:
     // detection scans only these.
     std::vector<Body> supporters_;
     std::vector<std::ptrdiff_t> support_slot_;
+    // This call's bodies by role, found in one sweep (a frame changes no
+    // flag): those the per-entity steps visit (not quiet), those that
+    // collide, in list order, and how many follow a group.
+    std::vector<uint32_t> active_;
+    std::vector<size_t> members_;
+    std::vector<size_t> slotted_;  // the bodies support_slot_ gave a slot to
+    uint64_t grouped_ = 0;
     std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
     SupportIndex support_index_;     // over supporters_, when there are many
@@ -147,6 +155,7 @@ private:
     // the map and mode it ran under; this frame's plan.
     std::vector<Body> last_out_;
     std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
+    std::vector<uint8_t> still_;  // by body, after the last frame: vx = vy = 0
     const TileGrid* last_grid_ = nullptr;
     FrameOptions last_opts_;
     bool worth_tracking_ = true;

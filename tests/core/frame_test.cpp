@@ -642,4 +642,37 @@ TEST_CASE("settled bodies are left alone, until something they depend on changes
     CHECK_EXACT(w.bodies[0].y, 17);
 }
 
+TEST_CASE("a body that stops being solid loses its supporter slot") {
+    // Frame 1: both solid, the first holds slot 0. Frame 2: the first is no
+    // longer solid and stands on the second, which now holds slot 0; a slot
+    // left over from frame 1 would make the first skip it as "itself".
+    World w;
+    Body top = player(0, 0);
+    Body floor = solid_box(0, 16, 16, 16);
+    floor.immovable = true;
+    w.bodies = {top, floor};
+    Frame f;
+    f.step(w, opts());
+    w.bodies[0] = box(0, 0, 16, 16);
+    w.bodies[0].gravity = true;
+    f.step(w, opts());
+    CHECK(w.bodies[0].on_ground);
+    CHECK(f.stats().step[ds::kStepEntityCollisions].processed == 1);
+}
+
+TEST_CASE("steps report the bodies they did not visit as skipped") {
+    World w;
+    Body a = box(0, 0, 8, 8), g = box(20, 0, 8, 8);
+    g.group = 7;
+    w.bodies = {a, g, a};
+    Frame f;
+    f.step(w, opts());
+    const auto& st = f.stats().step;
+    CHECK(st[ds::kStepGroups].processed == 1);
+    CHECK(st[ds::kStepGroups].skipped == 2);
+    CHECK(st[ds::kStepEntityCollisions].processed == 0);
+    CHECK(st[ds::kStepEntityCollisions].skipped == 3);
+    CHECK(st[ds::kStepVelocityX].processed == 3);
+}
+
 }  // TEST_SUITE
