@@ -76,6 +76,16 @@ bool depends_on_others(const Body& b, bool supporters_exist) {
            (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
 }
 
+namespace {
+
+// A still body that depends on nobody: one that can settle. Tracking costs
+// about half what stepping a body costs, so it pays once half of them can.
+bool may_settle(const Body& b, bool colliders) {
+    return b.vx.v == 0 && b.vy.v == 0 && !depends_on_others(b, colliders);
+}
+
+}  // namespace
+
 template <class MayWrite, class Step>
 void Frame::pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
                  MayWrite&& may_write, Step&& step) {
@@ -171,6 +181,7 @@ void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> quiet)
         if (b.collides()) members_.push_back(i);
         grouped_ += b.group != 0;
     }
+    colliders_ = !members_.empty();
 }
 
 void Frame::take_supporters(std::span<const Body> scene) {
@@ -189,9 +200,14 @@ void Frame::take_supporters(std::span<const Body> scene) {
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                          std::span<const Body> scene, std::span<FirstWrites> writes,
                          std::span<const uint8_t> quiet) {
+    census(bodies, quiet);
+    run_physics(bodies, grid, opts, scene, writes);
+}
+
+void Frame::run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                        std::span<const Body> scene, std::span<FirstWrites> writes) {
     for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
         stats_.step[id] = {};
-    census(bodies, quiet);
     // With sub-frames, every statistic adds up over them.
     const int rounds = std::max(1, opts.substeps);
     for (int round = 0; round < rounds; ++round) {
@@ -223,18 +239,30 @@ bool any_collider(std::span<const Body> bodies) {
 void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
     const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.same_physics(last_opts_);
-    colliders_ = any_collider(world.bodies);
     quiet_.assign(n, 0);
     untouched_.assign(n, 0);
     tweened_.assign(n, 0);
     for (const TweenTrack& t : world.tweens)
         if (t.body < n) tweened_[t.body] = 1;
-    if (!same_inputs) return;
+    // One sweep over the bodies does the census and finds those the caller
+    // left as the last frame did (bit 0 of quiet_: quiet unless it looks
+    // for supporters, bit 1, and some body turns out to collide).
+    members_.clear();
+    grouped_ = 0;
     for (size_t i = 0; i < n; ++i) {
-        // As the last frame left it (the caller did not change it since).
-        untouched_[i] = std::memcmp(&world.bodies[i], &last_out_[i], sizeof(Body)) == 0;
-        quiet_[i] = untouched_[i] && settled_[i] && !tweened_[i] &&
-                    !depends_on_others(world.bodies[i], colliders_);
+        const Body& b = world.bodies[i];
+        if (b.collides()) members_.push_back(i);
+        grouped_ += b.group != 0;
+        if (!same_inputs) continue;
+        untouched_[i] = std::memcmp(&b, &last_out_[i], sizeof(Body)) == 0;
+        const bool alone = untouched_[i] && settled_[i] && !tweened_[i] && !depends_on_others(b, false);
+        quiet_[i] = static_cast<uint8_t>(alone | (depends_on_others(b, true) << 1));
+    }
+    colliders_ = !members_.empty();
+    active_.clear();
+    for (size_t i = 0; i < n; ++i) {
+        quiet_[i] = (quiet_[i] & 1) && !(colliders_ && (quiet_[i] & 2));
+        if (!quiet_[i]) active_.push_back(static_cast<uint32_t>(i));
     }
 }
 
@@ -254,10 +282,11 @@ size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
         const Body& b = world.bodies[i];
         // Settled: it entered this frame as the last one left it, and leaves
         // it the same, depending on nobody.
-        settled_[i] = untouched_[i] && !tweened_[i] && changed_fields(last_out_[i], b) == 0 &&
+        const bool same_bits = std::memcmp(&last_out_[i], &b, sizeof(Body)) == 0;
+        settled_[i] = untouched_[i] && !tweened_[i] && (same_bits || changed_fields(last_out_[i], b) == 0) &&
                       !depends_on_others(b, colliders_);
-        last_out_[i] = b;
-        still_[i] = b.vx.v == 0 && b.vy.v == 0;
+        if (!same_bits) last_out_[i] = b;
+        still_[i] = may_settle(b, colliders_);
         still += still_[i];
     }
     return still;
@@ -268,31 +297,32 @@ const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
     report_.completed.clear();
     // Bodies that came out of the last frame unchanged, depending on no other
     // body, and that nobody touched since, are left alone. Tracking that
-    // costs a copy of every body; it is done only while a fair share of the
-    // bodies is at rest (a falling crowd would pay for nothing).
+    // costs a copy of every body; it is done only while at least half of the
+    // bodies could settle (rain with a third at rest, or a crowd of solids
+    // that can never be quiet, would pay for nothing).
     const bool track = worth_tracking_;
     if (track) {
-        plan_quiet(world, opts);
+        plan_quiet(world, opts);  // and the census
     } else {
         quiet_.assign(world.bodies.size(), 0);
         last_out_.clear();  // no longer known: nothing is settled
+        census(world.bodies, {});
     }
     // Every per-entity step sees the scene as it was before the tweens ran
     // (without tweens, that is the bodies as they are: no copy needed).
     if (world.tweens.empty()) {
         stats_.step[kStepTweens] = {0, world.bodies.size(), 0};
-        step_physics(world.bodies, world.grid, opts, {}, {}, quiet_);
+        run_physics(world.bodies, world.grid, opts, {}, {});
     } else {
         start_.assign(world.bodies.begin(), world.bodies.end());
         step_tweens(world, opts.dt);
-        step_physics(world.bodies, world.grid, opts, start_, {}, quiet_);
+        run_physics(world.bodies, world.grid, opts, start_, {});
     }
     const size_t still =
         track ? note_settled(world, opts)
-              : static_cast<size_t>(std::count_if(world.bodies.begin(), world.bodies.end(), [](const Body& b) {
-                    return b.vx.v == 0 && b.vy.v == 0;
-                }));
-    worth_tracking_ = still * 8 >= world.bodies.size();
+              : static_cast<size_t>(std::count_if(world.bodies.begin(), world.bodies.end(),
+                                                  [&](const Body& b) { return may_settle(b, colliders_); }));
+    worth_tracking_ = still * 2 >= world.bodies.size();
     return report_;
 }
 

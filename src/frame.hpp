@@ -123,6 +123,8 @@ private:
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      int round, std::span<FirstWrites> writes);
     void census(std::span<const Body> bodies, std::span<const uint8_t> quiet);
+    void run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                     std::span<const Body> scene, std::span<FirstWrites> writes);
     void take_supporters(std::span<const Body> scene);
     bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
     template <class MayWrite, class Step>
@@ -155,7 +157,7 @@ private:
     // the map and mode it ran under; this frame's plan.
     std::vector<Body> last_out_;
     std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
-    std::vector<uint8_t> still_;  // by body, after the last frame: vx = vy = 0
+    std::vector<uint8_t> still_;  // by body, after the last frame: still, depending on nobody
     const TileGrid* last_grid_ = nullptr;
     FrameOptions last_opts_;
     bool worth_tracking_ = true;

@@ -2,6 +2,9 @@
 // Built from a loaded Tiled map or directly from a gid vector; knows nothing
 // of XML. Cells outside the grid are empty.
 #pragma once
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -20,9 +23,9 @@ struct CellRange {
 // cells of `tile` pixels: ⌊pos/tile⌋ … ⌈(pos+size)/tile⌉−1. Touching a cell
 // edge is not overlapping; size ≤ 0 overlaps nothing. Exact positions use
 // integer arithmetic so huge coordinates do not lose cells.
-CellRange cells_of(Num pos, Num size, int tile);
+inline CellRange cells_of(Num pos, Num size, int tile);
 // ⌊pos/tile⌋ on its own (the ground probe's row).
-int64_t cell_of(Num pos, int tile);
+inline int64_t cell_of(Num pos, int tile);
 
 class TileGrid {
 public:
@@ -59,5 +62,52 @@ private:
     int64_t origin_col_ = 0, origin_row_ = 0;
     std::vector<uint8_t> solid_;
 };
+
+// Defined here so the tile steps, which ask for a few per body, inline them.
+namespace cell_math {
+
+// ⌊a/b⌋ and ⌈a/b⌉ for b > 0 in integers: exact for every int64.
+inline int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
+inline int64_t ceil_div(int64_t a, int64_t b) { return a / b + ((a % b != 0) && (a > 0)); }
+
+// Doubles beyond int64 are clamped: such cells lie outside any grid anyway.
+inline int64_t to_cell(double c) {
+    constexpr double kLimit = 4.0e18;
+    return static_cast<int64_t>(std::clamp(c, -kLimit, kLimit));
+}
+
+// Tiles are nearly always a power of two wide: a shift then does the
+// division (an arithmetic shift floors negatives too).
+inline bool power_of_two(int tile) { return (tile & (tile - 1)) == 0; }
+
+// Exact and small enough for int64 arithmetic without overflow (exact
+// integers can be any size; past 2^61 the double path, which clamps, is
+// exact enough: such cells lie outside any map).
+inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
+
+}  // namespace cell_math
+
+inline CellRange cells_of(Num pos, Num size, int tile) {
+    using namespace cell_math;
+    if (!(size.v > 0)) return {};
+    if (integral(pos) && integral(size)) {
+        const auto p = static_cast<int64_t>(pos.v), s = static_cast<int64_t>(size.v);
+        if (power_of_two(tile)) {
+            const int k = std::countr_zero(static_cast<unsigned>(tile));
+            return {p >> k, ((p + s + tile - 1) >> k) - 1};
+        }
+        return {floor_div(p, tile), ceil_div(p + s, tile) - 1};
+    }
+    return {to_cell(std::floor(pos.v / tile)), to_cell(std::ceil((pos.v + size.v) / tile)) - 1};
+}
+
+inline int64_t cell_of(Num pos, int tile) {
+    using namespace cell_math;
+    if (integral(pos)) {
+        const auto p = static_cast<int64_t>(pos.v);
+        return power_of_two(tile) ? p >> std::countr_zero(static_cast<unsigned>(tile)) : floor_div(p, tile);
+    }
+    return to_cell(std::floor(pos.v / tile));
+}
 
 }  // namespace ds
