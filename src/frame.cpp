@@ -270,15 +270,15 @@ size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
     last_grid_ = world.grid;
     last_opts_ = opts;
-    last_out_.resize(n);
-    settled_.resize(n);
-    still_.resize(n);
-    size_t still = 0;
-    for (size_t i = 0; i < n; ++i) {
-        if (quiet_[i]) {  // still settled, still as it was
-            still += still_[i];
-            continue;
-        }
+    if (last_out_.size() != n) {  // a new scene: every body was stepped
+        last_out_.assign(n, Body{});
+        settled_.assign(n, 0);
+        still_.assign(n, 0);
+        still_count_ = 0;
+    }
+    // Quiet bodies are still settled and still as they were: only the
+    // stepped ones can change their standing.
+    for (const uint32_t i : active_) {
         const Body& b = world.bodies[i];
         // Settled: it entered this frame as the last one left it, and leaves
         // it the same, depending on nobody.
@@ -286,10 +286,12 @@ size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
         settled_[i] = untouched_[i] && !tweened_[i] && (same_bits || changed_fields(last_out_[i], b) == 0) &&
                       !depends_on_others(b, colliders_);
         if (!same_bits) last_out_[i] = b;
-        still_[i] = may_settle(b, colliders_);
-        still += still_[i];
+        const uint8_t still = may_settle(b, colliders_);
+        still_count_ += still;
+        still_count_ -= still_[i];
+        still_[i] = still;
     }
-    return still;
+    return still_count_;
 }
 
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {

@@ -158,6 +158,7 @@ private:
     std::vector<Body> last_out_;
     std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
     std::vector<uint8_t> still_;  // by body, after the last frame: still, depending on nobody
+    size_t still_count_ = 0;
     const TileGrid* last_grid_ = nullptr;
     FrameOptions last_opts_;
     bool worth_tracking_ = true;
