@@ -35,4 +35,25 @@ void ensure_guile() {
     booted = true;
 }
 
+std::string guile_version() {
+    ensure_guile();
+    std::string v;
+    scm_with_guile(
+        +[](void* out) -> void* {
+            char* text = scm_to_utf8_string(scm_version());
+            *static_cast<std::string*>(out) = text;
+            free(text);
+            return nullptr;
+        },
+        &v);
+    return v;
+}
+
+std::string error_text(SCM key, SCM args) {
+    char* text = scm_to_utf8_string(scm_object_to_string(scm_cons(key, args), SCM_UNDEFINED));
+    std::string out = text;
+    free(text);
+    return out;
+}
+
 }  // namespace bench

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "accuracy.hpp"
+#include "guile_boot.hpp"
 #include "isolate.hpp"
 #include "options.hpp"
 #include "paths.hpp"

@@ -98,22 +98,13 @@ SCM run_job(void* data) {
 
 SCM on_error(void* data, SCM key, SCM args) {
     Job& job = *static_cast<Job*>(data);
-    char* text = scm_to_utf8_string(scm_object_to_string(scm_cons(key, args), SCM_UNDEFINED));
-    job.out->error = text;
-    free(text);
+    job.out->error = error_text(key, args);
     job.out->frame_ms.clear();
     return SCM_BOOL_F;
 }
 
 void* run_in_guile(void* data) {
     scm_c_catch(SCM_BOOL_T, run_job, data, on_error, data, nullptr, nullptr);
-    return nullptr;
-}
-
-void* version_in_guile(void* out) {
-    char* v = scm_to_utf8_string(scm_version());
-    *static_cast<std::string*>(out) = v;
-    free(v);
     return nullptr;
 }
 
@@ -125,13 +116,6 @@ PathResult run_guile(const Scene& scene, const RunConfig& cfg, bool reference) {
     Job job{&scene, cfg, reference, &r};
     scm_with_guile(run_in_guile, &job);
     return r;
-}
-
-std::string guile_version() {
-    ensure_guile();
-    std::string v;
-    scm_with_guile(version_in_guile, &v);
-    return v;
 }
 
 }  // namespace bench

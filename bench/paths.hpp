@@ -38,7 +38,6 @@ PathResult run_bare(const Scene& scene, const RunConfig& cfg);
 // (step-scene scene dt) from (downstroke physics), or from
 // (downstroke reference) when `reference`, in a Scheme loop.
 PathResult run_guile(const Scene& scene, const RunConfig& cfg, bool reference);
-std::string guile_version();
 
 #if DS_BENCH_HAVE_BOX2D
 // Box2D's defaults (continuous collision on), or with continuous collision

@@ -68,21 +68,12 @@ SCM run_demo(void* data) {
 
 SCM on_error(void* data, SCM key, SCM args) {
     Job& job = *static_cast<Job*>(data);
-    char* text = scm_to_utf8_string(scm_object_to_string(scm_cons(key, args), SCM_UNDEFINED));
-    job.run->error = text;
-    free(text);
+    job.run->error = error_text(key, args);
     return SCM_BOOL_F;
 }
 
 void* run_in_guile(void* data) {
     scm_c_catch(SCM_BOOL_T, run_demo, data, on_error, data, nullptr, nullptr);
-    return nullptr;
-}
-
-void* version_in_guile(void* out) {
-    char* v = scm_to_utf8_string(scm_version());
-    *static_cast<std::string*>(out) = v;
-    free(v);
     return nullptr;
 }
 
@@ -129,7 +120,7 @@ const char* const kIntro =
     "Memory is sampled after a full collection, after the warm-up, halfway and at the end: the "
     "resident set size (=/proc/self/statm=) and Guile's heap size (=(gc-stats)=). The demos keep a "
     "ring of their last 1000 frames and at most 1000 events; the engine's sound log (=game-sounds=) "
-    "keeps every sound played, 32 bytes each. A quick version (10^4 frames, with bounds) is part "
+    "keeps the newest 4096 to 8192 sounds. A quick version (10^4 frames, with bounds) is part "
     "of the test suite: =tests/scheme/stress-test.scm=.\n\n";
 
 std::string results(const RunInfo& info, const std::string& guile, long frames, long warmup,
@@ -214,8 +205,7 @@ DemoRun run_forked(const std::string& name, long frames, long warmup) {
     if (pid < 0) throw std::runtime_error("soak: cannot fork");
     if (pid == 0) {
         close(fds[0]);
-        ensure_guile();  // compiled modules only; soak.scm compiles the demo
-        scm_with_guile(version_in_guile, &r.guile);
+        r.guile = guile_version();  // boots Guile: compiled modules only; soak.scm compiles the demo
         const std::string file = std::string(DS_BENCH_SOURCE_DIR) + "/demo/" + name + ".scm";
         Job job{&r, file.c_str(), frames, warmup};
         scm_with_guile(run_in_guile, &job);
