@@ -36,6 +36,10 @@ const char* skip_name(uint16_t bit) {
 uint32_t changed_fields(const Body& before, const Body& after) {
     // Most bodies of most frames are copies of themselves: bitwise equal.
     if (std::memcmp(&before, &after, sizeof(Body)) == 0) return 0;
+    return differing_fields(before, after);
+}
+
+uint32_t differing_fields(const Body& before, const Body& after) {
     uint32_t mask = 0;
     if (!same(before.x, after.x)) mask |= kFieldX;
     if (!same(before.y, after.y)) mask |= kFieldY;

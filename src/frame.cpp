@@ -176,12 +176,15 @@ void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> quiet)
     members_.clear();
     grouped_ = 0;
     for (size_t i = 0; i < bodies.size(); ++i) {
-        const Body& b = bodies[i];
         if (quiet.empty() || !quiet[i]) active_.push_back(static_cast<uint32_t>(i));
-        if (b.collides()) members_.push_back(i);
-        grouped_ += b.group != 0;
+        enlist(bodies[i], i);
     }
     colliders_ = !members_.empty();
+}
+
+void Frame::enlist(const Body& b, size_t i) {
+    if (b.collides()) members_.push_back(i);
+    grouped_ += b.group != 0;
 }
 
 void Frame::take_supporters(std::span<const Body> scene) {
@@ -251,8 +254,7 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     grouped_ = 0;
     for (size_t i = 0; i < n; ++i) {
         const Body& b = world.bodies[i];
-        if (b.collides()) members_.push_back(i);
-        grouped_ += b.group != 0;
+        enlist(b, i);
         if (!same_inputs) continue;
         untouched_[i] = std::memcmp(&b, &last_out_[i], sizeof(Body)) == 0;
         const bool alone = untouched_[i] && settled_[i] && !tweened_[i] && !depends_on_others(b, false);
@@ -283,7 +285,7 @@ size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
         // Settled: it entered this frame as the last one left it, and leaves
         // it the same, depending on nobody.
         const bool same_bits = std::memcmp(&last_out_[i], &b, sizeof(Body)) == 0;
-        settled_[i] = untouched_[i] && !tweened_[i] && (same_bits || changed_fields(last_out_[i], b) == 0) &&
+        settled_[i] = untouched_[i] && !tweened_[i] && (same_bits || differing_fields(last_out_[i], b) == 0) &&
                       !depends_on_others(b, colliders_);
         if (!same_bits) last_out_[i] = b;
         const uint8_t still = may_settle(b, colliders_);

@@ -123,6 +123,7 @@ private:
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      int round, std::span<FirstWrites> writes);
     void census(std::span<const Body> bodies, std::span<const uint8_t> quiet);
+    void enlist(const Body& b, size_t i);  // the census's count of one body's roles
     void run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      std::span<const Body> scene, std::span<FirstWrites> writes);
     void take_supporters(std::span<const Body> scene);
