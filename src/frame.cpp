@@ -153,8 +153,8 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
          [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode, sub); });
     pass(kStepOnSolid, bodies, writes, [](const Body&) { return kFieldOnGround; },
          [&](Body& b, size_t i) {
-             return indexed ? detect_on_solid(b, supporters_, support_index_, support_slot_[i], grid)
-                            : detect_on_solid(b, supporters_, support_slot_[i], grid);
+             return indexed ? detect_on_supporters(b, supporters_, support_index_, support_slot_[i], grid)
+                            : detect_on_supporters(b, supporters_, support_slot_[i], grid);
          });
 }
 
@@ -195,7 +195,7 @@ void Frame::take_supporters(std::span<const Body> scene) {
     supporters_.clear();
     for (const size_t i : members_) {
         support_slot_[i] = std::ssize(supporters_);
-        supporters_.push_back(scene[i]);
+        supporters_.push_back(Supporter::of(scene[i]));
     }
     slotted_.assign(members_.begin(), members_.end());
 }

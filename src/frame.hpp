@@ -139,7 +139,7 @@ private:
     // The frame-start bodies that can hold another up (solid, not ghosts),
     // and each body's slot among them (-1 when it is not one): ground
     // detection scans only these.
-    std::vector<Body> supporters_;
+    std::vector<Supporter> supporters_;
     std::vector<std::ptrdiff_t> support_slot_;
     // This call's bodies by role, found in one sweep (a frame changes no
     // flag): those the per-entity steps visit (not quiet), those that

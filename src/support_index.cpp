@@ -16,9 +16,9 @@ constexpr int64_t kMaxSpan = 8;  // columns; wider supporters go to the big list
 
 }  // namespace
 
-SupportIndex::Cells SupportIndex::top_cells(const Body& o) const {
-    const double xa = o.x.v, xb = o.x.v + o.w.v;
-    const int64_t row = cell_index(o.y.v, inv_ch_);
+SupportIndex::Cells SupportIndex::top_cells(const Supporter& o) const {
+    const double xa = o.x, xb = o.x + o.w;
+    const int64_t row = cell_index(o.y, inv_ch_);
     return {cell_index(std::min(xa, xb), inv_cw_), row, cell_index(std::max(xa, xb), inv_cw_), row};
 }
 
@@ -34,16 +34,16 @@ size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {
     return layout_.bucket(cx, cy);
 }
 
-void SupportIndex::build(std::span<const Body> bodies) {
+void SupportIndex::build(std::span<const Supporter> bodies) {
     const auto n = static_cast<uint32_t>(bodies.size());
     widths_.clear();
-    for (const Body& o : bodies) widths_.push_back(std::fabs(o.w.v));
+    for (const Supporter& o : bodies) widths_.push_back(std::fabs(o.w));
     if (n > 0) {
         std::nth_element(widths_.begin(), widths_.begin() + n / 2, widths_.end());
         inv_cw_ = 1 / std::max(2 * widths_[n / 2], 1.0);
     }
     int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
-    for (const Body& o : bodies) {
+    for (const Supporter& o : bodies) {
         const Cells r = top_cells(o);
         if (r.x1 - r.x0 >= kMaxSpan) continue;
         x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);

@@ -9,13 +9,14 @@
 
 #include "body.hpp"
 #include "cell_hash.hpp"
+#include "supporter.hpp"
 
 namespace ds {
 
 class SupportIndex {
 public:
-    // Indexes bodies (the solid, non-ghost frame-start bodies).
-    void build(std::span<const Body> bodies);
+    // Indexes the frame's supporters.
+    void build(std::span<const Supporter> supporters);
 
     // Calls accept(k) for every indexed body k whose top edge lies near b's
     // feet and whose span meets b's (each at most once); true as soon as one
@@ -45,7 +46,7 @@ private:
     struct Cells {
         int64_t x0, y0, x1, y1;
     };
-    Cells top_cells(const Body& o) const;
+    Cells top_cells(const Supporter& o) const;
     Cells query_cells(const Body& b) const;
     size_t bucket(int64_t cx, int64_t cy) const;
     bool visit(uint32_t k) {

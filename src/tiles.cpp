@@ -87,29 +87,33 @@ bool rests_on_tile(const Body& b, const TileGrid& grid) {
     return std::fmod(feet, grid.tile_height()) == 0 && tile_supports(b, grid);
 }
 
-bool rests_on(const Body& b, const Body& o) {
-    return o.collides() && o.vy.v == 0 && o.y.v == b.y.v + b.h.v &&
-           b.x.v < o.x.v + o.w.v && o.x.v < b.x.v + b.w.v;
+bool rests_on(const Body& b, const Supporter& o) {
+    return o.vy == 0 && o.y == b.y.v + b.h.v && b.x.v < o.x + o.w && o.x < b.x.v + b.w.v;
+}
+
+bool rests_on(const Body& b, const Body& o) { return o.collides() && rests_on(b, Supporter::of(o)); }
+
+bool entity_supports(const Body& b, const Supporter& o) {
+    if (!(b.x.v < o.x + o.w && o.x < b.x.v + b.w.v)) return false;
+    return std::fabs((b.y.v + b.h.v) - o.y) <= kOnSolidTolerance &&
+           std::fabs(b.vy.v - o.vy) <= kOnSolidTolerance;
 }
 
 bool entity_supports(const Body& b, const Body& o) {
-    if (!o.collides()) return false;
-    if (!(b.x.v < o.x.v + o.w.v && o.x.v < b.x.v + b.w.v)) return false;
-    return std::fabs((b.y.v + b.h.v) - o.y.v) <= kOnSolidTolerance &&
-           std::fabs(b.vy.v - o.vy.v) <= kOnSolidTolerance;
+    return o.collides() && entity_supports(b, Supporter::of(o));
 }
 
 namespace {
 
-bool supports_other(const Body& b, const Body& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
+template <class Other>
+bool supports_other(const Body& b, const Other& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
     if (k == self_slot || (b.id != 0 && other.id == b.id)) return false;
     return entity_supports(b, other);
 }
 
-}  // namespace
-
-bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
-                     const TileGrid* grid) {
+template <class Other>
+bool detect_by_scan(Body& b, std::span<const Other> scene, std::ptrdiff_t self_slot,
+                    const TileGrid* grid) {
     if (!b.gravity || b.skips(kSkipOnSolid)) return false;
     bool ground = grid && tile_supports(b, *grid);
     for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n && !ground; ++k)
@@ -118,11 +122,23 @@ bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_s
     return true;
 }
 
-bool detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
+}  // namespace
+
+bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
+                     const TileGrid* grid) {
+    return detect_by_scan(b, scene, self_slot, grid);
+}
+
+bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::ptrdiff_t self_slot,
+                     const TileGrid* grid) {
+    return detect_by_scan(b, supporters, self_slot, grid);
+}
+
+bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
                      std::ptrdiff_t self_slot, const TileGrid* grid) {
     if (!b.gravity || b.skips(kSkipOnSolid)) return false;
     b.on_ground = (grid && tile_supports(b, *grid)) ||
-                  index.any(b, [&](uint32_t k) { return supports_other(b, scene[k], k, self_slot); });
+                  index.any(b, [&](uint32_t k) { return supports_other(b, supporters[k], k, self_slot); });
     return true;
 }
 

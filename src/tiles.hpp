@@ -6,6 +6,7 @@
 #include "body.hpp"
 #include "steps.hpp"
 #include "support_index.hpp"
+#include "supporter.hpp"
 #include "tile_grid.hpp"
 
 namespace ds {
@@ -28,6 +29,8 @@ bool tile_supports(const Body& b, const TileGrid& grid);
 // its top within the tolerance of b's feet and moving at nearly b's speed.
 // (Identity — "other is not b itself" — is the caller's business.)
 bool entity_supports(const Body& b, const Body& other);
+// The same for a supporter (which collides by construction).
+bool entity_supports(const Body& b, const Supporter& other);
 
 // Resting contact (beyond the seed; FrameOptions::resting_contacts): a still
 // body (vy = 0) whose feet are exactly on the top of a solid tile, or on the
@@ -35,6 +38,7 @@ bool entity_supports(const Body& b, const Body& other);
 // gravity, so a stack at rest stays exactly where it is.
 bool rests_on_tile(const Body& b, const TileGrid& grid);
 bool rests_on(const Body& b, const Body& other);
+bool rests_on(const Body& b, const Supporter& other);
 
 // Tile steps return whether they looked at the map (false: no map, no speed
 // on that axis, or skipped); detect_on_solid whether it applied.
@@ -43,8 +47,11 @@ bool rests_on(const Body& b, const Body& other);
 // Needs #:gravity?; skipped by 'on-solid.
 bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid);
-// The same, finding the candidates in `scene` through an index built on it.
-bool detect_on_solid(Body& b, std::span<const Body> scene, SupportIndex& index,
+// The same against the frame's supporters (self_slot: b's own slot there).
+bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::ptrdiff_t self_slot,
+                     const TileGrid* grid);
+// The same, finding the candidates through an index built on `supporters`.
+bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
                      std::ptrdiff_t self_slot, const TileGrid* grid);
 
 }  // namespace ds

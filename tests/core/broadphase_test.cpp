@@ -111,14 +111,24 @@ TEST_CASE("indexed ground detection answers as the linear scan does") {
             scene[k].gravity = !g.chance(10);
             scene[k].id = g.chance(5) ? g.i(1, 4) : 0;
         }
+        // As a frame does: the colliders become supporters, each body
+        // knowing its own slot among them.
+        std::vector<ds::Supporter> supporters;
+        std::vector<std::ptrdiff_t> slot(scene.size(), -1);
+        for (size_t k = 0; k < scene.size(); ++k)
+            if (scene[k].collides()) {
+                slot[k] = std::ssize(supporters);
+                supporters.push_back(ds::Supporter::of(scene[k]));
+            }
         ds::SupportIndex index;
-        index.build(scene);
+        index.build(supporters);
         for (size_t k = 0; k < scene.size(); ++k) {
             Body linear = scene[k], indexed = scene[k];
             linear.on_ground = indexed.on_ground = g.chance(2);
-            const std::ptrdiff_t self = g.chance(3) ? -1 : static_cast<std::ptrdiff_t>(k);
+            const bool as_self = !g.chance(3);
+            const std::ptrdiff_t self = as_self ? static_cast<std::ptrdiff_t>(k) : -1;
             ds::detect_on_solid(linear, scene, self, nullptr);
-            ds::detect_on_solid(indexed, scene, index, self, nullptr);
+            ds::detect_on_supporters(indexed, supporters, index, as_self ? slot[k] : -1, nullptr);
             INFO("seed " << seed << " body " << k);
             REQUIRE(linear.on_ground == indexed.on_ground);
             grounded += linear.on_ground;
