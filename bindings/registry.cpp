@@ -21,4 +21,6 @@ extern "C" void ds_init_native() {
     register_tween_procedures();
     register_frame_procedures();
     register_hash_procedures();
+    register_gc_procedures();
+    apply_gc_policy();
 }

@@ -10,11 +10,16 @@ using Subr = scm_t_subr;
 // Defines and exports `name` with its docstring.
 void define_procedure(const char* name, int req, int opt, int rest, Subr fn, const char* doc);
 
-// Each file of procedures has one of these; init.cpp calls them all.
+// Each file of procedures has one of these; ds_init_native (registry.cpp)
+// calls them all.
 void register_entity_procedures();
 void register_tilemap_procedures();
 void register_tween_procedures();
 void register_frame_procedures();
 void register_hash_procedures();
+void register_gc_procedures();
+
+// The engine's collector setting (gc_procs.cpp), applied when the extension loads.
+void apply_gc_policy();
 
 }  // namespace ds::guile

@@ -6,7 +6,7 @@
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
   #:use-module (downstroke tilemap)
-  #:use-module ((downstroke native) #:select (%frame-stats))
+  #:use-module ((downstroke native) #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor!))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
@@ -15,7 +15,8 @@
             input-pressed? input-held? input-released? play-sound
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
-            frame-pacing main-script? script-number-argument engine-stats))
+            frame-pacing main-script? script-number-argument engine-stats
+            gc-space-divisor set-gc-space-divisor!))
 
 ;;; Input: what is held this frame, and what was held the frame before.
 (define-record-type <input>
@@ -153,6 +154,20 @@ to; SKIPPED those it left alone (skip-pipelines, no #:gravity?, no speed on
 a tile step's axis, not solid, not in a group). It is the last step-scene run
 on this thread, which for a running game is its own last frame."
   (%frame-stats))
+
+;;; Memory against time: how often the collector runs. A frame of a big scene
+;;; allocates fresh plist heads, and each collection marks the whole live
+;;; scene, so collecting less often is faster at the price of a larger heap.
+(define (gc-space-divisor)
+  "The collector's free-space divisor: it collects after allocating about
+twice the live heap divided by this. Downstroke starts it at 1 (Boehm's own
+default is 3) unless the GC_FREE_SPACE_DIVISOR environment variable is set."
+  (%gc-space-divisor))
+
+(define (set-gc-space-divisor! n)
+  "Sets the free-space divisor to N, an exact integer from 1 to 1000: larger
+means a smaller heap and more time collecting. Affects the whole process."
+  (%set-gc-space-divisor! n))
 
 ;;; ---------------------------------------------------------------- scripts
 

@@ -295,4 +295,26 @@
     (test-equal "… oldest first, ending with the newest" '(4097 9999)
       (list (cdar sounds) (cdr (car (last-pair sounds)))))))
 
+;;; ---------------------------------------------------------------- gc policy
+
+(let ((chosen (getenv "GC_FREE_SPACE_DIVISOR")))
+  (test-equal "gc-space-divisor: 1 by default, or what GC_FREE_SPACE_DIVISOR chose"
+    (if (and chosen (not (string-null? chosen))) (string->number chosen) 1)
+    (gc-space-divisor)))
+(let ((before (gc-space-divisor)))
+  (set-gc-space-divisor! 3)
+  (test-equal "set-gc-space-divisor! sets it" 3 (gc-space-divisor))
+  (set-gc-space-divisor! before)
+  (test-equal "… and back" before (gc-space-divisor)))
+(define before-refusals (gc-space-divisor))
+(test-assert "set-gc-space-divisor!: 0 is out of range, named"
+  (mentions? (error-text (lambda () (set-gc-space-divisor! 0))) "set-gc-space-divisor!" "1 to 1000" "0"))
+(test-assert "set-gc-space-divisor!: 1001 is out of range"
+  (mentions? (error-text (lambda () (set-gc-space-divisor! 1001))) "1 to 1000" "1001"))
+(test-assert "set-gc-space-divisor!: 2.0 is not an exact integer"
+  (mentions? (error-text (lambda () (set-gc-space-divisor! 2.0))) "exact integer" "2.0"))
+(test-assert "set-gc-space-divisor!: a string is refused"
+  (mentions? (error-text (lambda () (set-gc-space-divisor! "1"))) "exact integer" "\"1\""))
+(test-equal "a refused divisor leaves the setting alone" before-refusals (gc-space-divisor))
+
 (test-end "engine")
