@@ -112,7 +112,9 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
         // Earlier bodies stay in the grid: query() passes over them.
         Body& first = bodies[members[a]];
         heap_.clear();
-        CellRange queried = cells(first);
+        // Where a is filed is where it is: it moved since only as someone's
+        // second, and was re-filed then. (Big bodies are filed nowhere.)
+        CellRange queried = is_big_[a] ? cells(first) : range_[a];
         query(queried, a, members, is_big_[a] != 0);
         while (!heap_.empty()) {
             std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());

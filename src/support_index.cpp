@@ -23,11 +23,15 @@ SupportIndex::Cells SupportIndex::top_cells(const Supporter& o) const {
 }
 
 SupportIndex::Cells SupportIndex::query_cells(const Body& b) const {
-    // Supporters' tops within the tolerance of the feet, one cell of slack
-    // each way against rounding.
+    // Supporters' tops within the tolerance of the feet. A top qualifies when
+    // the rounded |feet − top| ≤ tolerance, so the exact one exceeds it by at
+    // most half an ulp of the tolerance (2⁻⁵¹); the slack covers that and the
+    // rounding of feet ± (tolerance + slack) itself, and cell_index is
+    // monotone, so every qualifying top's row is among those queried.
     const double xa = b.x.v, xb = b.x.v + b.w.v, feet = b.y.v + b.h.v;
-    return {cell_index(std::min(xa, xb), inv_cw_), cell_index(feet - kOnSolidTolerance, inv_ch_) - 1,
-            cell_index(std::max(xa, xb), inv_cw_), cell_index(feet + kOnSolidTolerance, inv_ch_) + 1};
+    const double reach = kOnSolidTolerance + 1e-9 + 1e-12 * std::fabs(feet);
+    return {cell_index(std::min(xa, xb), inv_cw_), cell_index(feet - reach, inv_ch_),
+            cell_index(std::max(xa, xb), inv_cw_), cell_index(feet + reach, inv_ch_)};
 }
 
 size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {

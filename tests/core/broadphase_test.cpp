@@ -1,5 +1,7 @@
 // The grid pass must be the all-pairs pass, bit for bit: same pairs, same
 // order, same values and exactness.
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -136,6 +138,52 @@ TEST_CASE("indexed ground detection answers as the linear scan does") {
         }
     }
     CHECK(grounded > total / 10);  // plenty of bodies really stand on others
+}
+
+TEST_CASE("indexed ground detection at the edge of the tolerance, in fractions and far out") {
+    // Tops exactly at, just inside and just outside feet ± 4, with feet at
+    // fractions a double rounds (0.1 steps) and at large coordinates, where
+    // the subtraction itself rounds.
+    int grounded = 0, total = 0;
+    for (uint64_t seed = 1; seed <= 400; ++seed) {
+        Gen g(seed);
+        const double base = std::array{0.0, 1e6, 3.3e9, 7.1e12, -2.5e13}[seed % 5];
+        std::vector<Body> scene;
+        for (int k = 0; k < 60; ++k) {
+            Body b;
+            b.x = F(base + 0.1 * static_cast<double>(g.i(0, 400)));
+            b.y = F(base + 0.1 * static_cast<double>(g.i(0, 400)));
+            b.w = F(0.1 * static_cast<double>(g.i(5, 160)));
+            b.h = F(0.1 * static_cast<double>(g.i(5, 160)));
+            b.vy = F(0.1 * static_cast<double>(g.i(-20, 20)));
+            b.solid = b.gravity = true;
+            scene.push_back(b);
+        }
+        for (size_t k = 1; k < scene.size(); k += 2) {  // every other body stands near one before it
+            const Body& below = scene[k - 1];
+            const double feet = below.y.v - std::array{4.0, -4.0, 3.999999, -3.999999, 4.000001, 0.1}[g.i(0, 5)];
+            const double gap = g.chance(2) ? std::nextafter(feet, -1e300) : std::nextafter(feet, 1e300);
+            scene[k].y = F((g.chance(2) ? feet : gap) - scene[k].h.v);
+            scene[k].x = below.x;
+            scene[k].vy = below.vy;
+        }
+        std::vector<ds::Supporter> supporters;
+        for (const Body& b : scene) supporters.push_back(ds::Supporter::of(b));
+        ds::SupportIndex index;
+        index.build(supporters);
+        for (size_t k = 0; k < scene.size(); ++k) {
+            Body linear = scene[k], indexed = scene[k];
+            const auto self = static_cast<std::ptrdiff_t>(k);
+            ds::detect_on_solid(linear, scene, self, nullptr);
+            ds::detect_on_supporters(indexed, supporters, index, self, nullptr);
+            INFO("seed " << seed << " body " << k);
+            REQUIRE(linear.on_ground == indexed.on_ground);
+            grounded += linear.on_ground;
+            ++total;
+        }
+    }
+    CHECK(grounded > total / 5);
+    CHECK(grounded < total);
 }
 
 }  // TEST_SUITE
