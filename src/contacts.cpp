@@ -57,15 +57,6 @@ void push_apart(Span1 a, Span1 b, double o) {
 
 }  // namespace
 
-bool aabb_overlap(double x1, double y1, double w1, double h1, double x2, double y2, double w2,
-                  double h2) {
-    return x1 < x2 + w2 && x2 < x1 + w1 && y1 < y2 + h2 && y2 < y1 + h1;
-}
-
-bool aabb_overlap(const Body& a, const Body& b) {
-    return aabb_overlap(a.x.v, a.y.v, a.w.v, a.h.v, b.x.v, b.y.v, b.w.v, b.h.v);
-}
-
 bool collision_eligible(const Body& a, const Body& b) {
     return a.collides() && b.collides() && aabb_overlap(a, b);
 }

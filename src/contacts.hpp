@@ -8,10 +8,14 @@
 namespace ds {
 
 // Strict overlap of [x1, x1+w1) × [y1, y1+h1) and [x2, x2+w2) × [y2, y2+h2):
-// touching edges do not overlap.
-bool aabb_overlap(double x1, double y1, double w1, double h1, double x2, double y2,
-                  double w2, double h2);
-bool aabb_overlap(const Body& a, const Body& b);
+// touching edges do not overlap. Inline: the grid pass asks once per candidate.
+inline bool aabb_overlap(double x1, double y1, double w1, double h1, double x2, double y2,
+                         double w2, double h2) {
+    return x1 < x2 + w2 && x2 < x1 + w1 && y1 < y2 + h2 && y2 < y1 + h1;
+}
+inline bool aabb_overlap(const Body& a, const Body& b) {
+    return aabb_overlap(a.x.v, a.y.v, a.w.v, a.h.v, b.x.v, b.y.v, b.w.v, b.h.v);
+}
 
 // Whether a pair takes part in push-apart: both solid, neither skips
 // 'entity-collisions, and the boxes overlap strictly.

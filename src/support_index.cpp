@@ -47,8 +47,9 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
         inv_cw_ = 1 / std::max(2 * widths_[n / 2], 1.0);
     }
     int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+    tops_.clear();
     for (const Supporter& o : bodies) {
-        const Cells r = top_cells(o);
+        const Cells r = tops_.emplace_back(top_cells(o));
         if (r.x1 - r.x0 >= kMaxSpan) continue;
         x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
         x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
@@ -63,7 +64,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
         for (int64_t cx = r.x0; cx <= r.x1; ++cx) f(bucket(cx, r.y0));
     };
     for (uint32_t k = 0; k < n; ++k) {
-        const Cells r = top_cells(bodies[k]);
+        const Cells& r = tops_[k];
         if (r.x1 - r.x0 >= kMaxSpan) big_.push_back(k);
         else each_cell(r, [&](size_t h) { ++start_[h + 1]; });
     }
@@ -71,7 +72,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     items_.resize(start_[buckets]);
     cursor_.assign(start_.begin(), start_.end() - 1);
     for (uint32_t k = 0; k < n; ++k) {
-        const Cells r = top_cells(bodies[k]);
+        const Cells& r = tops_[k];
         if (r.x1 - r.x0 >= kMaxSpan) continue;
         each_cell(r, [&](size_t h) { items_[cursor_[h]++] = k; });
     }

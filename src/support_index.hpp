@@ -59,6 +59,7 @@ private:
     std::vector<uint32_t> start_;  // bucket h holds items_[start_[h] .. start_[h+1])
     std::vector<uint32_t> items_;
     std::vector<uint32_t> cursor_;  // build scratch
+    std::vector<Cells> tops_;       // build scratch: each supporter's top cells
     std::vector<uint32_t> big_;    // spanning many columns: always candidates
     std::vector<uint32_t> seen_;
     std::vector<double> widths_;
