@@ -106,8 +106,8 @@ bool Frame::rests(const Body& b, size_t i, const TileGrid* grid, bool indexed) {
     if (b.vy.v != 0) return false;
     if (grid && rests_on_tile(b, *grid)) return true;
     auto on = [&](size_t k) {
-        return static_cast<std::ptrdiff_t>(k) != support_slot_[i] &&
-               !(b.id != 0 && supporters_[k].id == b.id) && rests_on(b, supporters_[k]);
+        return !is_self(b, supporters_[k], static_cast<std::ptrdiff_t>(k), support_slot_[i]) &&
+               rests_on(b, supporters_[k]);
     };
     if (indexed) return support_index_.any(b, on);
     for (size_t k = 0; k < supporters_.size(); ++k)

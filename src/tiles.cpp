@@ -87,14 +87,19 @@ bool rests_on_tile(const Body& b, const TileGrid& grid) {
     return std::fmod(feet, grid.tile_height()) == 0 && tile_supports(b, grid);
 }
 
+namespace {
+
+// Strict overlap of b's span and o's along x.
+bool spans_meet(const Body& b, const Supporter& o) { return b.x.v < o.x + o.w && o.x < b.x.v + b.w.v; }
+
+}  // namespace
+
 bool rests_on(const Body& b, const Supporter& o) {
-    return o.vy == 0 && o.y == b.y.v + b.h.v && b.x.v < o.x + o.w && o.x < b.x.v + b.w.v;
+    return o.vy == 0 && o.y == b.y.v + b.h.v && spans_meet(b, o);
 }
 
-bool rests_on(const Body& b, const Body& o) { return o.collides() && rests_on(b, Supporter::of(o)); }
-
 bool entity_supports(const Body& b, const Supporter& o) {
-    if (!(b.x.v < o.x + o.w && o.x < b.x.v + b.w.v)) return false;
+    if (!spans_meet(b, o)) return false;
     return std::fabs((b.y.v + b.h.v) - o.y) <= kOnSolidTolerance &&
            std::fabs(b.vy.v - o.vy) <= kOnSolidTolerance;
 }
@@ -107,8 +112,7 @@ namespace {
 
 template <class Other>
 bool supports_other(const Body& b, const Other& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
-    if (k == self_slot || (b.id != 0 && other.id == b.id)) return false;
-    return entity_supports(b, other);
+    return !is_self(b, other, k, self_slot) && entity_supports(b, other);
 }
 
 template <class Other>
@@ -130,12 +134,12 @@ bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_s
 }
 
 bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::ptrdiff_t self_slot,
-                     const TileGrid* grid) {
+                          const TileGrid* grid) {
     return detect_by_scan(b, supporters, self_slot, grid);
 }
 
 bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
-                     std::ptrdiff_t self_slot, const TileGrid* grid) {
+                          std::ptrdiff_t self_slot, const TileGrid* grid) {
     if (!b.gravity || b.skips(kSkipOnSolid)) return false;
     b.on_ground = (grid && tile_supports(b, *grid)) ||
                   index.any(b, [&](uint32_t k) { return supports_other(b, supporters[k], k, self_slot); });

@@ -37,8 +37,15 @@ bool entity_supports(const Body& b, const Supporter& other);
 // top of a still solid body overlapping it horizontally. Such a body skips
 // gravity, so a stack at rest stays exactly where it is.
 bool rests_on_tile(const Body& b, const TileGrid& grid);
-bool rests_on(const Body& b, const Body& other);
 bool rests_on(const Body& b, const Supporter& other);
+
+// Whether candidate k of a scene or supporter list, in which b's own slot is
+// self_slot (or -1), is b itself or shares b's nonzero id: such a candidate
+// neither holds b up nor gives it a resting contact.
+template <class Other>
+bool is_self(const Body& b, const Other& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
+    return k == self_slot || (b.id != 0 && other.id == b.id);
+}
 
 // Tile steps return whether they looked at the map (false: no map, no speed
 // on that axis, or skipped); detect_on_solid whether it applied.
@@ -49,9 +56,9 @@ bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_s
                      const TileGrid* grid);
 // The same against the frame's supporters (self_slot: b's own slot there).
 bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::ptrdiff_t self_slot,
-                     const TileGrid* grid);
+                          const TileGrid* grid);
 // The same, finding the candidates through an index built on `supporters`.
 bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
-                     std::ptrdiff_t self_slot, const TileGrid* grid);
+                          std::ptrdiff_t self_slot, const TileGrid* grid);
 
 }  // namespace ds
