@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "stopwatch.hpp"
 #include "tile_grid.hpp"
 #include "tiles.hpp"
 #include "tween.hpp"
@@ -128,12 +129,18 @@ private:
                      std::span<const Body> scene, std::span<FirstWrites> writes);
     void take_supporters(std::span<const Body> scene);
     bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
+    // One step over a block of active_; adds to the step's processed count
+    // and, from t0 to its return value (now), to its time.
     template <class MayWrite, class Step>
-    void pass(StepId id, std::span<Body> bodies, std::span<FirstWrites> writes,
-              MayWrite&& may_write, Step&& step);
+    Clock::time_point pass(StepId id, std::span<const uint32_t> block, std::span<Body> bodies,
+                           std::span<FirstWrites> writes, Clock::time_point t0, MayWrite&& may_write,
+                           Step&& step);
     template <class Bulk>
     void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                      Bulk&& bulk);
+
+    // Bodies per block of the per-entity steps: 1024 × 168 B (172 KB) stays in L2.
+    static constexpr size_t kBlock = 1024;
 
     std::vector<Body> start_;  // the frame-start scene (before tweens)
     // The frame-start bodies that can hold another up (solid, not ghosts),
