@@ -4,7 +4,6 @@
 #include <bit>
 #include <climits>
 #include <cmath>
-#include <functional>
 
 #include "contacts.hpp"
 
@@ -79,8 +78,7 @@ void PairSweep::query(const CellRange& r, uint32_t after, std::span<const size_t
     auto push = [&](uint32_t m) {
         if (m <= after || queued_[m] == current_ + 1) return;
         queued_[m] = current_ + 1;
-        heap_.push_back(m);
-        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+        queue_.push_back(m);
     };
     if (all) {
         for (uint32_t m = after + 1; m < members.size(); ++m) push(m);
@@ -111,15 +109,15 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
         current_ = a;
         // Earlier bodies stay in the grid: query() passes over them.
         Body& first = bodies[members[a]];
-        heap_.clear();
+        queue_.clear();
+        size_t next = 0;
         // Where a is filed is where it is: it moved since only as someone's
         // second, and was re-filed then. (Big bodies are filed nowhere.)
         CellRange queried = is_big_[a] ? cells(first) : range_[a];
         query(queried, a, members, is_big_[a] != 0);
-        while (!heap_.empty()) {
-            std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
-            const uint32_t b = heap_.back();
-            heap_.pop_back();
+        std::sort(queue_.begin(), queue_.end());
+        while (next < queue_.size()) {
+            const uint32_t b = queue_[next++];
             Body& second = bodies[members[b]];
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
@@ -140,8 +138,13 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             if ((first.x.v != ax || first.y.v != ay) && !is_big_[a]) {
                 const CellRange now = cells(first);
                 if (!same_cells(now, queried)) {
+                    const size_t had = queue_.size();
                     query(now, b, members, false);
                     queried = now;
+                    // Every candidate still to come lies after b: sorting
+                    // them with the new ones keeps the all-pairs order.
+                    if (queue_.size() != had)
+                        std::sort(queue_.begin() + static_cast<std::ptrdiff_t>(next), queue_.end());
                 }
             }
         }

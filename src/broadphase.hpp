@@ -45,7 +45,8 @@ private:
     std::vector<uint8_t> is_big_;      // by member
     std::vector<CellRange> range_;     // by member: where it is registered
     std::vector<uint32_t> queued_;     // by member: the body (+1) it was last queued for
-    std::vector<uint32_t> heap_;       // candidates of the current body, smallest first
+    // Candidates of the current body; sorted from `next` on, taken in order.
+    std::vector<uint32_t> queue_;
     std::vector<double> sizes_;
     uint32_t current_ = 0;
 };
