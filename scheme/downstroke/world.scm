@@ -10,12 +10,31 @@
 (define-record-type <camera>
   (%make-camera x y)
   camera?
-  (x camera-x camera-x-set!)
-  (y camera-y camera-y-set!))
+  (x camera-x %camera-x-set!)
+  (y camera-y %camera-y-set!))
+
+(define (check-coordinate who axis v)
+  ;; A NaN or infinite camera would draw nothing and follow nothing, silently.
+  (unless (and (real? v) (not (nan? v)) (not (inf? v)))
+    (scm-error 'wrong-type-arg who "camera ~A: expected a finite number, got ~S"
+               (list axis v) #f)))
 
 (define* (make-camera #:key (x 0) (y 0))
-  "A camera at (X, Y), the world point drawn at the screen's top-left."
+  "A camera at (X, Y), the world point drawn at the screen's top-left.
+X and Y must be finite real numbers."
+  (check-coordinate "make-camera" 'x x)
+  (check-coordinate "make-camera" 'y y)
   (%make-camera x y))
+
+(define (camera-x-set! camera x)
+  "Move CAMERA so that world x X is at the screen's left edge."
+  (check-coordinate "camera-x-set!" 'x x)
+  (%camera-x-set! camera x))
+
+(define (camera-y-set! camera y)
+  "Move CAMERA so that world y Y is at the screen's top edge."
+  (check-coordinate "camera-y-set!" 'y y)
+  (%camera-y-set! camera y))
 
 (define-record-type <scene>
   (%make-scene entities tilemap camera camera-target)

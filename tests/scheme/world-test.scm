@@ -23,6 +23,15 @@
 (let ((c (make-camera #:y 9)))
   (test-equal '(0 9) (list (camera-x c) (camera-y c))))
 (test-equal #f (camera? 'camera))
+;; A camera holds finite real coordinates; anything else is refused by name.
+(test-equal "In procedure make-camera: camera x: expected a finite number, got +nan.0\n"
+  (error-text (lambda () (make-camera x: +nan.0))))
+(test-assert (mentions? (error-text (lambda () (make-camera y: "3"))) "make-camera" "camera y" "\"3\""))
+(test-assert (mentions? (error-text (lambda () (make-camera y: -inf.0))) "camera y" "-inf.0"))
+(let ((c (make-camera x: 4 y: 1/2)))
+  (test-assert (mentions? (error-text (lambda () (camera-x-set! c +inf.0))) "camera-x-set!" "camera x"))
+  (test-assert (mentions? (error-text (lambda () (camera-y-set! c 'up))) "camera-y-set!" "camera y" "up"))
+  (test-equal '(4 1/2) (list (camera-x c) (camera-y c))))  ; refused writes leave it as it was
 
 ;;; ---------------------------------------------------------------- make-scene and accessors
 (let ((s (make-scene)))
