@@ -274,7 +274,11 @@ every frame whose set of held actions differs from the frame before."
   "Run GAME headless at a fixed timestep (dt = frame-delay ms): input, then
 engine-update, update, camera follow, render — until the game's frame
 counter reaches FRAMES (so a second call with the same FRAMES runs nothing
-more), or until the 'quit action is held."
+more), or until the 'quit action is held. FRAMES is #f (run until quit) or
+a real number, +inf.0 meaning the same as #f."
+  (unless (or (not frames) (and (real? frames) (not (nan? frames))))
+    (scm-error 'wrong-type-arg "game-run!"
+               "frames: expected #f or a frame count, got ~S" (list frames) #f))
   (parameterize ((current-game game))
     (let ((dt (game-frame-delay game))
           (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))

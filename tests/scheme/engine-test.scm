@@ -37,6 +37,14 @@
 (test-equal "10 frames run" 10 (game-frame g1))
 (test-equal "y = 10·11/2" 55 (entity-ref (first-entity g1) #:y))
 (test-equal "vy = 10" 10 (entity-ref (first-entity g1) #:vy))
+;; frames: is #f or a real count; a NaN or a string is refused and runs nothing.
+(test-equal "frames: a string is refused by name"
+  "In procedure game-run!: frames: expected #f or a frame count, got \"12\"\n"
+  (error-text (lambda () (game-run! g1 frames: "12"))))
+(test-assert "frames: NaN is refused" (mentions? (error-text (lambda () (game-run! g1 frames: +nan.0))) "game-run!" "+nan.0"))
+(test-equal "refused runs ran nothing" 10 (game-frame g1))
+(game-run! g1 frames: 12.5)
+(test-equal "a real frames: runs while the counter is below it" 13 (game-frame g1))
 ;; engine-update: #f: nothing moves.
 (define g2 (make-game scene: (make-scene entities: (list falling)) engine-update: #f))
 (game-run! g2 frames: 10)
