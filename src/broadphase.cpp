@@ -95,11 +95,11 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
     auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
     // Cells twice the median box size: most boxes then touch 1-4 cells.
-    sizes_.clear();
-    for (size_t i : members)
-        sizes_.push_back(std::max(std::fabs(bodies[i].w.v), std::fabs(bodies[i].h.v)));
-    std::nth_element(sizes_.begin(), sizes_.begin() + n / 2, sizes_.end());
-    inv_cell_ = 1 / std::max(2 * sizes_[n / 2], 1.0);
+    const double median = sampled_median(n, sizes_, [&](size_t m) {
+        const Body& b = bodies[members[m]];
+        return std::max(std::fabs(b.w.v), std::fabs(b.h.v));
+    });
+    inv_cell_ = 1 / std::max(2 * median, 1.0);
 
     is_big_.assign(n, 0);
     range_.resize(n);

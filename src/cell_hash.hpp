@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace ds {
 
@@ -18,6 +20,21 @@ inline int64_t cell_index(double v, double inv_cell) {
     const double c = std::clamp(v * inv_cell, -kLimit, kLimit);
     const auto t = static_cast<int64_t>(c);
     return t - (c < static_cast<double>(t));
+}
+
+// The median of size(k) for k in [0, n), from at most 1025 evenly spaced k
+// (0 when n = 0): the grids size their cells from it. Any cell size gives
+// the same answers, only faster or slower, so a sample does as well as all
+// n and spares a selection over 100000 sizes every frame.
+template <class Size>
+double sampled_median(size_t n, std::vector<double>& scratch, Size&& size) {
+    if (n == 0) return 0;
+    const size_t stride = std::max<size_t>(1, n / 1024);
+    scratch.clear();
+    for (size_t k = 0; k < n; k += stride) scratch.push_back(size(k));
+    const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
+    std::nth_element(scratch.begin(), mid, scratch.end());
+    return *mid;
 }
 
 // A bucket for cell (cx, cy) among mask + 1 (a power of two). Distinct cells
