@@ -94,12 +94,10 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
                     std::span<const uint8_t> resting) {
     auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
-    // Cells twice the median box size: most boxes then touch 1-4 cells.
-    const double median = sampled_median(n, sizes_, [&](size_t m) {
+    inv_cell_ = inverse_cell_size(n, sizes_, [&](size_t m) {
         const Body& b = bodies[members[m]];
         return std::max(std::fabs(b.w.v), std::fabs(b.h.v));
     });
-    inv_cell_ = 1 / std::max(2 * median, 1.0);
 
     is_big_.assign(n, 0);
     range_.resize(n);

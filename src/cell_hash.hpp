@@ -22,19 +22,19 @@ inline int64_t cell_index(double v, double inv_cell) {
     return t - (c < static_cast<double>(t));
 }
 
-// The median of size(k) for k in [0, n), from at most 1025 evenly spaced k
-// (0 when n = 0): the grids size their cells from it. Any cell size gives
-// the same answers, only faster or slower, so a sample does as well as all
-// n and spares a selection over 100000 sizes every frame.
+// 1 / cell size for a grid of n boxes: cells twice the median box size
+// (at least 1), so most boxes touch 1-4 cells. The median comes from at
+// most 1025 evenly spaced k: any cell size gives the same answers, only
+// faster or slower, so a sample does as well as all n and spares a
+// selection over 100000 sizes every frame. n must be positive.
 template <class Size>
-double sampled_median(size_t n, std::vector<double>& scratch, Size&& size) {
-    if (n == 0) return 0;
+double inverse_cell_size(size_t n, std::vector<double>& scratch, Size&& size) {
     const size_t stride = std::max<size_t>(1, n / 1024);
     scratch.clear();
     for (size_t k = 0; k < n; k += stride) scratch.push_back(size(k));
     const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
     std::nth_element(scratch.begin(), mid, scratch.end());
-    return *mid;
+    return 1 / std::max(2 * *mid, 1.0);
 }
 
 // A bucket for cell (cx, cy) among mask + 1 (a power of two). Distinct cells

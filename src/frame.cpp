@@ -99,7 +99,7 @@ Clock::time_point Frame::pass(StepId id, std::span<const uint32_t> block, std::s
     const auto t1 = Clock::now();
     StepStats& st = stats_.step[id];
     st.processed += ran;
-    st.ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+    st.ms += ms_between(t0, t1);
     return t1;
 }
 

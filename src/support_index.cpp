@@ -40,7 +40,7 @@ size_t SupportIndex::bucket(int64_t cx, int64_t cy) const {
 
 void SupportIndex::build(std::span<const Supporter> bodies) {
     const auto n = static_cast<uint32_t>(bodies.size());
-    if (n > 0) inv_cw_ = 1 / std::max(2 * sampled_median(n, widths_, [&](size_t k) { return std::fabs(bodies[k].w); }), 1.0);
+    if (n > 0) inv_cw_ = inverse_cell_size(n, widths_, [&](size_t k) { return std::fabs(bodies[k].w); });
     int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
     tops_.clear();
     for (const Supporter& o : bodies) {
