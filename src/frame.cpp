@@ -168,6 +168,10 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
                  return indexed ? detect_on_supporters(b, supporters_, support_index_, support_slot_[i], grid)
                                 : detect_on_supporters(b, supporters_, support_slot_[i], grid);
              });
+        // Counted while the block is in cache. Nothing later in the frame
+        // moves a body that depends on nobody, and one that does never counts.
+        if (count_still_ && round + 1 == std::max(1, opts.substeps))
+            for (const uint32_t i : block) counted_still_ += may_settle(bodies[i], colliders_);
     }
     // A step leaves alone every body it did not apply to, quiet ones included.
     for (int id = kStepAcceleration; id <= kStepOnSolid; ++id) {
@@ -189,39 +193,59 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
             writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
 }
 
-void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> quiet) {
+void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> quiet, bool take) {
     active_.clear();
-    members_.clear();
-    grouped_ = 0;
+    begin_census(bodies.size(), take);
     for (size_t i = 0; i < bodies.size(); ++i) {
         if (quiet.empty() || !quiet[i]) active_.push_back(static_cast<uint32_t>(i));
         enlist(bodies[i], i);
     }
-    colliders_ = !members_.empty();
+    end_census();
+}
+
+void Frame::begin_census(size_t n, bool take) {
+    members_.clear();
+    grouped_ = 0;
+    supporters_taken_ = take;
+    if (take) clear_supporters(n);
 }
 
 void Frame::enlist(const Body& b, size_t i) {
-    if (b.collides()) members_.push_back(i);
+    if (b.collides()) {
+        members_.push_back(i);
+        if (supporters_taken_) add_supporter(b, i);
+    }
     grouped_ += b.group != 0;
 }
 
-void Frame::take_supporters(std::span<const Body> scene) {
+void Frame::end_census() {
+    colliders_ = !members_.empty();
+    if (supporters_taken_) slotted_.assign(members_.begin(), members_.end());
+}
+
+void Frame::clear_supporters(size_t n) {
     // Only the slots handed out last time need clearing.
-    if (support_slot_.size() != scene.size()) support_slot_.assign(scene.size(), -1);
+    if (support_slot_.size() != n) support_slot_.assign(n, -1);
     else
         for (const size_t i : slotted_) support_slot_[i] = -1;
     supporters_.clear();
-    for (const size_t i : members_) {
-        support_slot_[i] = std::ssize(supporters_);
-        supporters_.push_back(Supporter::of(scene[i]));
-    }
+}
+
+void Frame::add_supporter(const Body& b, size_t i) {
+    support_slot_[i] = std::ssize(supporters_);
+    supporters_.push_back(Supporter::of(b));
+}
+
+void Frame::take_supporters(std::span<const Body> scene) {
+    clear_supporters(scene.size());
+    for (const size_t i : members_) add_supporter(scene[i], i);
     slotted_.assign(members_.begin(), members_.end());
 }
 
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                          std::span<const Body> scene, std::span<FirstWrites> writes,
                          std::span<const uint8_t> quiet) {
-    census(bodies, quiet);
+    census(bodies, quiet, false);
     run_physics(bodies, grid, opts, scene, writes);
 }
 
@@ -235,7 +259,9 @@ void Frame::run_physics(std::span<Body> bodies, const TileGrid* grid, const Fram
         // Ground detection reads only the supporters, copied out before any
         // body moves: the caller's frame-start scene (before the tweens) for
         // the first sub-frame, else the bodies as this sub-frame finds them.
-        take_supporters(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
+        // The census may have taken the frame-start supporters already.
+        if (round > 0 || !supporters_taken_)
+            take_supporters(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
         step_bodies(bodies, grid, opts, round, writes);
         auto t0 = Clock::now();
         if (members_.size() >= 2)
@@ -268,8 +294,7 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     // One sweep over the bodies does the census and finds those the caller
     // left as the last frame did (bit 0 of quiet_: quiet unless it looks
     // for supporters, bit 1, and some body turns out to collide).
-    members_.clear();
-    grouped_ = 0;
+    begin_census(n, true);
     for (size_t i = 0; i < n; ++i) {
         const Body& b = world.bodies[i];
         enlist(b, i);
@@ -278,7 +303,7 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
         const bool alone = untouched_[i] && settled_[i] && !tweened_[i] && !depends_on_others(b, false);
         quiet_[i] = static_cast<uint8_t>(alone | (depends_on_others(b, true) << 1));
     }
-    colliders_ = !members_.empty();
+    end_census();
     active_.clear();
     for (size_t i = 0; i < n; ++i) {
         quiet_[i] = (quiet_[i] & 1) && !(colliders_ && (quiet_[i] & 2));
@@ -323,12 +348,14 @@ const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
     // bodies could settle (rain with a third at rest, or a crowd of solids
     // that can never be quiet, would pay for nothing).
     const bool track = worth_tracking_;
+    count_still_ = !track;  // step_bodies counts the still ones, all being active
+    counted_still_ = 0;
     if (track) {
         plan_quiet(world, opts);  // and the census
     } else {
         quiet_.assign(world.bodies.size(), 0);
         last_out_.clear();  // no longer known: nothing is settled
-        census(world.bodies, {});
+        census(world.bodies, {}, true);  // the bodies are the frame-start scene
     }
     // Every per-entity step sees the scene as it was before the tweens ran
     // (without tweens, that is the bodies as they are: no copy needed).
@@ -340,10 +367,8 @@ const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
         step_tweens(world, opts.dt);
         run_physics(world.bodies, world.grid, opts, start_, {});
     }
-    const size_t still =
-        track ? note_settled(world, opts)
-              : static_cast<size_t>(std::count_if(world.bodies.begin(), world.bodies.end(),
-                                                  [&](const Body& b) { return may_settle(b, colliders_); }));
+    const size_t still = track ? note_settled(world, opts) : counted_still_;
+    count_still_ = false;
     worth_tracking_ = still * 2 >= world.bodies.size();
     return report_;
 }

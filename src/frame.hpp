@@ -123,8 +123,15 @@ private:
     size_t note_settled(const World& world, const FrameOptions& opts);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      int round, std::span<FirstWrites> writes);
-    void census(std::span<const Body> bodies, std::span<const uint8_t> quiet);
+    // The census finds each body's roles; with `take`, in the same sweep it
+    // copies out the supporters, which the bodies then must be the
+    // frame-start scene for (a large scene is read once instead of twice).
+    void census(std::span<const Body> bodies, std::span<const uint8_t> quiet, bool take);
+    void begin_census(size_t n, bool take);
     void enlist(const Body& b, size_t i);  // the census's count of one body's roles
+    void end_census();
+    void clear_supporters(size_t n);
+    void add_supporter(const Body& b, size_t i);
     void run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      std::span<const Body> scene, std::span<FirstWrites> writes);
     void take_supporters(std::span<const Body> scene);
@@ -155,6 +162,7 @@ private:
     std::vector<size_t> members_;
     std::vector<size_t> slotted_;  // the bodies support_slot_ gave a slot to
     uint64_t grouped_ = 0;
+    bool supporters_taken_ = false;  // by the census, for the first sub-frame
     std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
     SupportIndex support_index_;     // over supporters_, when there are many
@@ -167,6 +175,9 @@ private:
     std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
     std::vector<uint8_t> still_;  // by body, after the last frame: still, depending on nobody
     size_t still_count_ = 0;
+    // When not tracking, step_bodies counts the bodies that end the frame still.
+    bool count_still_ = false;
+    size_t counted_still_ = 0;
     const TileGrid* last_grid_ = nullptr;
     FrameOptions last_opts_;
     bool worth_tracking_ = true;

@@ -642,6 +642,34 @@ TEST_CASE("settled bodies are left alone, until something they depend on changes
     CHECK_EXACT(w.bodies[0].y, 17);
 }
 
+TEST_CASE("settled bodies are tracked once half of them end a frame still") {
+    // Tracking which bodies settled costs a copy of each, so a frame starts
+    // it only when at least half ended the last frame still. Four movers:
+    // no tracking after the first frame. Then two stop: the untracked frame
+    // counts them, the next starts tracking, the one after finds them
+    // settled, and from then on they are not stepped.
+    Body mover = box(0, 0, 8, 8), still = box(40, 0, 8, 8);
+    mover.vx = I(1);
+    World w;
+    w.bodies = {mover, mover, mover, mover};
+    Frame f;
+    f.step(w, opts());
+    w.bodies[1].vx = I(0);
+    w.bodies[3].vx = I(0);
+    for (int k = 0; k < 3; ++k) f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepVelocityX].processed == 4);
+    f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepVelocityX].processed == 2);
+    // One still of three is too few: every body is stepped in both
+    // sub-frames, frame after frame.
+    w.bodies = {mover, still, mover};
+    FrameOptions two = opts();
+    two.substeps = 2;
+    Frame g;
+    for (int k = 0; k < 4; ++k) g.step(w, two);
+    CHECK(g.stats().step[ds::kStepVelocityX].processed == 6);
+}
+
 TEST_CASE("a body that stops being solid loses its supporter slot") {
     // Frame 1: both solid, the first holds slot 0. Frame 2: the first is no
     // longer solid and stands on the second, which now holds slot 0; a slot
