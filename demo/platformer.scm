@@ -35,37 +35,27 @@
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-;;; Both records are bounded, so that a game left running (a soak test, a
-;;; REPL session) stays in constant memory: the history is a ring of the
-;;; last `history-frames' frames; the event list is cut back to its newest
-;;; `events-kept' once it holds twice that (in batches, so a note costs O(1)).
+;;; Both records are bounded (see (downstroke history)), so that a game left
+;;; running (a soak test, a REPL session) stays in constant memory: a ring of
+;;; the last 1000 frames, and between 500 and 1000 of the newest events.
 (define trace? (main-script? "platformer.scm"))
-(define events '())                     ; ((frame . what) ...), newest first
-(define events-kept 500)
-(define events-count 0)
-(define history-frames 1000)
-(define history (make-vector history-frames #f)) ; slot frame mod size: (frame . player)
+(define events (make-bounded-log))      ; of (frame . what), newest first; 500 kept
+(define history (make-frame-ring 1000)) ; each frame's player
 
 (define (note! game what)
-  (set! events (cons (cons (game-frame game) what) events))
-  (set! events-count (+ events-count 1))
-  (when (> events-count (* 2 events-kept))
-    (set! events (list-head events events-kept))
-    (set! events-count events-kept))
+  (set! events (bounded-log-push events (cons (game-frame game) what) 500))
   (when trace? (format #t "frame ~3d: ~a~%" (game-frame game) what)))
 
-(define (remember! frame player)
-  (vector-set! history (modulo frame history-frames) (cons frame player)))
+(define (remember! frame player) (frame-ring-set! history frame player))
 
 (define (event-frames what)
   "The frames WHAT happened in, oldest first."
-  (filter-map (lambda (e) (and (eq? (cdr e) what) (car e))) (reverse events)))
+  (filter-map (lambda (e) (and (eq? (cdr e) what) (car e))) (reverse (bounded-log-items events))))
 
 (define (player-at frame)
   "The player as it was at the end of FRAME, or #f when FRAME is not one of
-the last `history-frames'."
-  (let ((slot (vector-ref history (modulo frame history-frames))))
-    (and slot (eqv? (car slot) frame) (cdr slot))))
+the last 1000."
+  (frame-ring-ref history frame))
 
 ;;; ------------------------------------------------------------ the game
 (define was-on-ground? #f)

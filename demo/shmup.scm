@@ -29,34 +29,24 @@
   (append-map (lambda (row) (map (lambda (col) (enemy row col)) (iota 5))) (iota 2)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-;;; Both records are bounded, so that a game left running (a soak test, a
-;;; REPL session) stays in constant memory: the history is a ring of the
-;;; last `history-frames' frames; the event list is cut back to its newest
-;;; `events-kept' once it holds twice that (in batches, so a note costs O(1)).
+;;; Both records are bounded (see (downstroke history)), so that a game left
+;;; running (a soak test, a REPL session) stays in constant memory: a ring of
+;;; the last 1000 frames, and between 500 and 1000 of the newest events.
 (define trace? (main-script? "shmup.scm"))
-(define events '())                     ; ((frame . what) ...), newest first
-(define events-kept 500)
-(define events-count 0)
-(define history-frames 1000)
-(define history (make-vector history-frames #f)) ; slot frame mod size: (frame . entities)
+(define events (make-bounded-log))      ; of (frame . what), newest first; 500 kept
+(define history (make-frame-ring 1000)) ; each frame's entities
 (define shots 0)                        ; bullets fired so far
 
 (define (note! game what)
-  (set! events (cons (cons (game-frame game) what) events))
-  (set! events-count (+ events-count 1))
-  (when (> events-count (* 2 events-kept))
-    (set! events (list-head events events-kept))
-    (set! events-count events-kept))
+  (set! events (bounded-log-push events (cons (game-frame game) what) 500))
   (when trace? (format #t "frame ~3d: ~a~%" (game-frame game) what)))
 
-(define (remember! frame entities)
-  (vector-set! history (modulo frame history-frames) (cons frame entities)))
+(define (remember! frame entities) (frame-ring-set! history frame entities))
 
 (define (entities-at frame)
   "The entities as they were at the end of FRAME, or #f when FRAME is not
-one of the last `history-frames'."
-  (let ((slot (vector-ref history (modulo frame history-frames))))
-    (and slot (eqv? (car slot) frame) (cdr slot))))
+one of the last 1000."
+  (frame-ring-ref history frame))
 
 (define (kind-of k) (lambda (e) (eq? (entity-ref e #:kind) k)))
 

@@ -6,10 +6,11 @@
   #:use-module (downstroke tween)
   #:use-module (downstroke tilemap)
   #:use-module (downstroke engine)
-  #:use-module (downstroke hash))
+  #:use-module (downstroke hash)
+  #:use-module (downstroke history))
 
 (eval-when (expand load eval)
   (for-each (lambda (name)
               (module-use! (module-public-interface (current-module))
                            (resolve-interface (list 'downstroke name))))
-            '(entity world physics tween tilemap engine hash)))
+            '(entity world physics tween tilemap engine hash history)))

@@ -6,6 +6,7 @@
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
   #:use-module (downstroke tilemap)
+  #:use-module (downstroke history)
   #:use-module ((downstroke native) #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor!))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
@@ -93,36 +94,25 @@ that many past frames for game-rewind!."
   (check-substeps "make-game" substeps)
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps (and resting-contacts? #t)
-              (make-input '() '()) input-script 0 (make-log) history (make-log)))
+              (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)))
 
 ;;; ---------------------------------------------------------------- time travel
 ;;; Scenes are values, so keeping the past costs one pointer per frame.
 
-;;; ---------------------------------------------------------------- bounded logs
-;;; The history and the sound log run for as long as the game does: each is a
-;;; newest-first list kept with its length, (count . items), cut back to its
-;;; newest KEEP entries once it holds twice that — one copy per KEEP additions,
-;;; so adding stays O(1) on average and memory stays bounded.
-
-(define (make-log) '(0))
-(define (log-push log item keep)
-  (let ((count (+ (car log) 1)) (items (cons item (cdr log))))
-    (if (> count (* 2 keep)) (cons keep (list-head items keep)) (cons count items))))
-(define (log-newest log n)
-  "The newest N items (all of them when there are fewer), newest first."
-  (if (> (car log) n) (list-head (cdr log) n) (cdr log)))
+;;; The history and the sound log run for as long as the game does: both are
+;;; bounded logs (downstroke history).
 
 (define (remember-scene! game)
   "Record the scene as it is at the start of the coming frame."
   (let ((n (game-history-size game)))
     (when (> n 0)
-      (game-history-log-set! game (log-push (game-history-log game)
-                                            (cons (game-frame game) (game-scene game)) n)))))
+      (game-history-log-set! game (bounded-log-push (game-history-log game)
+                                                    (cons (game-frame game) (game-scene game)) n)))))
 
 (define (game-history game)
   "The remembered (frame . scene) pairs, newest first: the scene each frame
 started from."
-  (log-newest (game-history-log game) (game-history-size game)))
+  (bounded-log-newest (game-history-log game) (game-history-size game)))
 
 (define (game-rewind! game k)
   "Go back K frames: the scene becomes the one frame (current − K) started
@@ -209,7 +199,7 @@ frames to run, as in `downstroke demo/sandbox.scm 3600'."
 (define (game-sounds game)
   "The sounds played lately, as (frame . name), oldest first: at least the
 newest 4096 (older ones are dropped, so a long run stays in bounded memory)."
-  (reverse (cdr (game-sound-log game))))
+  (reverse (bounded-log-items (game-sound-log game))))
 
 (define (play-sound game-or-name . rest)
   "Play a sound. Headless, the sound is recorded with the frame it was played
@@ -217,8 +207,8 @@ in: (play-sound 'jump) uses the running game, (play-sound game 'jump) names it."
   (let ((game (if (game? game-or-name) game-or-name (current-game)))
         (name (if (game? game-or-name) (car rest) game-or-name)))
     (when game
-      (game-sound-log-set! game (log-push (game-sound-log game)
-                                          (cons (game-frame game) name) *sounds-kept*)))))
+      (game-sound-log-set! game (bounded-log-push (game-sound-log game)
+                                                  (cons (game-frame game) name) *sounds-kept*)))))
 
 (define current-game (make-parameter #f))
 
