@@ -350,4 +350,11 @@ demos' top-level names stay in that module."
   (test-assert "a run is also reproducible against the first one"
     (equal? (entities-of shmup) (entities-of (run-demo "shmup.scm" 240)))))
 
+;;; ---------------------------------------------------------------- fall
+;;; The small headless script runs its 90 frames when loaded; the player
+;;; jumps once, on frame 40, and the jump's sound is logged.
+(let ((fall (load-demo "fall.scm")))
+  (test-equal "fall: one jump sound, on frame 40" '((40 . jump)) (game-sounds (game-of fall)))
+  (test-equal "fall: 90 frames ran" 90 (game-frame (game-of fall))))
+
 (test-end "demos")
