@@ -128,8 +128,7 @@ Returns that frame's number."
     (game-scene-set! game (cdr entry))
     (game-frame-set! game target)
     ;; Forget the future we left: the next frames record it anew.
-    (let ((kept (filter (lambda (e) (< (car e) target)) past)))
-      (game-history-log-set! game (cons (length kept) kept)))
+    (game-history-log-set! game (list->bounded-log (filter (lambda (e) (< (car e) target)) past)))
     target))
 
 ;;; ---------------------------------------------------------------- costs

@@ -5,7 +5,8 @@
 (define-module (downstroke history)
   #:use-module (srfi srfi-9)
   #:export (make-frame-ring frame-ring? frame-ring-set! frame-ring-ref
-            make-bounded-log bounded-log-push bounded-log-items bounded-log-newest))
+            make-bounded-log bounded-log-push bounded-log-items bounded-log-newest
+            list->bounded-log))
 
 (define (check-size who what n)
   (unless (and (exact-integer? n) (positive? n))
@@ -69,3 +70,10 @@ first."
 (define (bounded-log-newest log n)
   "The newest N items (all of them when there are fewer), newest first."
   (if (> (car log) n) (list-head (cdr log) n) (cdr log)))
+
+(define (list->bounded-log items)
+  "A bounded log holding ITEMS, a proper list, newest first."
+  (unless (list? items)
+    (scm-error 'wrong-type-arg 'list->bounded-log "items: expected a proper list, got ~S"
+               (list items) (list items)))
+  (cons (length items) items))

@@ -43,6 +43,15 @@
     (test-equal '(g f e d) (bounded-log-items (push-all five '(f g) 2)))
     (test-equal '(h g) (bounded-log-items (push-all five '(f g h) 2)))))
 
+;; a log made from a list, newest first, goes on as any other
+(let ((log (list->bounded-log '(c b a))))
+  (test-equal '(c b a) (bounded-log-items log))
+  (test-equal '(c b) (bounded-log-newest log 2))
+  (test-equal '(e d) (bounded-log-items (push-all log '(d e) 2)))
+  (test-equal '() (bounded-log-items (list->bounded-log '()))))
+(test-equal "In procedure list->bounded-log: items: expected a proper list, got (a . b)\n"
+  (error-text (lambda () (list->bounded-log '(a . b)))))
+
 (test-equal "In procedure bounded-log-push: keep: expected a positive exact integer, got 0\n"
   (error-text (lambda () (bounded-log-push (make-bounded-log) 'a 0))))
 (test-assert (mentions? (error-text (lambda () (bounded-log-push (make-bounded-log) 'a 'many)))
