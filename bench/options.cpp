@@ -18,15 +18,23 @@ std::vector<std::string> split(const std::string& s) {
     return out;
 }
 
-double to_double(const std::string& opt, const std::string& v) {
+// Whether `parse` (std::stod, std::stoi, …) reads all of v, storing it in
+// out; a throw reads nothing (so "" counts as read whole, out left as it was).
+template <class T, class Parse>
+bool parse_whole(const std::string& v, T& out, Parse parse) {
     size_t used = 0;
-    double d = 0;
     try {
-        d = std::stod(v, &used);
+        out = parse(v, &used);
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used != v.size() || !(d > 0)) throw std::invalid_argument(opt + ": expected a positive number, got '" + v + "'");
+    return used == v.size();
+}
+
+double to_double(const std::string& opt, const std::string& v) {
+    double d = 0;
+    const bool whole = parse_whole(v, d, [](const std::string& s, size_t* used) { return std::stod(s, used); });
+    if (!whole || !(d > 0)) throw std::invalid_argument(opt + ": expected a positive number, got '" + v + "'");
     return d;
 }
 
@@ -40,14 +48,9 @@ std::string quoted(const std::string& arg) {
 }  // namespace
 
 int count_arg(const std::string& opt, const std::string& v, int least) {
-    size_t used = 0;
     int n = 0;
-    try {
-        n = std::stoi(v, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != v.size() || n < least) throw std::invalid_argument(opt + ": expected a count, got '" + v + "'");
+    const bool whole = parse_whole(v, n, [](const std::string& s, size_t* used) { return std::stoi(s, used); });
+    if (!whole || n < least) throw std::invalid_argument(opt + ": expected a count, got '" + v + "'");
     return n;
 }
 
