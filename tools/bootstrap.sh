@@ -5,8 +5,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# libbox2d-dev and gnuplot-nox only serve the benchmarks (the box2d path; the accuracy plot).
-packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev libbox2d-dev gnuplot-nox)
+# libbox2d-dev and gnuplot-nox only serve the benchmarks (the box2d path; the accuracy plot);
+# the SDL2 set is the renderer (window, capture, input, sound); xvfb, xauth, x11-apps (xwd)
+# and xdotool serve the one test that opens a real window on a virtual display.
+packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev libbox2d-dev gnuplot-nox
+          libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev xvfb xauth x11-apps xdotool)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

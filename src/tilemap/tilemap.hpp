@@ -38,6 +38,10 @@ struct TileInfo {  // a tileset's <tile> that carries something
     std::string type; // type= (Tiled ≤1.8) or class= (≥1.9)
     Properties properties;
     bool has_collision_shapes = false;  // a non-empty <objectgroup>
+    // An image-collection tile's own picture, as written (relative to image_dir
+    // of its tileset); empty in a single-image tileset.
+    std::string image;
+    int image_width = 0, image_height = 0;
 };
 
 struct Tileset {
@@ -49,6 +53,10 @@ struct Tileset {
     int columns = 0, spacing = 0, margin = 0;
     std::string image;   // as written, relative to the file that names it
     int image_width = 0, image_height = 0;
+    // The folder image paths are relative to: the .tsx's, or the map's when
+    // the tileset is embedded. Empty for maps made in memory. Loading a map
+    // never opens its images; a renderer does when it first draws a tile.
+    std::string image_dir;
     std::vector<TileInfo> tiles;  // sorted by id
 
     const TileInfo* tile(uint32_t local_id) const;

@@ -188,6 +188,11 @@ TileInfo read_tile(const XmlFile& f, const XMLElement* e) {
     // Only an <objectgroup> holding at least one shape counts as collision.
     const XMLElement* shapes = e->FirstChildElement("objectgroup");
     t.has_collision_shapes = shapes && shapes->FirstChildElement("object");
+    if (const XMLElement* img = e->FirstChildElement("image")) {
+        t.image = str_attr(img, "source");
+        t.image_width = size_attr(f, img, "width", 0);
+        t.image_height = size_attr(f, img, "height", 0);
+    }
     return t;
 }
 
@@ -222,6 +227,7 @@ void read_external_tileset(const XmlFile& map_file, const XMLElement* e, Tileset
     if (!root || std::strcmp(root->Name(), "tileset") != 0)
         f.fail(root, "expected a <tileset> root element");
     read_tileset_body(f, root, ts);
+    ts.image_dir = std::filesystem::path(tsx).parent_path().string();
 }
 
 Tileset read_tileset(const XmlFile& f, const XMLElement* e) {
@@ -230,8 +236,10 @@ Tileset read_tileset(const XmlFile& f, const XMLElement* e) {
     if (ts.firstgid == 0 || ts.firstgid > kGidMask)
         f.fail(e, "<tileset> firstgid='" + str_attr(e, "firstgid") + "' is out of range");
     ts.source = str_attr(e, "source");
-    if (ts.source.empty())
+    if (ts.source.empty()) {
         read_tileset_body(f, e, ts);
+        ts.image_dir = std::filesystem::path(f.path).parent_path().string();
+    }
     else
         read_external_tileset(f, e, ts);
     return ts;
