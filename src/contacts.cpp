@@ -70,6 +70,13 @@ bool lands_on(const Body& upper, const Body& rester) {
 
 }  // namespace
 
+namespace {
+thread_local PairLog* installed_log = nullptr;
+}  // namespace
+
+void set_pair_log(PairLog* log) { installed_log = log; }
+PairLog* pair_log() { return installed_log; }
+
 void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     if (a.immovable && b.immovable) return;
     const double ox = overlap(a.x, a.w, b.x, b.w);
@@ -96,8 +103,10 @@ void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
-            if (aabb_overlap(first, second))
+            if (aabb_overlap(first, second)) {
                 resolve_pair(first, second, rests(members[a]), rests(members[b]));
+                note_pushed(members[a], members[b]);
+            }
         }
 }
 

@@ -2,6 +2,8 @@
 #pragma once
 #include <cstdint>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "body.hpp"
 
@@ -26,6 +28,16 @@ bool collision_eligible(const Body& a, const Body& b);
 // up one whose centre is above its own, as an immovable body would: the
 // other lands on it (SPEC §4's immovable rule, first case).
 void resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
+
+// The pairs push-apart resolved, as body indices (the earlier first), in the
+// order resolved: what the debug overlay draws. Nothing is noted unless a
+// caller installs a log on its thread, so a frame pays one test per pair.
+using PairLog = std::vector<std::pair<uint32_t, uint32_t>>;
+void set_pair_log(PairLog* log);  // this thread; nullptr notes nothing
+PairLog* pair_log();
+inline void note_pushed(size_t a, size_t b) {
+    if (PairLog* log = pair_log()) log->emplace_back(static_cast<uint32_t>(a), static_cast<uint32_t>(b));
+}
 
 // How resolve_entity_collisions finds pairs. Both give identical results;
 // Auto uses the grid from a few dozen solid bodies on.

@@ -61,6 +61,14 @@ public:
     void release_all();
 
 private:
+    // Marks every binding of this kind and code as down or up.
+    void set_down(Binding::Kind kind, int32_t code, bool down);
+    void handle_key(const SDL_KeyboardEvent& k);
+    void handle_axis(const SDL_ControllerAxisEvent& a);
+    void handle_window(const SDL_WindowEvent& w);
+    void add_pad(int device_index);
+    void remove_pad(SDL_JoystickID id);
+
     std::vector<Binding> bindings_;
     std::vector<uint8_t> down_;  // per binding: its input is down
     std::vector<SDL_GameController*> pads_;

@@ -1,0 +1,542 @@
+// The renderer as Scheme sees it: a display per game (an off-screen canvas,
+// the tile pictures, the render hook's draw list, and optionally a window
+// with its input), the draw-* commands, frame capture, and sounds. Built only
+// with SDL2 (render_missing.cpp stands in without it).
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include "contacts.hpp"
+#include "failure.hpp"
+#include "keys.hpp"
+#include "plist.hpp"
+#include "registry.hpp"
+#include "stopwatch.hpp"
+#include "tilemap_type.hpp"
+
+#include "audio.hpp"
+#include "canvas.hpp"
+#include "draw_list.hpp"
+#include "input.hpp"
+#include "scene_draw.hpp"
+#include "tile_art.hpp"
+#include "window.hpp"
+
+namespace ds::guile {
+
+namespace {
+
+using namespace ds::render;
+
+// Everything one game draws with. Plain C++: no SCM is kept here.
+struct Display {
+    int width = 0, height = 0;
+    std::unique_ptr<Canvas> canvas;  // made when first drawn
+    TileArt art;
+    DrawList commands;
+    std::unique_ptr<Window> window;
+    InputState input;
+    std::vector<std::string> actions;  // by action number
+    // Per-frame scratch, kept so a frame does not allocate.
+    std::vector<EntityView> entities;
+    std::vector<Trail> trails;
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    DrawCounts counts;
+    size_t culled = 0;
+    double ms = 0;
+};
+
+SCM display_type = SCM_BOOL_F;
+SCM sym_world, sym_screen;
+SCM key_sprite, key_flip_x;
+
+void finalize_display(SCM obj) {
+    delete static_cast<Display*>(scm_foreign_object_ref(obj, 0));
+    scm_foreign_object_set_x(obj, 0, nullptr);
+}
+
+Display* display_of(SCM obj, const char* proc, Failure& f) {
+    f.proc = proc;
+    if (SCM_IS_A_P(obj, display_type)) {
+        if (auto* d = static_cast<Display*>(scm_foreign_object_ref(obj, 0))) return d;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(obj), "expected a display, got ~S");
+    return nullptr;
+}
+
+// ---------------------------------------------------------------- arguments
+
+bool real_arg(SCM v, const char* what, double& out, Failure& f) {
+    if (scm_is_real(v)) {
+        out = scm_to_double(v);
+        if (std::isfinite(out)) return true;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a finite real number, got ~S", what);
+    return false;
+}
+
+bool int_arg(SCM v, const char* what, int lo, int hi, int& out, Failure& f) {
+    if (scm_is_signed_integer(v, lo, hi)) {
+        out = scm_to_int(v);
+        return true;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected an exact integer from %d to %d, got ~S", what, lo, hi);
+    return false;
+}
+
+// (r g b) or (r g b a), each an exact integer 0–255.
+bool color_arg(SCM v, Rgba& out, Failure& f) {
+    uint8_t c[4] = {0, 0, 0, 255};
+    const long n = scm_ilength(v);
+    bool ok = n == 3 || n == 4;
+    SCM p = v;
+    for (long i = 0; ok && i < n; ++i, p = SCM_CDR(p)) {
+        ok = scm_is_unsigned_integer(SCM_CAR(p), 0, 255);
+        if (ok) c[i] = static_cast<uint8_t>(scm_to_uint(SCM_CAR(p)));
+    }
+    if (!ok) {
+        fail(f, "wrong-type-arg", scm_list_1(v), "color: expected (r g b) or (r g b a) of integers 0–255, got ~S");
+        return false;
+    }
+    out = {c[0], c[1], c[2], c[3]};
+    return true;
+}
+
+bool space_arg(SCM v, Space& out, Failure& f) {
+    if (scm_is_eq(v, sym_world)) out = Space::World;
+    else if (scm_is_eq(v, sym_screen)) out = Space::Screen;
+    else {
+        fail(f, "wrong-type-arg", scm_list_1(v), "space: expected world or screen, got ~S");
+        return false;
+    }
+    return true;
+}
+
+bool gid_arg(SCM v, const char* what, uint32_t& out, Failure& f) {
+    if (scm_is_unsigned_integer(v, 0, UINT32_MAX)) {
+        out = scm_to_uint32(v);
+        return true;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a gid (an exact integer ≥ 0, flip bits allowed), got ~S", what);
+    return false;
+}
+
+bool string_arg(SCM v, const char* what, std::string& out, Failure& f) {
+    if (scm_is_string(v)) {
+        char* s = scm_to_utf8_string(v);
+        out.assign(s);
+        free(s);
+        return true;
+    }
+    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a string, got ~S", what);
+    return false;
+}
+
+// ---------------------------------------------------------------- displays
+
+SCM make_display(SCM width, SCM height) {
+    Failure f{.proc = "make-display"};
+    int w = 0, h = 0;
+    if (int_arg(width, "width", 1, kMaxCanvasSide, w, f) && int_arg(height, "height", 1, kMaxCanvasSide, h, f)) {
+        auto* d = new Display;
+        d->width = w;
+        d->height = h;
+        return scm_make_foreign_object_1(display_type, d);
+    }
+    raise(f);
+}
+
+Canvas& canvas_of(Display& d) {
+    if (!d.canvas) d.canvas = std::make_unique<Canvas>(d.width, d.height);
+    return *d.canvas;
+}
+
+SCM open_window(SCM display, SCM title, SCM scale) {
+    Failure f;
+    Display* d = display_of(display, "game-run!", f);
+    std::string t;
+    int s = 0;
+    if (d && string_arg(title, "title", t, f) && int_arg(scale, "scale", 0, 64, s, f))
+        guarded(f, nullptr, [&] {
+            d->window = std::make_unique<Window>(t, d->width, d->height, s);
+            s = d->window->scale();
+        });
+    if (f) raise(f);
+    return scm_from_int(s);
+}
+
+SCM close_window(SCM display) {
+    Failure f;
+    if (Display* d = display_of(display, "game-run!", f)) d->window.reset();
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+// ---------------------------------------------------------------- entities
+
+bool proper_list(SCM v, const char* what, Failure& f) {
+    if (scm_ilength(v) >= 0) return true;
+    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a proper list, got ~S", what);
+    return false;
+}
+
+bool entity_view(SCM e, size_t index, EntityView& out, Failure& f) {
+    if (scm_ilength(e) < 0) {
+        fail(f, "wrong-type-arg", scm_list_1(scm_from_size_t(index)),
+             "entity ~S: expected a keyword plist, got a circular or improper list");
+        return false;
+    }
+    Decoded dec;
+    if (!decode_entity(e, dec, f)) return false;
+    const Body& b = dec.body;
+    out = {b.x.v, b.y.v, b.w.v, b.h.v, b.vx.v, b.vy.v, 0, false,
+           b.solid, b.immovable, b.skips(kSkipEntityCollisions), b.on_ground};
+    SCM sprite = plist_get(e, key_sprite, SCM_BOOL_F);
+    if (scm_is_true(sprite) && !gid_arg(sprite, "#:sprite", out.sprite, f)) return false;
+    out.flip_x = scm_is_true(plist_get(e, key_flip_x, SCM_BOOL_F));
+    return true;
+}
+
+bool entity_views(SCM entities, std::vector<EntityView>& out, Failure& f) {
+    out.clear();
+    if (!proper_list(entities, "entities", f)) return false;
+    size_t i = 0;
+    for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++i) {
+        out.emplace_back();
+        if (!entity_view(SCM_CAR(p), i, out.back(), f)) return false;
+    }
+    return true;
+}
+
+// Matches each entity to its past selves by #:id, or by position when it
+// has none, and collects their centres, oldest first, ending where it is now.
+bool trails_of(SCM current, const std::vector<EntityView>& now, SCM past_lists, std::vector<Trail>& out,
+               Failure& f) {
+    out.clear();
+    if (!proper_list(past_lists, "history", f)) return false;
+    std::vector<int64_t> tags;
+    for (SCM p = current; scm_is_pair(p); p = SCM_CDR(p))
+        tags.push_back(identity_tag(plist_get(SCM_CAR(p), keys->key[kId], SCM_BOOL_F)));
+    out.resize(tags.size());
+    std::unordered_map<int64_t, size_t> by_tag;
+    for (size_t i = 0; i < tags.size(); ++i)
+        if (tags[i] != 0) by_tag.emplace(tags[i], i);
+    for (SCM l = past_lists; scm_is_pair(l); l = SCM_CDR(l)) {
+        SCM list = SCM_CAR(l);
+        if (!proper_list(list, "history entities", f)) return false;
+        size_t i = 0;
+        for (SCM p = list; scm_is_pair(p); p = SCM_CDR(p), ++i) {
+            EntityView v;
+            if (!entity_view(SCM_CAR(p), i, v, f)) return false;
+            const int64_t tag = identity_tag(plist_get(SCM_CAR(p), keys->key[kId], SCM_BOOL_F));
+            size_t who = i;
+            if (tag != 0) {
+                auto it = by_tag.find(tag);
+                if (it == by_tag.end()) continue;
+                who = it->second;
+            } else if (i >= tags.size() || tags[i] != 0) {
+                continue;
+            }
+            out[who].emplace_back(v.x + v.w / 2, v.y + v.h / 2);
+        }
+    }
+    for (size_t i = 0; i < out.size() && i < now.size(); ++i)
+        if (!out[i].empty()) out[i].emplace_back(now[i].x + now[i].w / 2, now[i].y + now[i].h / 2);
+    return true;
+}
+
+SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history) {
+    Failure f;
+    Display* d = display_of(display, "game-draw", f);
+    SceneView view;
+    if (d && scm_is_true(tilemap)) {
+        if (is_tilemap(tilemap)) view.map = &tilemap_handle(tilemap).map;
+        else fail(f, "wrong-type-arg", scm_list_1(tilemap), "tilemap: expected a tilemap or #f, got ~S");
+    }
+    if (d && !f && real_arg(cam_x, "camera x", view.camera_x, f) && real_arg(cam_y, "camera y", view.camera_y, f) &&
+        entity_views(entities, d->entities, f)) {
+        view.debug = scm_is_true(debug);
+        d->trails.clear();
+        d->pairs.clear();
+        if (view.debug) {
+            if (PairLog* log = pair_log()) d->pairs = *log;
+            std::sort(d->pairs.begin(), d->pairs.end());
+            d->pairs.erase(std::unique(d->pairs.begin(), d->pairs.end()), d->pairs.end());
+            trails_of(entities, d->entities, history, d->trails, f);
+        }
+        view.entities = d->entities;
+        view.commands = &d->commands;
+        view.pushed_pairs = d->pairs;
+        view.trails = d->trails;
+        if (!f)
+            guarded(f, nullptr, [&] {
+                const auto t0 = Clock::now();
+                d->counts = draw_scene(canvas_of(*d), d->art, view);
+                d->culled = d->entities.size() - d->counts.sprites - d->counts.boxes;
+                if (d->window) d->window->present(*d->canvas);
+                d->ms = ms_since(t0);
+            });
+    }
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+SCM display_stats(SCM display) {
+    Failure f;
+    Display* d = display_of(display, "engine-stats", f);
+    if (f) raise(f);
+    const DrawCounts& c = d->counts;
+    return scm_list_4(scm_from_utf8_symbol("render"), scm_from_size_t(c.tiles + c.sprites + c.boxes + c.commands),
+                      scm_from_size_t(d->culled), scm_from_double(d->ms));
+}
+
+SCM display_save_png(SCM display, SCM path) {
+    Failure f;
+    Display* d = display_of(display, "game-capture", f);
+    std::string p;
+    if (d && string_arg(path, "file", p, f))
+        guarded(f, nullptr, [&] { canvas_of(*d).save_png(p); });
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+SCM display_pixel(SCM display, SCM x, SCM y) {
+    Failure f;
+    Display* d = display_of(display, "game-pixel", f);
+    int px = 0, py = 0;
+    Rgba c;
+    if (d && int_arg(x, "x", 0, d->width - 1, px, f) && int_arg(y, "y", 0, d->height - 1, py, f))
+        guarded(f, nullptr, [&] { c = canvas_of(*d).pixel(px, py); });
+    if (f) raise(f);
+    return scm_list_4(scm_from_uint8(c.r), scm_from_uint8(c.g), scm_from_uint8(c.b), scm_from_uint8(c.a));
+}
+
+// ---------------------------------------------------------------- draw commands
+
+SCM clear_commands(SCM display) {
+    Failure f;
+    if (Display* d = display_of(display, "render", f)) d->commands.clear();
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+// Appends a command once every argument has converted; `fill` converts the rest.
+template <class Fill>
+SCM push_command(const char* proc, SCM display, SCM color, SCM space, Fill fill) {
+    Failure f;
+    Display* d = display_of(display, proc, f);
+    DrawCommand c;
+    if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f) && fill(c, f))
+        guarded(f, nullptr, [&] { d->commands.commands.push_back(std::move(c)); });
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+SCM draw_rect(SCM display, SCM x, SCM y, SCM w, SCM h, SCM color, SCM filled, SCM space) {
+    return push_command("draw-rect", display, color, space, [&](DrawCommand& c, Failure& f) {
+        c.kind = scm_is_true(filled) ? DrawCommand::Kind::FilledRect : DrawCommand::Kind::Rect;
+        return real_arg(x, "x", c.x, f) && real_arg(y, "y", c.y, f) && real_arg(w, "width", c.x2, f) &&
+               real_arg(h, "height", c.y2, f);
+    });
+}
+
+SCM draw_line(SCM display, SCM x0, SCM y0, SCM x1, SCM y1, SCM color, SCM space) {
+    return push_command("draw-line", display, color, space, [&](DrawCommand& c, Failure& f) {
+        c.kind = DrawCommand::Kind::Line;
+        return real_arg(x0, "x0", c.x, f) && real_arg(y0, "y0", c.y, f) && real_arg(x1, "x1", c.x2, f) &&
+               real_arg(y1, "y1", c.y2, f);
+    });
+}
+
+SCM draw_sprite(SCM display, SCM gid, SCM x, SCM y, SCM space) {
+    return push_command("draw-sprite", display, SCM_BOOL_F, space, [&](DrawCommand& c, Failure& f) {
+        c.kind = DrawCommand::Kind::Sprite;
+        return gid_arg(gid, "gid", c.gid, f) && real_arg(x, "x", c.x, f) && real_arg(y, "y", c.y, f);
+    });
+}
+
+SCM draw_text(SCM display, SCM text, SCM x, SCM y, SCM color, SCM scale, SCM space) {
+    return push_command("draw-text", display, color, space, [&](DrawCommand& c, Failure& f) {
+        c.kind = DrawCommand::Kind::Text;
+        return string_arg(text, "text", c.text, f) && real_arg(x, "x", c.x, f) && real_arg(y, "y", c.y, f) &&
+               int_arg(scale, "scale", 1, 64, c.scale, f);
+    });
+}
+
+// ---------------------------------------------------------------- input
+
+// ((action name …) …): the actions, each with the inputs that hold it.
+SCM set_input_map(SCM display, SCM map) {
+    Failure f;
+    Display* d = display_of(display, "make-game", f);
+    std::vector<std::string> actions;
+    std::vector<Binding> bindings;
+    const long n = d ? scm_ilength(map) : 0;
+    if (d && (n < 0 || n > kMaxActions))
+        fail(f, "wrong-type-arg", scm_list_1(map), "input-map: expected a list of at most 64 (action name …), got ~S");
+    SCM p = map;
+    for (long i = 0; d && !f && i < n; ++i, p = SCM_CDR(p)) {
+        SCM entry = SCM_CAR(p);
+        if (scm_ilength(entry) < 1 || !scm_is_symbol(SCM_CAR(entry))) {
+            fail(f, "wrong-type-arg", scm_list_1(entry), "input-map: expected (action name …) with a symbol action, got ~S");
+            break;
+        }
+        SCM name_str = scm_symbol_to_string(SCM_CAR(entry));
+        std::string action;
+        string_arg(name_str, "action", action, f);
+        actions.push_back(action);
+        for (SCM q = SCM_CDR(entry); scm_is_pair(q) && !f; q = SCM_CDR(q)) {
+            std::string name;
+            Binding b;
+            if (!string_arg(SCM_CAR(q), "input-map key", name, f)) break;
+            if (!parse_binding(name, static_cast<uint8_t>(i), b))
+                fail(f, "wrong-type-arg", scm_list_2(SCM_CAR(q), SCM_CAR(entry)),
+                     "input-map: no key or controller input is named ~S (for ~S)");
+            else
+                bindings.push_back(b);
+        }
+    }
+    if (!f) {
+        d->actions = std::move(actions);
+        guarded(f, nullptr, [&] { d->input.set_bindings(std::move(bindings)); });
+    }
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+SCM default_map() {
+    SCM out = SCM_EOL;
+    const auto& map = default_input_map();
+    for (auto it = map.rbegin(); it != map.rend(); ++it) {
+        SCM names = SCM_EOL;
+        for (auto n = it->names.rbegin(); n != it->names.rend(); ++n) names = scm_cons(scm_from_utf8_string(*n), names);
+        out = scm_cons(scm_cons(scm_from_utf8_symbol(it->action), names), out);
+    }
+    return out;
+}
+
+// → (held-actions quit? debug-toggles): what the window's events say now.
+SCM poll_input(SCM display) {
+    Failure f;
+    Display* d = display_of(display, "game-run!", f);
+    uint64_t held = 0;
+    bool quit = false;
+    int toggles = 0;
+    if (d && d->window) {
+        guarded(f, nullptr, [&] { d->window->poll(d->input); });
+        held = d->input.held();
+        quit = d->input.quit_requested();
+        toggles = d->input.take_debug_toggles();
+    }
+    if (f) raise(f);
+    SCM list = SCM_EOL;
+    for (size_t a = d->actions.size(); a-- > 0;)
+        if (held >> a & 1) list = scm_cons(scm_from_utf8_symbol(d->actions[a].c_str()), list);
+    return scm_list_3(list, scm_from_bool(quit), scm_from_int(toggles));
+}
+
+// ---------------------------------------------------------------- sound
+
+std::unique_ptr<SoundBank> bank;  // one per process: there is one audio device
+
+SCM open_audio(SCM audible) {
+    Failure f{.proc = "load-sound"};
+    guarded(f, nullptr, [&] {
+        if (!bank || (scm_is_true(audible) && !bank->audible())) {
+            bank.reset();
+            bank = std::make_unique<SoundBank>(scm_is_true(audible));
+        }
+    });
+    if (f) raise(f);
+    return scm_from_bool(bank->audible());
+}
+
+SCM load_sound(SCM name, SCM path) {
+    Failure f{.proc = "load-sound"};
+    std::string n, p;
+    if (!scm_is_symbol(name))
+        fail(f, "wrong-type-arg", scm_list_1(name), "name: expected a symbol, got ~S");
+    else if (string_arg(scm_symbol_to_string(name), "name", n, f) && string_arg(path, "file", p, f))
+        guarded(f, nullptr, [&] {
+            if (!bank) bank = std::make_unique<SoundBank>(false);
+            bank->load(n, p);
+        });
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+SCM play_sound(SCM name) {
+    Failure f{.proc = "play-sound"};
+    std::string n;
+    bool known = false;
+    if (!scm_is_symbol(name))
+        fail(f, "wrong-type-arg", scm_list_1(name), "name: expected a symbol, got ~S");
+    else if (string_arg(scm_symbol_to_string(name), "name", n, f))
+        guarded(f, nullptr, [&] { known = bank && bank->play(n); });
+    if (f) raise(f);
+    return scm_from_bool(known);
+}
+
+// ---------------------------------------------------------------- pushed pairs
+
+thread_local PairLog pushed_log;
+
+SCM note_pushed_pairs(SCM on) {
+    set_pair_log(scm_is_true(on) ? &pushed_log : nullptr);
+    if (scm_is_false(on)) pushed_log.clear();
+    return SCM_UNSPECIFIED;
+}
+
+}  // namespace
+
+void register_render_procedures() {
+    display_type = scm_make_foreign_object_type(scm_from_utf8_symbol("display"),
+                                                scm_list_1(scm_from_utf8_symbol("data")), finalize_display);
+    scm_permanent_object(display_type);
+    sym_world = scm_permanent_object(scm_from_utf8_symbol("world"));
+    sym_screen = scm_permanent_object(scm_from_utf8_symbol("screen"));
+    key_sprite = scm_permanent_object(scm_from_utf8_keyword("sprite"));
+    key_flip_x = scm_permanent_object(scm_from_utf8_keyword("flip-x?"));
+
+    define_procedure("%renderer?", 0, 0, 0, (Subr) + [] { return SCM_BOOL_T; },
+                     "(): whether this build has the renderer (SDL2).");
+    define_procedure("%make-display", 2, 0, 0, (Subr)make_display,
+                     "(width height): a display: an off-screen canvas of that size, made when first drawn.");
+    define_procedure("%display-open-window!", 3, 0, 0, (Subr)open_window,
+                     "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
+    define_procedure("%display-close-window!", 1, 0, 0, (Subr)close_window, "(display): closes its window.");
+    define_procedure("%display-draw!", 7, 0, 0, (Subr)display_draw,
+                     "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
+    define_procedure("%display-stats", 1, 0, 0, (Subr)display_stats,
+                     "(display): (render drawn culled ms) for the last frame drawn.");
+    define_procedure("%display-save-png", 2, 0, 0, (Subr)display_save_png,
+                     "(display file): writes the last frame drawn as a PNG.");
+    define_procedure("%display-pixel", 3, 0, 0, (Subr)display_pixel,
+                     "(display x y): the last frame's pixel as (r g b a).");
+    define_procedure("%display-clear-commands!", 1, 0, 0, (Subr)clear_commands,
+                     "(display): forgets the draw commands of the last frame.");
+    define_procedure("%draw-rect!", 8, 0, 0, (Subr)draw_rect,
+                     "(display x y w h color fill? space): queues a rectangle.");
+    define_procedure("%draw-line!", 7, 0, 0, (Subr)draw_line,
+                     "(display x0 y0 x1 y1 color space): queues a line.");
+    define_procedure("%draw-sprite!", 5, 0, 0, (Subr)draw_sprite,
+                     "(display gid x y space): queues a tile picture by gid.");
+    define_procedure("%draw-text!", 7, 0, 0, (Subr)draw_text,
+                     "(display text x y color scale space): queues text in the built-in font.");
+    define_procedure("%display-set-input-map!", 2, 0, 0, (Subr)set_input_map,
+                     "(display map): binds keys and controller inputs to actions: ((action name …) …).");
+    define_procedure("%default-input-map", 0, 0, 0, (Subr)default_map,
+                     "(): the default ((action name …) …): arrows/WASD, Z/Space, X, Return, Backspace, Escape, pads.");
+    define_procedure("%display-poll!", 1, 0, 0, (Subr)poll_input,
+                     "(display): (held-actions quit? debug-toggles) from the window's events.");
+    define_procedure("%open-audio!", 1, 0, 0, (Subr)open_audio,
+                     "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
+    define_procedure("%load-sound", 2, 0, 0, (Subr)load_sound, "(name file): decodes a sound.");
+    define_procedure("%play-sound", 1, 0, 0, (Subr)play_sound,
+                     "(name): plays a loaded sound; #f when none has that name.");
+    define_procedure("%note-pushed-pairs!", 1, 0, 0, (Subr)note_pushed_pairs,
+                     "(on?): whether step-scene notes the pairs it pushes apart, for the overlay.");
+}
+
+}  // namespace ds::guile

@@ -1,0 +1,113 @@
+#include "audio.hpp"
+
+#include <SDL.h>
+#include <SDL_mixer.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <system_error>
+
+#include "render_error.hpp"
+
+namespace ds::render {
+
+namespace {
+
+// CD rate: every device takes it natively, and 22050 Hz effects resample up
+// by an exact factor of two.
+constexpr int kFrequency = 44100;
+// Stereo, because that is what devices expect; mono effects sit in the middle.
+constexpr int kOutputChannels = 2;
+// Samples per mix: about 23 ms at 44.1 kHz, so a sound starts within about
+// one and a half frames at 60 fps, yet a busy machine does not underrun.
+constexpr int kChunkSamples = 1024;
+// Sounds at once: more than a crowded screen of coins and hits needs, few
+// enough that mixing them all costs nothing.
+constexpr int kMixChannels = 16;
+
+struct ChunkFree {
+    void operator()(Mix_Chunk* c) const { Mix_FreeChunk(c); }
+};
+using ChunkPtr = std::unique_ptr<Mix_Chunk, ChunkFree>;
+
+// Opens SDL audio and the mixer on `driver` (nullptr: SDL's own choice).
+// On failure nothing is left open and SDL_GetError() says why.
+bool open_mixer(const char* driver) {
+    if (driver) {
+        // Override, not the default priority: an SDL_AUDIODRIVER in the
+        // environment would otherwise win and a headless run would reach for
+        // a real device.
+        SDL_SetHintWithPriority(SDL_HINT_AUDIODRIVER, driver, SDL_HINT_OVERRIDE);
+    }
+    bool ok = SDL_InitSubSystem(SDL_INIT_AUDIO) == 0;
+    // The driver is only read by that init: give the next one its own choice.
+    if (driver) SDL_ResetHint(SDL_HINT_AUDIODRIVER);
+    if (!ok) return false;
+    if (Mix_OpenAudio(kFrequency, MIX_DEFAULT_FORMAT, kOutputChannels, kChunkSamples) == 0)
+        return true;
+    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+    return false;
+}
+
+// Why `path` cannot be decoded, or "" when it is a regular file. Asked before
+// opening: opening a FIFO would block until a writer came along.
+std::string not_a_sound_file(const std::string& path) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    if (st.type() == std::filesystem::file_type::not_found) return "no such file";
+    if (ec) return ec.message();
+    if (!std::filesystem::is_regular_file(st)) return "not a regular file";
+    return "";
+}
+
+}  // namespace
+
+SoundBank::SoundBank(bool audible) {
+    if (audible) {
+        audible_ = open_mixer(nullptr);
+        if (!audible_)
+            std::fprintf(stderr, "downstroke: no audio device (%s); sound is off\n",
+                         SDL_GetError());
+    }
+    if (!audible_ && !open_mixer("dummy"))
+        throw RenderError(std::string("audio: cannot open even the dummy driver: ") +
+                          SDL_GetError());
+    // Without OGG support WAV still loads; an OGG file then fails in load()
+    // with SDL_mixer's own reason, which is the better place to hear it.
+    Mix_Init(MIX_INIT_OGG);
+    Mix_AllocateChannels(kMixChannels);
+}
+
+SoundBank::~SoundBank() {
+    for (auto& [name, chunk] : sounds_) Mix_FreeChunk(chunk);
+    Mix_CloseAudio();
+    Mix_Quit();
+    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+}
+
+void SoundBank::load(const std::string& name, const std::string& path) {
+    if (const std::string why = not_a_sound_file(path); !why.empty())
+        throw RenderError("sound " + path + ": " + why);
+    ChunkPtr chunk(Mix_LoadWAV(path.c_str()));
+    if (!chunk) throw RenderError("sound " + path + ": " + Mix_GetError());
+    // Only now, with the new sound decoded, may the old one go.
+    auto [it, added] = sounds_.try_emplace(name, chunk.get());
+    if (!added) {
+        Mix_FreeChunk(it->second);
+        it->second = chunk.get();
+    }
+    chunk.release();
+}
+
+bool SoundBank::has(const std::string& name) const { return sounds_.contains(name); }
+
+bool SoundBank::play(const std::string& name) {
+    const auto it = sounds_.find(name);
+    if (it == sounds_.end()) return false;
+    // -1 back means every channel is busy: the sound is dropped, as promised.
+    if (audible_) Mix_PlayChannel(-1, it->second, 0);
+    return true;
+}
+
+}  // namespace ds::render

@@ -1,0 +1,168 @@
+#include "canvas.hpp"
+
+#include <SDL_image.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "font.hpp"
+#include "render_error.hpp"
+
+namespace ds::render {
+
+namespace {
+
+// ARGB8888: one uint32 per pixel, alpha in the top byte.
+uint32_t pack(Rgba c) {
+    return uint32_t(c.a) << 24 | uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | c.b;
+}
+
+uint8_t mix(uint8_t src, uint8_t dst, uint8_t a) {
+    return static_cast<uint8_t>((src * a + dst * (255 - a) + 127) / 255);
+}
+
+}  // namespace
+
+Canvas::Canvas(int width, int height) {
+    if (width <= 0 || height <= 0 || width > kMaxCanvasSide || height > kMaxCanvasSide)
+        throw RenderError("canvas size " + std::to_string(width) + "x" + std::to_string(height) +
+                          " is not between 1 and " + std::to_string(kMaxCanvasSide));
+    surface_ = SDL_CreateRGBSurfaceWithFormat(0, width, height, 32, SDL_PIXELFORMAT_ARGB8888);
+    if (!surface_) throw RenderError(std::string("cannot make a canvas: ") + SDL_GetError());
+    SDL_SetSurfaceBlendMode(surface_, SDL_BLENDMODE_NONE);
+}
+
+Canvas::~Canvas() { SDL_FreeSurface(surface_); }
+
+void Canvas::clear(Rgba c) { SDL_FillRect(surface_, nullptr, pack({c.r, c.g, c.b, 255})); }
+
+void Canvas::blend(int x, int y, Rgba c) {
+    auto* row = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(surface_->pixels) + y * surface_->pitch);
+    if (c.a == 255) {
+        row[x] = pack(c);
+        return;
+    }
+    const uint32_t d = row[x];
+    row[x] = pack({mix(c.r, d >> 16 & 0xff, c.a), mix(c.g, d >> 8 & 0xff, c.a),
+                   mix(c.b, d & 0xff, c.a), 255});
+}
+
+void Canvas::fill_rect(int x, int y, int w, int h, Rgba c) {
+    const int x0 = std::max(x, 0), y0 = std::max(y, 0);
+    const int x1 = static_cast<int>(std::min<long>(long(x) + w, width()));
+    const int y1 = static_cast<int>(std::min<long>(long(y) + h, height()));
+    if (c.a == 255 && x0 < x1 && y0 < y1) {
+        SDL_Rect r{x0, y0, x1 - x0, y1 - y0};
+        SDL_FillRect(surface_, &r, pack(c));
+        return;
+    }
+    for (int py = y0; py < y1; ++py)
+        for (int px = x0; px < x1; ++px) blend(px, py, c);
+}
+
+void Canvas::outline_rect(int x, int y, int w, int h, Rgba c) {
+    if (w <= 0 || h <= 0) return;
+    fill_rect(x, y, w, 1, c);
+    if (h > 1) fill_rect(x, y + h - 1, w, 1, c);
+    if (h > 2) {
+        fill_rect(x, y + 1, 1, h - 2, c);
+        if (w > 1) fill_rect(x + w - 1, y + 1, 1, h - 2, c);
+    }
+}
+
+namespace {
+
+// Liang–Barsky: the part of the segment inside [0, w) × [0, h), false when
+// none is. Only lines with an end off the canvas are clipped, so a line on
+// the canvas keeps exactly its Bresenham pixels.
+bool clip_segment(int& x0, int& y0, int& x1, int& y1, int w, int h) {
+    const double dx = double(x1) - x0, dy = double(y1) - y0;
+    double t0 = 0, t1 = 1;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {double(x0), w - 1.0 - x0, double(y0), h - 1.0 - y0};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0) {
+            if (q[i] < 0) return false;
+            continue;
+        }
+        const double t = q[i] / p[i];
+        if (p[i] < 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+    }
+    if (t0 > t1) return false;
+    const double ox = x0, oy = y0;
+    x0 = int(std::lround(ox + t0 * dx));
+    y0 = int(std::lround(oy + t0 * dy));
+    x1 = int(std::lround(ox + t1 * dx));
+    y1 = int(std::lround(oy + t1 * dy));
+    return true;
+}
+
+}  // namespace
+
+void Canvas::line(int x0, int y0, int x1, int y1, Rgba c) {
+    auto inside = [&](int x, int y) { return x >= 0 && y >= 0 && x < width() && y < height(); };
+    if (!(inside(x0, y0) && inside(x1, y1)) && !clip_segment(x0, y0, x1, y1, width(), height()))
+        return;
+    // Bresenham, every pixel once (a translucent line does not darken where
+    // it would cross itself).
+    const long dx = std::labs(long(x1) - x0), dy = -std::labs(long(y1) - y0);
+    const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+    long err = dx + dy;
+    for (;;) {
+        if (inside(x0, y0)) blend(x0, y0, c);
+        if (x0 == x1 && y0 == y1) break;
+        const long e2 = 2 * err;
+        if (e2 >= dy) {
+            err += dy;
+            x0 += sx;
+        }
+        if (e2 <= dx) {
+            err += dx;
+            y0 += sy;
+        }
+    }
+}
+
+void Canvas::text(int x, int y, std::string_view s, Rgba c, int scale) {
+    scale = std::max(scale, 1);
+    int pen = x;
+    for (unsigned char ch : s) {
+        if (ch == '\n') {
+            pen = x;
+            y += kLineHeight * scale;
+            continue;
+        }
+        for (int row = 0; row < kGlyphHeight; ++row) {
+            const uint8_t bits = glyph_row(ch, row);
+            for (int col = 0; col < kGlyphWidth; ++col)
+                if (bits >> (kGlyphWidth - 1 - col) & 1)
+                    fill_rect(pen + col * scale, y + row * scale, scale, scale, c);
+        }
+        pen += kGlyphAdvance * scale;
+    }
+}
+
+void Canvas::blit(SDL_Surface* picture, int x, int y, uint8_t alpha) {
+    if (!picture) return;
+    SDL_Rect dst{x, y, picture->w, picture->h};
+    if (alpha != 255) SDL_SetSurfaceAlphaMod(picture, alpha);
+    SDL_BlitSurface(picture, nullptr, surface_, &dst);
+    if (alpha != 255) SDL_SetSurfaceAlphaMod(picture, 255);
+}
+
+Rgba Canvas::pixel(int x, int y) const {
+    if (x < 0 || y < 0 || x >= width() || y >= height()) return {0, 0, 0, 0};
+    const auto* row = reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(surface_->pixels) +
+                                                        y * surface_->pitch);
+    const uint32_t p = row[x];
+    return {uint8_t(p >> 16), uint8_t(p >> 8), uint8_t(p), uint8_t(p >> 24)};
+}
+
+void Canvas::save_png(const std::string& path) const {
+    if (IMG_SavePNG(surface_, path.c_str()) != 0)
+        throw RenderError("cannot write '" + path + "': " + IMG_GetError());
+}
+
+}  // namespace ds::render

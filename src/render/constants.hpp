@@ -1,0 +1,36 @@
+// Every tunable of the renderer, each with the reason for its value.
+#pragma once
+#include "color.hpp"
+
+namespace ds::render {
+
+// Cleared to before the map: a dark blue-grey, so an empty cell reads as
+// "sky" and black tiles or text still show against it.
+constexpr Rgba kBackground{24, 28, 40, 255};
+
+
+// The largest window scale tried when fitting the screen: beyond this a
+// pixel-art game is already huge, and a 64× surface blit would be wasteful.
+constexpr int kMaxScale = 16;
+
+// A box for an entity with no #:sprite, and the overlay's boxes, by role.
+// Hues far apart so a glance tells them apart; alpha keeps the map visible.
+constexpr Rgba kSolidColor{80, 220, 100, 255};      // solid: takes part in push-apart
+constexpr Rgba kImmovableColor{80, 150, 255, 255};  // solid and never pushed
+constexpr Rgba kGhostColor{200, 110, 230, 255};     // solid but skips entity collisions
+constexpr Rgba kPlainColor{170, 170, 170, 255};     // not solid: moves through entities
+constexpr Rgba kRestingColor{250, 210, 70, 255};    // on the ground and not moving
+constexpr uint8_t kBoxFillAlpha = 64;               // the fill behind a box's outline
+
+// Overlay marks.
+constexpr Rgba kVelocityColor{255, 240, 120, 255};
+constexpr Rgba kGroundMarkColor{255, 140, 40, 255};
+constexpr Rgba kPushedPairColor{255, 70, 70, 255};
+constexpr Rgba kTrailColor{120, 230, 255, 255};
+// A velocity in px/frame is drawn this many frames long: a body moving one
+// pixel a frame would otherwise get a vector no longer than a pixel.
+constexpr double kVelocityScale = 4.0;
+// The on-ground mark: a bar this many px tall under the feet.
+constexpr int kGroundMarkHeight = 2;
+
+}  // namespace ds::render

@@ -1,0 +1,51 @@
+// One frame to draw, as plain data: the map, the camera, the entities' boxes
+// and sprites, what the game's render hook asked for, and the debug overlay's
+// facts. The bindings fill it from the scene; draw_scene draws it.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "draw_list.hpp"
+#include "tilemap/tilemap.hpp"
+
+namespace ds::render {
+
+struct EntityView {
+    double x = 0, y = 0, w = 0, h = 0;
+    double vx = 0, vy = 0;
+    uint32_t sprite = 0;  // a raw gid of the map's tilesets; 0: draw a box
+    bool flip_x = false;
+    bool solid = false, immovable = false, ghost = false, on_ground = false;
+};
+
+// One entity's centres over the remembered frames, oldest first.
+using Trail = std::vector<std::pair<double, double>>;
+
+struct SceneView {
+    const Tilemap* map = nullptr;
+    double camera_x = 0, camera_y = 0;
+    std::span<const EntityView> entities;
+    const DrawList* commands = nullptr;
+    bool debug = false;
+    // Indices into entities of the pairs pushed apart in the last frame.
+    std::span<const std::pair<uint32_t, uint32_t>> pushed_pairs;
+    std::span<const Trail> trails;
+};
+
+// The cells of a layer that can show in a view: columns [col0, col1) and
+// rows [row0, row1), in map cells. Tiles taller or wider than the map's
+// cells are drawn bottom-left aligned (as Tiled does), so the range reaches
+// `over_w` px further left and `over_h` px further down than the view.
+struct CellWindow {
+    int64_t col0 = 0, col1 = 0, row0 = 0, row1 = 0;
+};
+CellWindow visible_cells(const TileLayer& layer, int tile_w, int tile_h, int64_t view_x,
+                         int64_t view_y, int view_w, int view_h, int over_w, int over_h);
+
+// The camera's pixel: positions are floored once, so a tile and an entity
+// standing on it move together by whole pixels.
+int64_t pixel_of(double world);
+
+}  // namespace ds::render

@@ -1,0 +1,134 @@
+#include "tile_art.hpp"
+
+#include <SDL_image.h>
+
+#include <filesystem>
+
+#include "render_error.hpp"
+
+namespace ds::render {
+
+namespace {
+
+constexpr uint32_t kFlipBits = kFlipHorizontal | kFlipVertical | kFlipDiagonal;
+
+// A 32-bit copy of `src` (any format) that blends only when it has alpha.
+SDL_Surface* to_argb(SDL_Surface* src) {
+    SDL_Surface* out = SDL_ConvertSurfaceFormat(src, SDL_PIXELFORMAT_ARGB8888, 0);
+    if (!out) return nullptr;
+    Uint32 key;
+    const bool alpha = SDL_ISPIXELFORMAT_ALPHA(src->format->format) || SDL_GetColorKey(src, &key) == 0;
+    SDL_SetSurfaceBlendMode(out, alpha ? SDL_BLENDMODE_BLEND : SDL_BLENDMODE_NONE);
+    return out;
+}
+
+uint32_t get(const SDL_Surface* s, int x, int y) {
+    return reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(s->pixels) + y * s->pitch)[x];
+}
+void put(SDL_Surface* s, int x, int y, uint32_t p) {
+    reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(s->pixels) + y * s->pitch)[x] = p;
+}
+
+// The rect `r` of `image`, turned: destination (u, v) takes the source pixel
+// found by undoing the vertical, then the horizontal, then the diagonal flip.
+SDL_Surface* turned(SDL_Surface* image, const SDL_Rect& r, uint32_t flips) {
+    const bool d = flips & kFlipDiagonal, h = flips & kFlipHorizontal, v = flips & kFlipVertical;
+    const int w = d ? r.h : r.w, hgt = d ? r.w : r.h;
+    SDL_Surface* out = SDL_CreateRGBSurfaceWithFormat(0, w, hgt, 32, SDL_PIXELFORMAT_ARGB8888);
+    if (!out) return nullptr;
+    SDL_BlendMode mode;
+    SDL_GetSurfaceBlendMode(image, &mode);
+    SDL_SetSurfaceBlendMode(out, mode);
+    for (int y = 0; y < hgt; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int ux = h ? w - 1 - x : x, uy = v ? hgt - 1 - y : y;
+            const int sx = d ? uy : ux, sy = d ? ux : uy;
+            put(out, x, y, get(image, r.x + sx, r.y + sy));
+        }
+    return out;
+}
+
+}  // namespace
+
+std::string image_path(const Tileset& ts, const std::string& image) {
+    if (ts.image_dir.empty() || std::filesystem::path(image).is_absolute()) return image;
+    return (std::filesystem::path(ts.image_dir) / image).string();
+}
+
+bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out) {
+    const int tw = ts.tile_width, th = ts.tile_height;
+    if (tw <= 0 || th <= 0) return false;
+    int columns = ts.columns;
+    if (columns <= 0) columns = (image_w - 2 * ts.margin + ts.spacing) / (tw + ts.spacing);
+    if (columns <= 0) return false;
+    const int64_t col = id % uint32_t(columns), row = id / uint32_t(columns);
+    const int64_t x = ts.margin + col * (tw + ts.spacing), y = ts.margin + row * (th + ts.spacing);
+    if (x + tw > image_w || y + th > image_h) return false;
+    out = {int(x), int(y), tw, th};
+    return true;
+}
+
+TileArt::~TileArt() {
+    for (auto& [_, tiles] : sheets_)
+        for (auto& [_, s] : tiles) SDL_FreeSurface(s);
+    for (auto& [_, s] : images_) SDL_FreeSurface(s);
+}
+
+SDL_Surface* TileArt::image(const std::string& path) {
+    if (auto it = images_.find(path); it != images_.end()) return it->second;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw RenderError("cannot read tileset image '" + path + "': no such file");
+    SDL_Surface* raw = IMG_Load(path.c_str());
+    if (!raw) throw RenderError("cannot read tileset image '" + path + "': " + IMG_GetError());
+    SDL_Surface* img = to_argb(raw);
+    SDL_FreeSurface(raw);
+    if (!img) throw RenderError("cannot convert tileset image '" + path + "': " + SDL_GetError());
+    images_.emplace(path, img);
+    return img;
+}
+
+SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) {
+    SDL_Rect r;
+    SDL_Surface* img;
+    if (ts.image.empty()) {  // an image collection: each tile its own picture
+        const TileInfo* info = ts.tile(local_id);
+        if (!info || info->image.empty()) return nullptr;
+        img = image(image_path(ts, info->image));
+        r = {0, 0, img->w, img->h};
+    } else {
+        img = image(image_path(ts, ts.image));
+        if (!tile_rect(ts, img->w, img->h, local_id, r)) return nullptr;
+    }
+    return turned(img, r, flips);
+}
+
+void TileArt::bind(const Tilemap* map) {
+    map_ = map;
+    bound_.clear();
+    if (!map) return;
+    for (const Tileset& ts : map->tilesets) {
+        const std::string key = ts.image_dir + '\x1f' + ts.image + '\x1f' + ts.name + '\x1f' +
+                                std::to_string(ts.firstgid) + '\x1f' + std::to_string(ts.tile_width) +
+                                'x' + std::to_string(ts.tile_height) + '\x1f' +
+                                std::to_string(ts.margin) + ',' + std::to_string(ts.spacing) + ',' +
+                                std::to_string(ts.columns);
+        bound_.push_back(&sheets_[key]);
+    }
+}
+
+SDL_Surface* TileArt::tile(uint32_t raw_gid) {
+    const uint32_t gid = raw_gid & kGidMask;
+    if (gid == 0 || !map_) return nullptr;
+    const Tileset* ts = map_->tileset_for(gid);
+    if (!ts) return nullptr;
+    Sheet& sheet = *bound_[size_t(ts - map_->tilesets.data())];
+    const uint32_t local = gid - ts->firstgid, flips = raw_gid & kFlipBits;
+    const uint64_t k = uint64_t(local) << 3 | flips >> 29;
+    if (auto it = sheet.find(k); it != sheet.end()) return it->second;
+    SDL_Surface* s = cut(*ts, local, flips);
+    sheet.emplace(k, s);
+    return s;
+}
+
+}  // namespace ds::render

@@ -1,0 +1,60 @@
+// The pictures of a map's tiles, cut from its tilesets' images and turned by
+// each gid's flip bits. Images are read the first time a tile of theirs is
+// drawn (loading a map never needs them), and every cut and flip is kept, so
+// a frame costs one lookup per tile drawn.
+#pragma once
+#include <SDL.h>
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "tilemap/tilemap.hpp"
+
+namespace ds::render {
+
+class TileArt {
+public:
+    TileArt() = default;
+    ~TileArt();
+    TileArt(const TileArt&) = delete;
+    TileArt& operator=(const TileArt&) = delete;
+
+    // Makes `map` the one tile() reads, resolving its tilesets once: call it
+    // at the start of every frame drawn (a map is known by its tilesets'
+    // contents, never by its address). nullptr unbinds.
+    void bind(const Tilemap* map);
+
+    // The picture for a raw gid of the bound map (flip bits applied:
+    // diagonal first, then horizontal, then vertical, as Tiled does), or
+    // nullptr for gid 0, no bound map, a gid no tileset holds, or a tile
+    // outside its image. Throws RenderError naming the image file when it
+    // cannot be read.
+    SDL_Surface* tile(uint32_t raw_gid);
+
+    // How many images have been read (each file once).
+    size_t images_loaded() const { return images_.size(); }
+
+private:
+    SDL_Surface* image(const std::string& path);
+    SDL_Surface* cut(const Tileset& ts, uint32_t local_id, uint32_t flips);
+
+    std::unordered_map<std::string, SDL_Surface*> images_;  // by path
+    // By tileset (its identity as text: image folder, image, name, firstgid
+    // and cut) then by local id and flips.
+    using Sheet = std::unordered_map<uint64_t, SDL_Surface*>;
+    std::unordered_map<std::string, Sheet> sheets_;
+    const Tilemap* map_ = nullptr;
+    std::vector<Sheet*> bound_;  // per tileset of map_
+};
+
+// The image path of a tileset (or of one of its collection tiles) as the
+// renderer opens it: relative to the tileset's image folder.
+std::string image_path(const Tileset& ts, const std::string& image);
+
+// Where local tile `id` sits in a single-image tileset of an image
+// `image_w` × `image_h` px; false when it is beyond the image.
+bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out);
+
+}  // namespace ds::render

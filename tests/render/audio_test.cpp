@@ -1,0 +1,179 @@
+// SoundBank on SDL's dummy audio driver: it decodes every file, plays nothing,
+// and needs no sound card. The WAVs are written here; the OGG is
+// tests/data/sounds/tone.ogg (made by make_tone.py there).
+#include <doctest/doctest.h>
+#include <sys/stat.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "audio.hpp"
+#include "render_error.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ds::render::RenderError;
+using ds::render::SoundBank;
+
+// A fresh directory under the system's temp folder, removed with the object.
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "ds-audio-XXXXXX").string();
+        REQUIRE(mkdtemp(pattern.data()) != nullptr);
+        path_ = pattern;
+    }
+    ~TempDir() {
+        std::error_code ec;  // best effort: a destructor must not throw
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    fs::path path_;
+};
+
+void put_le(std::string& out, uint32_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+}
+
+// A 16-bit PCM mono WAV of `samples` samples of a square wave, by hand: the
+// canonical 44-byte RIFF header, then the data.
+void write_wav(const std::string& path, int samples, int rate = 22050) {
+    const uint32_t data_bytes = static_cast<uint32_t>(samples) * 2;
+    std::string w = "RIFF";
+    put_le(w, 36 + data_bytes, 4);
+    w += "WAVEfmt ";
+    put_le(w, 16, 4);    // fmt chunk size
+    put_le(w, 1, 2);     // PCM
+    put_le(w, 1, 2);     // mono
+    put_le(w, static_cast<uint32_t>(rate), 4);
+    put_le(w, static_cast<uint32_t>(rate) * 2, 4);  // bytes per second
+    put_le(w, 2, 2);     // bytes per frame
+    put_le(w, 16, 2);    // bits per sample
+    w += "data";
+    put_le(w, data_bytes, 4);
+    for (int i = 0; i < samples; ++i)
+        put_le(w, static_cast<uint16_t>(static_cast<int16_t>((i / 25) % 2 ? 6000 : -6000)), 2);
+    std::ofstream(path, std::ios::binary) << w;
+}
+
+// The message a failed load throws.
+std::string load_error(SoundBank& bank, const std::string& name, const std::string& path) {
+    try {
+        bank.load(name, path);
+    } catch (const RenderError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_SUITE("audio") {
+
+TEST_CASE("a silent bank opens on the dummy driver") {
+    SoundBank bank(false);
+    CHECK_FALSE(bank.audible());
+    CHECK_FALSE(bank.has("jump"));
+    CHECK_FALSE(bank.play("unknown"));
+}
+
+TEST_CASE("a WAV loads and plays") {
+    TempDir tmp;
+    const std::string wav = tmp.file("blip.wav");
+    write_wav(wav, 2205);
+    SoundBank bank(false);
+    bank.load("blip", wav);
+    CHECK(bank.has("blip"));
+    CHECK(bank.play("blip"));
+    CHECK_FALSE(bank.has("other"));
+    CHECK_FALSE(bank.play("unknown"));
+}
+
+TEST_CASE("an OGG loads and plays") {
+    SoundBank bank(false);
+    bank.load("tone", std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
+    CHECK(bank.has("tone"));
+    CHECK(bank.play("tone"));
+}
+
+TEST_CASE("playing more sounds than channels drops the extra ones quietly") {
+    TempDir tmp;
+    write_wav(tmp.file("long.wav"), 22050);
+    SoundBank bank(false);
+    bank.load("long", tmp.file("long.wav"));
+    for (int i = 0; i < 100; ++i) CHECK(bank.play("long"));
+}
+
+TEST_CASE("what is not a sound file is refused, naming the path") {
+    TempDir tmp;
+    SoundBank bank(false);
+
+    const std::string missing = tmp.file("missing.wav");
+    CHECK(contains(load_error(bank, "s", missing), missing));
+    CHECK(contains(load_error(bank, "s", missing), "no such file"));
+
+    const std::string dir = tmp.file("folder.wav");
+    fs::create_directory(dir);
+    CHECK(contains(load_error(bank, "s", dir), dir));
+    CHECK(contains(load_error(bank, "s", dir), "not a regular file"));
+
+    // Opening a FIFO with no writer would block: it must be refused unopened.
+    const std::string fifo = tmp.file("pipe.wav");
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK(contains(load_error(bank, "s", fifo), fifo));
+    CHECK(contains(load_error(bank, "s", fifo), "not a regular file"));
+
+    CHECK(contains(load_error(bank, "s", "/dev/zero"), "/dev/zero"));
+
+    const std::string text = tmp.file("notes.wav");
+    std::ofstream(text) << "these are not the samples you are looking for\n";
+    CHECK(contains(load_error(bank, "s", text), text));
+
+    const std::string empty = tmp.file("empty.wav");
+    std::ofstream{empty};
+    CHECK(contains(load_error(bank, "s", empty), empty));
+
+    CHECK_FALSE(bank.has("s"));
+}
+
+TEST_CASE("a failed load leaves the earlier sound of that name; a good one replaces it") {
+    TempDir tmp;
+    write_wav(tmp.file("a.wav"), 1000);
+    write_wav(tmp.file("b.wav"), 2000, 44100);
+    const std::string bad = tmp.file("bad.wav");
+    std::ofstream(bad) << "RIFF garbage";
+    SoundBank bank(false);
+    bank.load("s", tmp.file("a.wav"));
+    CHECK(contains(load_error(bank, "s", bad), bad));
+    CHECK(contains(load_error(bank, "s", tmp.file("gone.wav")), "gone.wav"));
+    CHECK(bank.has("s"));
+    CHECK(bank.play("s"));
+    bank.load("s", tmp.file("b.wav"));
+    CHECK(bank.has("s"));
+    CHECK(bank.play("s"));
+}
+
+TEST_CASE("the demos' sound effects all decode") {
+    SoundBank bank(false);
+    const fs::path sounds = fs::path(DS_TEST_DATA) / ".." / ".." / "demo" / "sounds";
+    for (const char* name : {"jump", "goal", "hit", "coin"}) {
+        CAPTURE(name);
+        bank.load(name, (sounds / (std::string(name) + ".wav")).string());
+        CHECK(bank.play(name));
+    }
+}
+
+}  // TEST_SUITE
