@@ -7,10 +7,11 @@
   #:use-module (downstroke tilemap)
   #:use-module (downstroke engine)
   #:use-module (downstroke hash)
-  #:use-module (downstroke history))
+  #:use-module (downstroke history)
+  #:use-module (downstroke render))
 
 (eval-when (expand load eval)
   (for-each (lambda (name)
               (module-use! (module-public-interface (current-module))
                            (resolve-interface (list 'downstroke name))))
-            '(entity world physics tween tilemap engine hash history)))
+            '(entity world physics tween tilemap engine hash history render)))

@@ -7,7 +7,13 @@
   #:use-module (downstroke physics)
   #:use-module (downstroke tilemap)
   #:use-module (downstroke history)
-  #:use-module ((downstroke native) #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor!))
+  #:use-module (downstroke render)
+  #:use-module ((downstroke native)
+                #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor! %make-display
+                          %display-draw! %display-stats %display-save-png %display-pixel
+                          %display-clear-commands! %display-set-input-map! %display-poll!
+                          %display-open-window! %display-close-window! %open-audio!
+                          %play-sound %note-pushed-pairs!))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
@@ -17,7 +23,8 @@
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
             frame-pacing main-script? script-number-argument engine-stats
-            gc-space-divisor set-gc-space-divisor!))
+            gc-space-divisor set-gc-space-divisor!
+            game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log))
 
 ;;; Input: what is held this frame, and what was held the frame before.
 (define-record-type <input>
@@ -39,7 +46,8 @@
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
-              input input-script frame sounds history-size history)
+              input input-script frame sounds history-size history
+              display debug-draw input-log)
   game?
   (title game-title)
   (width game-width)
@@ -57,7 +65,10 @@
   (frame game-frame game-frame-set!)
   (sounds game-sound-log game-sound-log-set!)  ; (count . ((frame . name) …)), newest first
   (history-size game-history-size)
-  (history game-history-log game-history-log-set!))  ; a bounded log of (frame . scene)
+  (history game-history-log game-history-log-set!)  ; a bounded log of (frame . scene)
+  (display game-display)            ; the renderer's, or #f in a build without it
+  (debug-draw game-debug-draw? %game-debug-draw-set!)
+  (input-log %game-input-log %game-input-log-set!))  ; ((frame . held) …) at each change, newest first
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -82,19 +93,30 @@ collision mode, substeps and resting contacts."
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
-                    (input-script '()) (history 0))
+                    (input-script '()) (history 0) (input-map #f))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
 rest (both beyond the seed, off by default). HISTORY keeps the scenes of
-that many past frames for game-rewind!."
+that many past frames for game-rewind!. WIDTH × HEIGHT is the picture in
+pixels (a window shows it scaled up). INPUT-MAP binds keys and controller
+inputs to actions in a window, as ((action name …) …) — see
+default-input-map, which is used when it is #f."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
+  (for-each (lambda (name v)
+              (unless (and (exact-integer? v) (<= 1 v 16384))
+                (scm-error 'wrong-type-arg "make-game" "~A: expected an exact integer from 1 to 16384 (pixels), got ~S"
+                           (list name v) #f)))
+            '(width height) (list width height))
   (check-substeps "make-game" substeps)
-  (%make-game title width height frame-delay scene update render engine-update
-              collision-mode substeps (and resting-contacts? #t)
-              (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)))
+  (let ((display (and (renderer-available?) (%make-display width height))))
+    (when display (%display-set-input-map! display (or input-map (default-input-map))))
+    (%make-game title width height frame-delay scene update render engine-update
+                collision-mode substeps (and resting-contacts? #t)
+                (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)
+                display #f '())))
 
 ;;; ---------------------------------------------------------------- time travel
 ;;; Scenes are values, so keeping the past costs one pointer per frame.
@@ -141,8 +163,14 @@ velocity-y tile-collisions-y on-solid entity-collisions groups), and encode
 (writing back what changed). PROCESSED counts the entities a step applied
 to; SKIPPED those it left alone (skip-pipelines, no #:gravity?, no speed on
 a tile step's axis, not solid, not in a group). It is the last step-scene run
-on this thread, which for a running game is its own last frame."
-  (%frame-stats))
+on this thread, which for a running game is its own last frame. A last
+row (render drawn culled ms) says what drawing the last frame cost: tiles,
+sprites, boxes and commands drawn, entities outside the view, and time
+(zeros until a frame is drawn, and absent in a build without the renderer)."
+  (let ((display (game-display game)))
+    (if display
+        (append (%frame-stats) (list (%display-stats display)))
+        (%frame-stats))))
 
 ;;; Memory against time: how often the collector runs. A frame of a big scene
 ;;; allocates fresh plist heads, and each collection marks the whole live
@@ -201,13 +229,16 @@ newest 4096 (older ones are dropped, so a long run stays in bounded memory)."
   (reverse (bounded-log-items (game-sound-log game))))
 
 (define (play-sound game-or-name . rest)
-  "Play a sound. Headless, the sound is recorded with the frame it was played
-in: (play-sound 'jump) uses the running game, (play-sound game 'jump) names it."
+  "Play a sound: (play-sound 'jump) in the running game, (play-sound game
+'jump) naming it. It is recorded with the frame it was played in (see
+game-sounds) and, when a window is open and load-sound loaded it, heard."
   (let ((game (if (game? game-or-name) game-or-name (current-game)))
         (name (if (game? game-or-name) (car rest) game-or-name)))
     (when game
       (game-sound-log-set! game (bounded-log-push (game-sound-log game)
-                                                  (cons (game-frame game) name) *sounds-kept*)))))
+                                                  (cons (game-frame game) name) *sounds-kept*)))
+    ;; Heard only with a window open; a sound never loaded is only recorded.
+    (when (and (symbol? name) (renderer-available?)) (%play-sound name))))
 
 (define current-game (make-parameter #f))
 
@@ -259,35 +290,174 @@ every frame whose set of held actions differs from the frame before."
 
 (export input-held-actions input-log->script)
 
+(define (game-input-log game)
+  "The actions held in each frame played so far, from frame 0 on (one list
+per frame): give it to input-log->script to replay a played session
+headless, frame for frame."
+  (let loop ((changes (%game-input-log game)) (frame (game-frame game)) (acc '()))
+    ;; CHANGES is newest first: each (start . held) holds from START on.
+    (cond ((null? changes) (append (make-list (max 0 frame) '()) acc))
+          (else
+           (let* ((start (caar changes)) (n (max 0 (- frame start))))
+             (loop (cdr changes) (min frame start) (append (make-list n (cdar changes)) acc)))))))
+
+(define (record-input! game frame held)
+  (let ((log (%game-input-log game)))
+    ;; A rewind replays from an earlier frame: forget what came after it.
+    (let ((log (drop-while (lambda (e) (>= (car e) frame)) log)))
+      (%game-input-log-set! game (if (and (pair? log) (lset= eq? (cdar log) held))
+                                     log
+                                     (cons (cons frame held) log))))))
+
+;;; ---------------------------------------------------------------- drawing
+
+(define (game-debug-draw-set! game on?)
+  "Show (#t) or hide (#f) the debug overlay when GAME is drawn: every box
+coloured by role (solid, immovable, ghost, plain, resting), velocities,
+on-ground marks, the pairs pushed apart in the last frame and, with
+history:, each entity's trail over the remembered frames. F1 toggles it in a
+window."
+  (%game-debug-draw-set! game (and on? #t))
+  (when (renderer-available?) (%note-pushed-pairs! (and on? #t))))
+
+(define (trail-scenes game)
+  ;; The remembered frames' entities, oldest first, for the overlay's trails.
+  (if (game-debug-draw? game)
+      (filter-map (lambda (e) (and (cdr e) (scene-entities (cdr e)))) (reverse (game-history game)))
+      '()))
+
+(define (draw-game! game)
+  ;; One frame into the game's display (and its window, when one is open).
+  (let ((display (game-display game))
+        (scene (game-scene game)))
+    (unless display
+      (scm-error 'misc-error "game-capture" "this build has no renderer (SDL2)" '() #f))
+    (%display-draw! display
+                    (and scene (scene-tilemap scene))
+                    (if scene (camera-x (scene-camera scene)) 0)
+                    (if scene (camera-y (scene-camera scene)) 0)
+                    (if scene (scene-entities scene) '())
+                    (game-debug-draw? game)
+                    (trail-scenes game))))
+
+(define (game-capture game file)
+  "Draw GAME's current frame — its map, entities, what its render: procedure
+drew last, and the overlay when on — and write it to FILE as a PNG of
+exactly the game's width × height. Works in any mode, headless included."
+  (unless (string? file)
+    (scm-error 'wrong-type-arg "game-capture" "file: expected a string, got ~S" (list file) #f))
+  (draw-game! game)
+  (%display-save-png (game-display game) file))
+
+(define (game-pixel game x y)
+  "The colour (r g b a) at pixel (X, Y) of the frame GAME drew last (by
+game-capture, a capture run or a window)."
+  (unless (game-display game)
+    (scm-error 'misc-error "game-pixel" "this build has no renderer (SDL2)" '() #f))
+  (%display-pixel (game-display game) x y))
+
+;;; ---------------------------------------------------------------- the loop
+
+(define (check-frames frames)
+  (unless (or (not frames) (and (real? frames) (not (nan? frames))))
+    (scm-error 'wrong-type-arg "game-run!"
+               "frames: expected #f or a frame count, got ~S" (list frames) #f)))
+
+(define (run-frame-hooks!) (for-each (lambda (hook) (hook)) frame-hooks))
+
+(define (step-game! game dt held)
+  ;; One fixed step: input, engine-update, update, camera, render.
+  (let ((frame (game-frame game)))
+    (remember-scene! game)
+    (record-input! game frame held)
+    (game-input-set! game (make-input held (input-held-list (game-input game))))
+    (let ((engine (game-engine-update game)))
+      (when engine (engine game dt)))
+    (let ((update (game-update game)))
+      (when update (update game dt)))
+    (camera-follow! game)
+    (let ((render (game-render game))
+          (display (game-display game)))
+      (when display (%display-clear-commands! display))
+      (when render (render game)))
+    ;; unless the frame rewound the game, the next frame is frame + 1
+    (when (= (game-frame game) frame) (game-frame-set! game (+ frame 1)))))
+
+(define (frame-file dir frame)
+  (string-append dir "/" (string-pad (number->string frame) 6 #\0) ".png"))
+
+(define (run-headless! game frames capture-dir)
+  (let ((dt (game-frame-delay game))
+        (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))
+        (start (get-internal-real-time)))
+    (let loop ((ticks 0))
+      (run-frame-hooks!)
+      (let* ((frame (game-frame game))
+             (held (scripted-held (game-input-script game) frame)))
+        (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
+          (step-game! game dt held)
+          (when capture-dir
+            (draw-game! game)
+            (%display-save-png (game-display game) (frame-file capture-dir frame)))
+          (when (frame-pacing) (wait-until (+ start (round (* (+ ticks 1) tick)))))
+          (loop (+ ticks 1)))))))
+
+;; A display frame that finds more than this many fixed steps due runs only
+;; these and drops the rest of the backlog: a stall (a breakpoint, a slow
+;; REPL expression, a dragged window) is then a hiccup, never a spiral of
+;; ever longer catch-up frames.
+(define *max-catch-up-steps* 5)
+
+(define (run-window! game frames)
+  ;; Real time at a fixed timestep: time accumulates, and each fixed step of
+  ;; frame-delay ms consumes it; the window shows the last step's picture.
+  (let* ((display (game-display game))
+         (dt (game-frame-delay game))
+         (tick (* dt (/ internal-time-units-per-second 1000))))
+    (%display-open-window! display (game-title game) (window-scale))
+    (%open-audio! #t)
+    (dynamic-wind
+      (lambda () #t)
+      (lambda ()
+        (let loop ((last (get-internal-real-time)) (owed tick))
+          (run-frame-hooks!)
+          (let* ((polled (%display-poll! display))
+                 (held (car polled)))
+            (when (odd? (caddr polled))
+              (game-debug-draw-set! game (not (game-debug-draw? game))))
+            (unless (or (cadr polled) (memq 'quit held)
+                        (and frames (>= (game-frame game) frames)))
+              (let* ((now (get-internal-real-time))
+                     (owed (+ owed (- now last)))
+                     (due (floor (/ owed tick)))
+                     (steps (min due *max-catch-up-steps*)))
+                (let step ((k 0))
+                  (when (and (< k steps) (not (and frames (>= (game-frame game) frames))))
+                    (step-game! game dt held)
+                    (step (+ k 1))))
+                (draw-game! game)
+                (let ((owed (if (> due steps) 0 (- owed (* steps tick)))))
+                  (wait-until (+ (get-internal-real-time) (- tick owed)))
+                  (loop now owed)))))))
+      (lambda () (%display-close-window! display)))))
+
 (define* (game-run! game #:key (frames #f))
-  "Run GAME headless at a fixed timestep (dt = frame-delay ms): input, then
+  "Run GAME at a fixed timestep (dt = frame-delay ms): input, then
 engine-update, update, camera follow, render — until the game's frame
 counter reaches FRAMES (so a second call with the same FRAMES runs nothing
 more), or until the 'quit action is held. FRAMES is #f (run until quit) or
-a real number, +inf.0 meaning the same as #f."
-  (unless (or (not frames) (and (real? frames) (not (nan? frames))))
-    (scm-error 'wrong-type-arg "game-run!"
-               "frames: expected #f or a frame count, got ~S" (list frames) #f))
-  (parameterize ((current-game game))
-    (let ((dt (game-frame-delay game))
-          (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))
-          (start (get-internal-real-time)))
-      (let loop ((ticks 0))
-        (for-each (lambda (hook) (hook)) frame-hooks)
-        (let* ((frame (game-frame game))
-               (held (scripted-held (game-input-script game) frame)))
-          (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
-            (remember-scene! game)
-            (game-input-set! game (make-input held (input-held-list (game-input game))))
-            (let ((engine (game-engine-update game)))
-              (when engine (engine game dt)))
-            (let ((update (game-update game)))
-              (when update (update game dt)))
-            (camera-follow! game)
-            (let ((render (game-render game)))
-              (when render (render game)))
-            ;; unless the frame rewound the game, the next frame is frame + 1
-            (when (= (game-frame game) frame) (game-frame-set! game (+ frame 1)))
-            (when (frame-pacing) (wait-until (+ start (round (* (+ ticks 1) tick)))))
-            (loop (+ ticks 1))))))
+a real number, +inf.0 meaning the same as #f.
+
+How frames are shown is the host's choice: headless by default (input from
+input-script:, nothing drawn, as deterministic as the physics); in a window
+with `downstroke --window' (real time, keyboard and controllers, sound;
+closing the window quits); or drawn off-screen into PNG files with
+`downstroke --capture DIR'."
+  (check-frames frames)
+  (parameterize ((current-game game)
+                 (current-display (game-display game)))
+    (case (display-mode)
+      ((window) (run-window! game frames))
+      ((capture) (run-headless! game frames (capture-directory)))
+      (else (run-headless! game frames #f)))
     game))

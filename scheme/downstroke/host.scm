@@ -5,6 +5,8 @@
   #:use-module (system repl server)
   #:use-module (system repl coop-server)
   #:use-module (downstroke engine)
+  #:use-module (downstroke render)
+  #:use-module (ice-9 format)
   #:export (main))
 
 (define (report-error key args)
@@ -67,29 +69,92 @@
     (add-frame-hook! (lambda () (poll-coop-repl-server server)))
     (frame-pacing #t)))
 
+(define usage-text
+  "usage: downstroke [OPTION...] [FILE.scm ARGS...]
+Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
+
+  --window            show the game in a window: real time, keyboard and
+                      controllers, sound (closing it quits; F1: debug overlay)
+  --scale N           the window's whole scale factor (default: fit the screen)
+  --capture DIR       headless, and draw every frame off-screen into
+                      DIR/NNNNNN.png (NNNNNN: the frame number)
+  --repl-server PATH  serve a REPL into the game on a Unix socket (mode 0600)
+  --repl-port N       serve it on 127.0.0.1:N instead
+  --help              this text
+")
+
 (define (usage)
-  (display "usage: downstroke [--repl-server PATH | --repl-port N] [FILE.scm ARGS...]\n"
-           (current-error-port))
+  (display usage-text (current-error-port))
   2)
 
+;; Options before the script, as (name . value); #f when one is malformed.
+(define (parse-options args)
+  (let loop ((args args) (opts '()))
+    (define (with-value name check)
+      (if (and (pair? (cdr args)) (check (cadr args)))
+          (loop (cddr args) (acons name (cadr args) opts))
+          #f))
+    (cond ((null? args) (cons (reverse opts) '()))
+          ((string=? (car args) "--window") (loop (cdr args) (acons 'window #t opts)))
+          ((string=? (car args) "--help") (loop (cdr args) (acons 'help #t opts)))
+          ((string=? (car args) "--scale")
+           (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
+          ((string=? (car args) "--capture") (with-value 'capture string?))
+          ((string=? (car args) "--repl-server") (with-value 'repl-server string?))
+          ((string=? (car args) "--repl-port")
+           (with-value 'repl-port (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (< 0 n 65536))))))
+          ((string-prefix? "--" (car args)) #f)
+          (else (cons (reverse opts) args)))))
+
+(define (prepare-display! opts)
+  ;; #f when the options cannot be honoured (said on the error port).
+  (let ((window? (assq-ref opts 'window))
+        (capture (assq-ref opts 'capture)))
+    (cond ((and window? capture)
+           (display "downstroke: --window and --capture exclude each other\n" (current-error-port))
+           #f)
+          ((and (or window? capture) (not (renderer-available?)))
+           (display "downstroke: this build has no renderer (SDL2): no --window or --capture\n"
+                    (current-error-port))
+           #f)
+          (capture
+           (catch 'system-error
+             (lambda ()
+               (unless (file-exists? capture) (mkdir capture))
+               (capture-directory capture)
+               (display-mode 'capture)
+               #t)
+             (lambda (key . args)
+               (format (current-error-port) "downstroke: cannot make capture folder ~a: ~a~%"
+                       capture (strerror (system-error-errno (cons key args))))
+               #f)))
+          (window?
+           (display-mode 'window)
+           (frame-pacing #t)
+           (let ((scale (assq-ref opts 'scale)))
+             (when scale (window-scale (string->number scale))))
+           #t)
+          (else #t))))
+
 (define (main args)
-  "ARGS: () for a REPL, or ([--repl-server PATH | --repl-port N] FILE ARG ...)
-to run a script, serving a REPL into it. Returns the exit status."
+  "ARGS: the command line after the program's name (see usage-text).
+Returns the exit status."
   ;; Scripts are written as the seed writes them: `title: \"x\"'.
   (read-set! keywords 'postfix)
-  (cond ((null? args) (run-repl))
-        ((and (member (car args) '("--repl-server" "--repl-port")) (< (length args) 3))
-         (usage))
-        ((string=? (car args) "--repl-server")
-         (serve-repl! (unix-server-socket (cadr args)))
-         (run-script (caddr args) (cdddr args)))
-        ((string=? (car args) "--repl-port")
-         (let ((port (string->number (cadr args))))
-           (if (and port (exact-integer? port) (< 0 port 65536))
-               (begin
-                 ;; loopback only: a REPL is arbitrary code execution
-                 (serve-repl! (make-tcp-server-socket #:addr INADDR_LOOPBACK #:port port))
-                 (run-script (caddr args) (cdddr args)))
-               (usage))))
-        ((string-prefix? "--" (car args)) (usage))
-        (else (run-script (car args) (cdr args)))))
+  (let ((parsed (parse-options args)))
+    (cond ((not parsed) (usage))
+          ((assq-ref (car parsed) 'help) (display usage-text) 0)
+          ((not (prepare-display! (car parsed))) 2)
+          (else
+           (let ((opts (car parsed)) (rest (cdr parsed)))
+             (cond ((and (null? rest) (or (assq-ref opts 'repl-server) (assq-ref opts 'repl-port)))
+                    (usage))
+                   ((null? rest) (run-repl))
+                   (else
+                    (let ((path (assq-ref opts 'repl-server))
+                          (port (assq-ref opts 'repl-port)))
+                      (cond (path (serve-repl! (unix-server-socket path)))
+                            ;; loopback only: a REPL is arbitrary code execution
+                            (port (serve-repl! (make-tcp-server-socket #:addr INADDR_LOOPBACK
+                                                                        #:port (string->number port)))))
+                      (run-script (car rest) (cdr rest))))))))))

@@ -1,0 +1,77 @@
+;;; (downstroke render) — drawing from a game's render: procedure, sounds,
+;;; and how the host asked frames to be shown (headless, a window, captures).
+(define-module (downstroke render)
+  #:use-module (downstroke native)
+  #:export (renderer-available? display-mode capture-directory window-scale
+            current-display default-input-map
+            draw-rect draw-line draw-sprite draw-text
+            color-rgba load-sound))
+
+(define (renderer-available?)
+  "Whether this build can draw (it was built with SDL2)."
+  (%renderer?))
+
+;; Set by the host from its command line: 'headless (the default: nothing is
+;; drawn unless game-capture asks), 'window (--window), or 'capture
+;; (--capture DIR: every frame is drawn off-screen and written to DIR).
+(define display-mode (make-parameter 'headless))
+(define capture-directory (make-parameter #f))
+;; --scale N: the window's whole scale factor; 0 fits the screen.
+(define window-scale (make-parameter 0))
+
+;; The display of the game being run: where draw-* queue their commands.
+(define current-display (make-parameter #f))
+
+(define (default-input-map)
+  "The keys and controller inputs bound to each action when make-game has no
+input-map:, as ((action name …) …): arrows or WASD move, Z or Space is a,
+X is b, Return is start, Backspace is select, Escape quits; a controller's
+d-pad or left stick moves and its A, B, Start and Back buttons act."
+  (%default-input-map))
+
+(define named-colors
+  '((white 255 255 255) (black 0 0 0) (red 230 60 60) (green 80 220 100)
+    (blue 80 150 255) (yellow 250 220 70) (cyan 90 220 240) (magenta 220 90 220)
+    (orange 255 150 40) (grey 150 150 150) (gray 150 150 150)))
+
+(define (color-rgba who color)
+  "COLOR as the (r g b [a]) list the renderer takes: a list of 3 or 4
+integers 0–255 as it is, or one of the names white black red green blue
+yellow cyan magenta orange grey."
+  (cond ((symbol? color)
+         (or (assq-ref named-colors color)
+             (scm-error 'wrong-type-arg who "color: no color is named ~S (try ~S)"
+                        (list color (map car named-colors)) #f)))
+        (else color)))
+
+(define (display-for who)
+  (or (current-display)
+      (scm-error 'misc-error who "no game is being drawn: call it from a game's render: procedure" '() #f)))
+
+(define* (draw-rect x y w h #:optional (color 'white) #:key (fill? #f) (space 'world))
+  "Draw a W × H rectangle with its top-left corner at (X, Y): its outline, or
+filled when FILL? is true. COLOR is a name ('red) or (r g b [a]); alpha
+below 255 blends. SPACE is 'world (moves with the camera) or 'screen (a HUD)."
+  (%draw-rect! (display-for "draw-rect") x y w h (color-rgba "draw-rect" color) fill? space))
+
+(define* (draw-line x0 y0 x1 y1 #:optional (color 'white) #:key (space 'world))
+  "Draw a one-pixel line from (X0, Y0) to (X1, Y1), both ends included."
+  (%draw-line! (display-for "draw-line") x0 y0 x1 y1 (color-rgba "draw-line" color) space))
+
+(define* (draw-sprite gid x y #:key (space 'world) (flip-x? #f))
+  "Draw the tile picture GID (of the scene's map's tilesets; flip bits
+honoured) with its top-left corner at (X, Y)."
+  (%draw-sprite! (display-for "draw-sprite")
+                 (if flip-x? (logxor gid #x80000000) gid) x y space))
+
+(define* (draw-text text x y #:optional (color 'white) #:key (scale 1) (space 'world))
+  "Draw TEXT in the built-in 5×7 font with its top-left corner at (X, Y);
+each font pixel is SCALE × SCALE, each letter 6 × SCALE wide, and a newline
+starts a line 9 × SCALE lower."
+  (%draw-text! (display-for "draw-text") text x y (color-rgba "draw-text" color) scale space))
+
+(define (load-sound name file)
+  "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.
+Headless runs decode it too (so a bad file is found at once) but play
+nothing. A missing, unreadable or undecodable file is an error naming it."
+  (%load-sound name file))
