@@ -21,7 +21,7 @@ struct DrawCommand {
     Rgba color;
     uint32_t gid = 0;       // Sprite: a raw gid, flip bits honoured
     int scale = 1;          // Text: each font pixel is scale × scale
-    std::string text;
+    std::string text = {};
 };
 
 struct DrawList {

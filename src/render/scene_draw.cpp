@@ -112,9 +112,11 @@ void draw_legend(Canvas& c) {
     const std::pair<const char*, Rgba> roles[] = {{"solid", kSolidColor},   {"immovable", kImmovableColor},
                                                   {"ghost", kGhostColor},   {"plain", kPlainColor},
                                                   {"resting", kRestingColor}};
+    // Along the bottom edge, where a HUD is least often drawn.
     int x = 2;
+    const int y = c.height() - kLineHeight;
     for (const auto& [name, color] : roles) {
-        c.text(x, 2, name, color);
+        c.text(x, y, name, color);
         x += (int(std::char_traits<char>::length(name)) + 1) * kGlyphAdvance;
     }
 }

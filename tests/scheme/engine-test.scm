@@ -239,16 +239,17 @@
                                                           '(#:x 50 #:y 0 #:width 8 #:height 8 #:skip-pipelines (velocity-x))))))
 (game-run! g18 frames: 3)
 (define stats18 (engine-stats g18))
-(test-equal "engine-stats: every step in frame order, between decode and encode"
+(test-equal "engine-stats: every step in frame order, between decode and encode, then drawing"
   '(decode tweens acceleration gravity velocity-x tile-collisions-x velocity-y tile-collisions-y
-    on-solid entity-collisions groups encode)
+    on-solid entity-collisions groups encode render)
   (map car stats18))
 (test-equal "engine-stats: processed and skipped per step"
   ;; the third box came out of frame 1 unchanged and depends on nobody: from
   ;; then on the frame leaves it alone (velocity-y skips it too)
   '((decode 3 0) (tweens 0 3) (acceleration 1 2) (gravity 1 2) (velocity-x 2 1)
     (tile-collisions-x 0 3) (velocity-y 2 1) (tile-collisions-y 0 3) (on-solid 1 2)
-    (entity-collisions 2 1) (groups 0 3) (encode 3 0))
+    (entity-collisions 2 1) (groups 0 3) (encode 3 0)
+    (render 0 0))                       ; headless: nothing drawn
   (map (lambda (row) (list-head row 3)) stats18))
 (test-assert "engine-stats: times are real milliseconds ≥ 0"
   (every (lambda (row) (and (real? (cadddr row)) (>= (cadddr row) 0))) stats18))

@@ -1,0 +1,413 @@
+// Drawing, checked pixel by pixel against expectations computed here from
+// the picture's definition (not from the renderer's code): tiles at known
+// cells, every flip bit, the camera, sprites, boxes, the overlay, the draw
+// list, opacity, image collections, culling and PNG capture.
+#include <doctest/doctest.h>
+
+#include <SDL_image.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "canvas.hpp"
+#include "constants.hpp"
+#include "font.hpp"
+#include "render_error.hpp"
+#include "scene_draw.hpp"
+#include "window.hpp"
+
+using namespace ds;
+using namespace ds::render;
+
+namespace {
+
+constexpr int kTile = 4;   // test tiles are 4 × 4 px
+constexpr int kSheetCols = 2;
+
+// The test sheet's colour at pixel (u, v) of local tile t: every pixel of
+// every tile differs, so any misplaced, flipped or shifted pixel shows.
+Rgba sheet_color(int t, int u, int v) {
+    return {uint8_t(40 + 50 * t), uint8_t(20 + 60 * u), uint8_t(10 + 70 * v), 255};
+}
+
+std::filesystem::path temp_dir() {
+    auto dir = std::filesystem::temp_directory_path() / ("ds-render-test-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// Writes a 2 × 2 sheet of 4 × 4 tiles (ids 0–3) as a PNG, opaque.
+std::string write_sheet(const std::string& name) {
+    SDL_Surface* s = SDL_CreateRGBSurfaceWithFormat(0, kTile * kSheetCols, kTile * 2, 32, SDL_PIXELFORMAT_ARGB8888);
+    for (int t = 0; t < 4; ++t)
+        for (int v = 0; v < kTile; ++v)
+            for (int u = 0; u < kTile; ++u) {
+                const Rgba c = sheet_color(t, u, v);
+                const int x = (t % kSheetCols) * kTile + u, y = (t / kSheetCols) * kTile + v;
+                static_cast<uint32_t*>(s->pixels)[y * s->pitch / 4 + x] =
+                    0xff000000u | uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | c.b;
+            }
+    const auto path = temp_dir() / name;
+    REQUIRE(IMG_SavePNG(s, path.string().c_str()) == 0);
+    SDL_FreeSurface(s);
+    return path.string();
+}
+
+Tileset sheet_tileset() {
+    write_sheet("sheet.png");
+    Tileset ts;
+    ts.firstgid = 1;
+    ts.name = "sheet";
+    ts.tile_width = ts.tile_height = kTile;
+    ts.tile_count = 4;
+    ts.columns = kSheetCols;
+    ts.image = "sheet.png";
+    ts.image_dir = temp_dir().string();
+    return ts;
+}
+
+// A cols × rows map of 4 px cells whose one layer holds `cells`.
+Tilemap map_with(int cols, int rows, std::vector<uint32_t> cells) {
+    Tilemap m;
+    m.width = cols;
+    m.height = rows;
+    m.tile_width = m.tile_height = kTile;
+    m.tilesets.push_back(sheet_tileset());
+    TileLayer layer;
+    layer.width = cols;
+    layer.height = rows;
+    layer.cells = std::move(cells);
+    m.layers.push_back(std::move(layer));
+    return m;
+}
+
+// Where Tiled puts source pixel (x, y) of a tile under `flips`: the diagonal
+// flip swaps the axes first, then the horizontal and vertical flips mirror.
+std::pair<int, int> forward(int x, int y, uint32_t flips) {
+    if (flips & kFlipDiagonal) std::swap(x, y);
+    if (flips & kFlipHorizontal) x = kTile - 1 - x;
+    if (flips & kFlipVertical) y = kTile - 1 - y;
+    return {x, y};
+}
+
+void check_tile_at(const Canvas& c, int left, int top, int t, uint32_t flips) {
+    for (int y = 0; y < kTile; ++y)
+        for (int x = 0; x < kTile; ++x) {
+            const auto [dx, dy] = forward(x, y, flips);
+            CAPTURE(t);
+            CAPTURE(flips);
+            CAPTURE(x);
+            CAPTURE(y);
+            CHECK(c.pixel(left + dx, top + dy) == sheet_color(t, x, y));
+        }
+}
+
+Rgba blended(Rgba src, Rgba dst, uint8_t a) {  // the usual "over", rounded
+    auto m = [a](int s, int d) { return uint8_t((s * a + d * (255 - a) + 127) / 255); };
+    return {m(src.r, dst.r), m(src.g, dst.g), m(src.b, dst.b), 255};
+}
+
+}  // namespace
+
+TEST_SUITE("render") {
+
+TEST_CASE("each tile is drawn from its place in the sheet at its cell") {
+    Tilemap m = map_with(3, 2, {1, 2, 0, 3, 4, 1});
+    Canvas c(12, 8);
+    TileArt art;
+    art.bind(&m);
+    c.clear(kBackground);
+    CHECK(draw_map(c, art, m, 0, 0) == 5);
+    check_tile_at(c, 0, 0, 0, 0);
+    check_tile_at(c, 4, 0, 1, 0);
+    check_tile_at(c, 0, 4, 2, 0);
+    check_tile_at(c, 4, 4, 3, 0);
+    check_tile_at(c, 8, 4, 0, 0);
+    CHECK(c.pixel(9, 1) == kBackground);  // the empty cell
+    CHECK(art.images_loaded() == 1);
+}
+
+TEST_CASE("every combination of the flip bits turns the tile as Tiled does") {
+    const uint32_t combos[] = {kFlipHorizontal, kFlipVertical, kFlipDiagonal,
+                               kFlipHorizontal | kFlipVertical, kFlipDiagonal | kFlipHorizontal,
+                               kFlipDiagonal | kFlipVertical, kFlipDiagonal | kFlipHorizontal | kFlipVertical};
+    for (uint32_t flips : combos) {
+        Tilemap m = map_with(1, 1, {2 | flips});
+        Canvas c(4, 4);
+        TileArt art;
+        art.bind(&m);
+        draw_map(c, art, m, 0, 0);
+        check_tile_at(c, 0, 0, 1, flips);
+    }
+    // The hexagonal rotation bit means nothing on an orthogonal map.
+    Tilemap m = map_with(1, 1, {2 | kRotateHex120});
+    Canvas c(4, 4);
+    TileArt art;
+    art.bind(&m);
+    draw_map(c, art, m, 0, 0);
+    check_tile_at(c, 0, 0, 1, 0);
+}
+
+TEST_CASE("the camera shifts the map by its floored position") {
+    Tilemap m = map_with(4, 4, std::vector<uint32_t>(16, 1));
+    m.layers[0].cells[5] = 4;  // cell (1, 1): world pixels 4–7
+    Canvas c(8, 8);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.camera_x = 3.75;  // floors to 3
+    v.camera_y = 2;
+    draw_scene(c, art, v);
+    check_tile_at(c, 4 - 3, 4 - 2, 3, 0);
+    CHECK(c.pixel(0, 0) == sheet_color(0, 3, 2));
+}
+
+TEST_CASE("only the cells in view are visited, however large the layer") {
+    TileLayer big;
+    big.width = big.height = 100000;  // no cells needed: the window is pure arithmetic
+    const CellWindow w = visible_cells(big, 16, 16, 1000, 2000, 640, 360, 0, 0);
+    CHECK(w.col0 == 62);
+    CHECK(w.col1 == 103);  // 1000 + 640 − 1 = 1639 → cell 102 is the last
+    CHECK(w.row0 == 125);
+    CHECK(w.row1 == 148);  // 2000 + 360 − 1 = 2359 → cell 147
+    // Taller tiles hang above their cell, so rows below the view can show.
+    CHECK(visible_cells(big, 16, 16, 1000, 2000, 640, 360, 0, 16).row1 == 149);
+    // Before the layer's first cell there is nothing.
+    const CellWindow left = visible_cells(big, 16, 16, -5000, 0, 640, 360, 0, 0);
+    CHECK(left.col0 == 0);
+    CHECK(left.col1 == 0);
+}
+
+TEST_CASE("a sprite stands bottom-centred in its entity's box, flip-x mirrors it") {
+    Tilemap m = map_with(1, 1, {0});
+    std::vector<EntityView> es(2);
+    es[0] = {.x = 2, .y = 1, .w = 6, .h = 5, .sprite = 4};  // drawn at (3, 2)
+    es[1] = {.x = 10, .y = 0, .w = 4, .h = 4, .sprite = 2, .flip_x = true};
+    Canvas c(16, 8);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
+    const DrawCounts n = draw_scene(c, art, v);
+    CHECK(n.sprites == 2);
+    CHECK(n.boxes == 0);
+    check_tile_at(c, 3, 2, 3, 0);
+    check_tile_at(c, 10, 0, 1, kFlipHorizontal);
+}
+
+TEST_CASE("an entity with no sprite is a box coloured by its role") {
+    std::vector<EntityView> es(5);
+    es[0] = {.x = 0, .y = 0, .w = 4, .h = 4, .vx = 1, .solid = true};
+    es[1] = {.x = 5, .y = 0, .w = 4, .h = 4, .solid = true, .immovable = true};
+    es[2] = {.x = 10, .y = 0, .w = 4, .h = 4, .solid = true, .ghost = true};
+    es[3] = {.x = 15, .y = 0, .w = 4, .h = 4};
+    es[4] = {.x = 20, .y = 0, .w = 4, .h = 4, .solid = true, .on_ground = true};
+    Canvas c(25, 4);
+    TileArt art;
+    SceneView v;
+    v.entities = es;
+    draw_scene(c, art, v);
+    const Rgba roles[] = {kSolidColor, kImmovableColor, kGhostColor, kPlainColor, kRestingColor};
+    for (int i = 0; i < 5; ++i) {
+        CAPTURE(i);
+        CHECK(c.pixel(i * 5, 0) == roles[i]);  // the outline
+        CHECK(c.pixel(i * 5 + 3, 3) == roles[i]);
+        CHECK(c.pixel(i * 5 + 1, 1) == blended(roles[i], kBackground, kBoxFillAlpha));  // the fill
+    }
+    CHECK(c.pixel(4, 0) == kBackground);  // between boxes
+}
+
+TEST_CASE("entities far outside the view are not drawn") {
+    std::vector<EntityView> es = {{.x = 1000, .y = 0, .w = 4, .h = 4}, {.x = 0, .y = 0, .w = 4, .h = 4}};
+    Canvas c(8, 8);
+    TileArt art;
+    SceneView v;
+    v.entities = es;
+    const DrawCounts n = draw_scene(c, art, v);
+    CHECK(n.boxes == 1);
+}
+
+TEST_CASE("the debug overlay: outlines, velocity, ground mark, pushed pairs, trails") {
+    std::vector<EntityView> es(2);
+    es[0] = {.x = 2, .y = 2, .w = 5, .h = 5, .vx = 0, .vy = 2, .solid = true, .on_ground = true};
+    es[1] = {.x = 20, .y = 2, .w = 5, .h = 5, .solid = true};
+    const std::pair<uint32_t, uint32_t> pairs[] = {{0, 1}};
+    const Trail trails[] = {{{30.5, 20.5}, {34.5, 20.5}}, {}};
+    Canvas c(40, 30);
+    TileArt art;
+    SceneView v;
+    v.entities = es;
+    v.debug = true;
+    v.pushed_pairs = pairs;
+    v.trails = trails;
+    draw_scene(c, art, v);
+    // Entity 0's centre is (4, 4); its velocity (0, 2) is drawn 4 frames long.
+    CHECK(c.pixel(4, 4 + 2 * int(kVelocityScale)) == kVelocityColor);
+    CHECK(c.pixel(4, 5 + 2 * int(kVelocityScale)) == kBackground);
+    // The pushed pair runs centre to centre along y = 4, past the velocity.
+    CHECK(c.pixel(15, 4) == kPushedPairColor);
+    // The ground mark: the box's bottom rows.
+    CHECK(c.pixel(3, 6) == kGroundMarkColor);
+    CHECK(c.pixel(3, 6 - kGroundMarkHeight) != kGroundMarkColor);
+    // The trail from (30, 20) to (34, 20).
+    for (int x = 30; x <= 34; ++x) CHECK(c.pixel(x, 20) == kTrailColor);
+    // The legend names the roles along the bottom edge.
+    bool legend = false;
+    for (int x = 0; x < 40; ++x) legend |= c.pixel(x, 30 - kLineHeight + 3) == kSolidColor;
+    CHECK(legend);
+}
+
+TEST_CASE("draw commands: world space moves with the camera, screen space does not") {
+    DrawList list;
+    list.commands.push_back({.kind = DrawCommand::Kind::FilledRect, .space = Space::World, .x = 10, .y = 10,
+                             .x2 = 2, .y2 = 2, .color = {255, 0, 0, 255}});
+    list.commands.push_back({.kind = DrawCommand::Kind::FilledRect, .space = Space::Screen, .x = 0, .y = 0,
+                             .x2 = 1, .y2 = 1, .color = {0, 0, 255, 255}});
+    list.commands.push_back({.kind = DrawCommand::Kind::Line, .space = Space::Screen, .x = 0, .y = 7, .x2 = 7,
+                             .y2 = 7, .color = {0, 255, 0, 128}});
+    list.commands.push_back({.kind = DrawCommand::Kind::Rect, .space = Space::Screen, .x = 12, .y = 0, .x2 = 3,
+                             .y2 = 3, .color = {255, 255, 0, 255}});
+    Canvas c(16, 16);
+    TileArt art;
+    SceneView v;
+    v.camera_x = 5;
+    v.camera_y = 6;
+    v.commands = &list;
+    draw_scene(c, art, v);
+    CHECK(c.pixel(5, 4) == Rgba{255, 0, 0, 255});
+    CHECK(c.pixel(6, 5) == Rgba{255, 0, 0, 255});
+    CHECK(c.pixel(7, 6) == kBackground);
+    CHECK(c.pixel(0, 0) == Rgba{0, 0, 255, 255});
+    for (int x = 0; x <= 7; ++x) CHECK(c.pixel(x, 7) == blended({0, 255, 0, 255}, kBackground, 128));
+    CHECK(c.pixel(8, 7) == kBackground);
+    CHECK(c.pixel(12, 0) == Rgba{255, 255, 0, 255});
+    CHECK(c.pixel(13, 1) == kBackground);  // an outline is hollow
+    CHECK(c.pixel(14, 2) == Rgba{255, 255, 0, 255});
+}
+
+TEST_CASE("text is the built-in font, pixel for pixel, at any scale") {
+    Canvas c(20, 20);
+    c.clear({0, 0, 0, 255});
+    c.text(1, 2, "H", {255, 255, 255, 255}, 2);
+    for (int row = 0; row < kGlyphHeight; ++row)
+        for (int col = 0; col < kGlyphWidth; ++col) {
+            const bool ink = glyph_row('H', row) >> (kGlyphWidth - 1 - col) & 1;
+            const Rgba want = ink ? Rgba{255, 255, 255, 255} : Rgba{0, 0, 0, 255};
+            CHECK(c.pixel(1 + col * 2, 2 + row * 2) == want);
+            CHECK(c.pixel(2 + col * 2, 3 + row * 2) == want);
+        }
+}
+
+TEST_CASE("lines far off the canvas are clipped, not walked") {
+    Canvas c(8, 8);
+    c.clear({0, 0, 0, 255});
+    c.line(-2000000000, 3, 2000000000, 3, {255, 255, 255, 255});
+    for (int x = 0; x < 8; ++x) CHECK(c.pixel(x, 3) == Rgba{255, 255, 255, 255});
+    CHECK(c.pixel(0, 2) == Rgba{0, 0, 0, 255});
+    c.line(-50, -50, -10, -10, {255, 0, 0, 255});  // wholly outside: nothing
+    CHECK(c.pixel(0, 0) == Rgba{0, 0, 0, 255});
+}
+
+TEST_CASE("a layer's opacity fades its tiles; a hidden layer is not drawn") {
+    Tilemap m = map_with(1, 1, {1});
+    m.layers[0].opacity = 0.5;
+    TileLayer hidden = m.layers[0];
+    hidden.cells = {4};
+    hidden.visible = false;
+    hidden.opacity = 1;
+    m.layers.push_back(hidden);
+    Canvas c(4, 4);
+    TileArt art;
+    art.bind(&m);
+    c.clear({0, 0, 0, 255});
+    draw_map(c, art, m, 0, 0);
+    const Rgba want = blended(sheet_color(0, 1, 2), {0, 0, 0, 255}, 128);
+    const Rgba got = c.pixel(1, 2);
+    // SDL's blitter may round a unit differently from ours.
+    CHECK(std::abs(got.r - want.r) <= 1);
+    CHECK(std::abs(got.g - want.g) <= 1);
+    CHECK(std::abs(got.b - want.b) <= 1);
+}
+
+TEST_CASE("an image-collection tileset draws each tile from its own file") {
+    write_sheet("one.png");  // an 8 × 8 picture: tile 7 is the whole sheet
+    Tilemap m;
+    m.width = m.height = 2;
+    m.tile_width = m.tile_height = kTile;
+    Tileset ts;
+    ts.firstgid = 1;
+    ts.tile_width = ts.tile_height = 8;
+    ts.image_dir = temp_dir().string();
+    TileInfo t;
+    t.id = 7;
+    t.image = "one.png";
+    t.image_width = t.image_height = 8;
+    ts.tiles.push_back(t);
+    m.tilesets.push_back(ts);
+    TileLayer layer;
+    layer.width = layer.height = 2;
+    layer.cells = {0, 0, 8, 0};  // gid 8 = local 7 in cell (0, 1)
+    m.layers.push_back(layer);
+    Canvas c(8, 8);
+    TileArt art;
+    art.bind(&m);
+    draw_map(c, art, m, 0, 0);
+    // Bottom-left aligned: the 8 px picture in a 4 px cell at row 1 fills y 0–7.
+    check_tile_at(c, 0, 0, 0, 0);
+    check_tile_at(c, 4, 4, 3, 0);
+}
+
+TEST_CASE("a missing tileset image is reported by file name when first drawn") {
+    Tilemap m = map_with(1, 1, {1});
+    m.tilesets[0].image = "absent.png";
+    Canvas c(4, 4);
+    TileArt art;
+    art.bind(&m);
+    REQUIRE_THROWS_AS(draw_map(c, art, m, 0, 0), RenderError);
+    try {
+        draw_map(c, art, m, 0, 0);
+    } catch (const RenderError& e) {
+        CHECK(std::string(e.what()).find("absent.png") != std::string::npos);
+    }
+    // A gid beyond the tileset's image is drawn as nothing, not an error.
+    Tilemap beyond = map_with(1, 1, {9});
+    art.bind(&beyond);
+    CHECK(draw_map(c, art, beyond, 0, 0) == 0);
+}
+
+TEST_CASE("a capture is the canvas exactly, unscaled") {
+    Tilemap m = map_with(2, 1, {1, 4});
+    Canvas c(8, 4);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    draw_scene(c, art, v);
+    const std::string file = (temp_dir() / "capture.png").string();
+    c.save_png(file);
+    SDL_Surface* back = IMG_Load(file.c_str());
+    REQUIRE(back);
+    SDL_Surface* argb = SDL_ConvertSurfaceFormat(back, SDL_PIXELFORMAT_ARGB8888, 0);
+    CHECK(argb->w == 8);
+    CHECK(argb->h == 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const uint32_t p = static_cast<uint32_t*>(argb->pixels)[y * argb->pitch / 4 + x];
+            CHECK(Rgba{uint8_t(p >> 16), uint8_t(p >> 8), uint8_t(p), 255} == c.pixel(x, y));
+        }
+    SDL_FreeSurface(argb);
+    SDL_FreeSurface(back);
+    CHECK_THROWS_AS(c.save_png("/nonexistent-dir/x.png"), RenderError);
+}
+
+TEST_CASE("canvas sizes and the window's whole scale") {
+    CHECK_THROWS_AS(Canvas(0, 10), RenderError);
+    CHECK_THROWS_AS(Canvas(10, kMaxCanvasSide + 1), RenderError);
+    CHECK(fitting_scale(320, 240, 1920, 1080) == 4);
+    CHECK(fitting_scale(320, 240, 1000, 1000) == 3);
+    CHECK(fitting_scale(640, 480, 320, 200) == 1);  // never below 1
+    CHECK(fitting_scale(16, 16, 10000, 10000) == kMaxScale);
+}
+
+}  // TEST_SUITE
