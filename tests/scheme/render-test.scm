@@ -1,0 +1,252 @@
+;;; Drawing through the game API: frames captured off-screen (no display) and
+;;; read back pixel by pixel against colours computed here from the test
+;;; sheet's definition (tests/data/maps/render/make_render_maps.py), the
+;;; draw-* procedures, the overlay, `downstroke --capture', input maps and
+;;; logs, and sounds.
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (ice-9 ftw) (ice-9 rdelim)
+             (rnrs bytevectors) (ice-9 binary-ports))
+
+(load "support.scm")
+
+(define data (getenv "DS_TEST_DATA"))
+(define render-map (string-append data "/maps/render/render.tmx"))
+(define host (readlink "/proc/self/exe"))
+(define dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-render-XXXXXX")))
+
+;; The sheet: tile t's pixel (u, v), as make_render_maps.py paints it.
+(define (sheet t u v) (list (+ 40 (* 50 t)) (+ 20 (* 25 u)) (+ 10 (* 30 v)) 255))
+;; Where Tiled puts source pixel (x, y) of an 8 × 8 tile under the flips:
+;; diagonal swaps the axes first, then horizontal and vertical mirror.
+(define (forward x y h? v? d?)
+  (let* ((xy (if d? (cons y x) (cons x y)))
+         (x (if h? (- 7 (car xy)) (car xy)))
+         (y (if v? (- 7 (cdr xy)) (cdr xy))))
+    (cons x y)))
+(define background '(24 28 40 255))
+
+(define (tile-drawn? game left top t h? v? d?)
+  ;; Every pixel of tile T, turned, at (LEFT, TOP) of the last frame.
+  (every (lambda (y)
+           (every (lambda (x)
+                    (let ((p (forward x y h? v? d?)))
+                      (equal? (sheet t x y) (game-pixel game (+ left (car p)) (+ top (cdr p))))))
+                  (iota 8)))
+         (iota 8)))
+
+(define (capture-of game)
+  (let ((file (string-append dir "/frame.png")))
+    (game-capture game file)
+    file))
+
+(define (png-size file)
+  ;; Width and height from the IHDR chunk (big-endian, bytes 16–23).
+  (let ((bv (call-with-input-file file get-bytevector-all #:binary #t)))
+    (list (bytevector-u32-ref bv 16 (endianness big)) (bytevector-u32-ref bv 20 (endianness big)))))
+
+(test-begin "render")
+
+(test-assert "this build has the renderer" (renderer-available?))
+
+;;; ---------------------------------------------------------------- the map
+(define level (load-tilemap render-map))
+(define (map-game . scene-args)
+  (make-game width: 48 height: 32 scene: (apply make-scene tilemap: level scene-args)))
+
+(define g (map-game))
+(define first-capture (capture-of g))
+(test-equal "a capture is exactly the game's width × height" '(48 32) (png-size first-capture))
+(test-assert "tile 1 (gid 2) unflipped at cell (0, 0)" (tile-drawn? g 0 0 1 #f #f #f))
+(test-assert "horizontal flip at cell (1, 0)" (tile-drawn? g 8 0 1 #t #f #f))
+(test-assert "vertical flip at cell (2, 0)" (tile-drawn? g 16 0 1 #f #t #f))
+(test-assert "diagonal flip at cell (3, 0)" (tile-drawn? g 24 0 1 #f #f #t))
+(test-assert "horizontal and vertical at cell (4, 0)" (tile-drawn? g 32 0 1 #t #t #f))
+(test-assert "diagonal and horizontal at cell (5, 0)" (tile-drawn? g 40 0 1 #t #f #t))
+(test-assert "gid 3 at cell (0, 1)" (tile-drawn? g 0 8 2 #f #f #f))
+(test-assert "the floor, gid 1, along row 3" (every (lambda (c) (tile-drawn? g (* 8 c) 24 0 #f #f #f)) (iota 6)))
+(test-equal "an empty cell shows the background" background (game-pixel g 12 12))
+
+(define moved (map-game camera: (make-camera x: 5 y: 3)))
+(capture-of moved)
+(test-assert "the camera shifts the map: cell (5, 1)'s gid 4 moves by (−5, −3)"
+  (tile-drawn? moved (- 40 5) (- 8 3) 3 #f #f #f))
+(test-equal "… and pixel (0, 0) shows world pixel (5, 3), in cell (0, 0)'s gid 2" (sheet 1 5 3) (game-pixel moved 0 0))
+
+;;; ---------------------------------------------------------------- sprites and physics
+;;; A box with a sprite falls onto the floor (row 3, y 24): wherever physics
+;;; put it, its picture is there.
+(define faller (make-game width: 48 height: 32
+                          scene: (make-scene tilemap: level
+                                             entities: (list (list #:id 'box #:x 20 #:y 8 #:width 8 #:height 8
+                                                                   #:gravity? #t #:sprite 4)))))
+(game-run! faller frames: 12)
+(define box (car (scene-entities (game-scene faller))))
+(capture-of faller)
+(test-assert "the sprite is drawn where physics left the entity"
+  (tile-drawn? faller (inexact->exact (floor (entity-ref box #:x)))
+               (inexact->exact (floor (entity-ref box #:y))) 3 #f #f #f))
+(test-equal "… resting on the floor" 16 (entity-ref box #:y))
+(define flipped (make-game width: 48 height: 32
+                           scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 8 #:height 8 #:sprite 2 #:flip-x? #t))
+                                              tilemap: level)))
+(capture-of flipped)
+(test-assert "#:flip-x? mirrors the sprite" (tile-drawn? flipped 0 0 1 #t #f #f))
+
+(define render-row (assq 'render (engine-stats faller)))
+(test-assert "engine-stats: the render row counts what was drawn" (> (cadr render-row) 0))
+(test-assert "… and its time" (>= (cadddr render-row) 0))
+
+;;; ---------------------------------------------------------------- boxes and the overlay
+(define solid-green '(80 220 100 255))
+(define immovable-blue '(80 150 255 255))
+(define velocity-yellow '(255 240 120 255))
+(define boxes (make-game width: 48 height: 32
+                         scene: (make-scene entities: (list '(#:x 2 #:y 2 #:width 10 #:height 10 #:solid? #t #:vx 2)
+                                                            '(#:x 30 #:y 2 #:width 10 #:height 10 #:solid? #t #:immovable? #t)))))
+(capture-of boxes)
+(test-equal "an entity without a sprite is a box in its role's colour: solid" solid-green (game-pixel boxes 2 2))
+(test-equal "… immovable" immovable-blue (game-pixel boxes 30 2))
+(test-equal "… the overlay is off: no velocity" (game-pixel boxes 7 3) (game-pixel boxes 7 3))
+(test-assert "… and its centre is not the velocity colour" (not (equal? velocity-yellow (game-pixel boxes 11 7))))
+(game-debug-draw-set! boxes #t)
+(test-assert "game-debug-draw? follows the setter" (game-debug-draw? boxes))
+(capture-of boxes)
+;; Centre (7, 7); velocity (2, 0) drawn 4 frames long: to (15, 7).
+(test-equal "the overlay draws the velocity" velocity-yellow (game-pixel boxes 15 7))
+(game-debug-draw-set! boxes #f)
+
+;;; Pushed pairs: two overlapping solid boxes are pushed apart in a frame;
+;;; the overlay joins their centres in red.
+(define pushed (make-game width: 48 height: 32
+                          scene: (make-scene entities: (list '(#:id a #:x 10 #:y 10 #:width 8 #:height 8 #:solid? #t)
+                                                             '(#:id b #:x 14 #:y 10 #:width 8 #:height 8 #:solid? #t)))))
+(game-debug-draw-set! pushed #t)
+(game-run! pushed frames: 1)
+(capture-of pushed)
+(define a1 (first (scene-entities (game-scene pushed))))
+(define b1 (second (scene-entities (game-scene pushed))))
+(test-equal "the pair was pushed apart" '(8 16) (list (entity-ref a1 #:x) (entity-ref b1 #:x)))
+(test-equal "… and the overlay joins their centres" '(255 70 70 255) (game-pixel pushed 16 14))
+
+;;; Trails: with history:, the overlay draws where each entity has been.
+(define trail-game (make-game width: 48 height: 32 history: 30
+                              scene: (make-scene entities: (list '(#:id m #:x 0 #:y 20 #:width 2 #:height 2 #:vx 1)))))
+(game-run! trail-game frames: 20)
+(game-debug-draw-set! trail-game #t)
+(capture-of trail-game)
+(test-equal "a trail runs through the old centres" '(120 230 255 255) (game-pixel trail-game 5 21))
+
+;;; ---------------------------------------------------------------- draw-*
+(define hud (make-game width: 32 height: 32
+                       scene: (make-scene camera: (make-camera x: 10 y: 10))
+                       render: (lambda (game)
+                                 (draw-rect 12 12 4 4 '(255 0 0) fill?: #t)
+                                 (draw-rect 0 0 2 2 'blue fill?: #t space: 'screen)
+                                 (draw-line 0 31 31 31 '(0 255 0 255) space: 'screen)
+                                 (draw-sprite 3 20 0 space: 'screen)
+                                 (draw-text "A" 0 10 'white space: 'screen))))
+(game-run! hud frames: 1)
+(capture-of hud)
+(test-equal "draw-rect in world space moves with the camera" '(255 0 0 255) (game-pixel hud 2 2))
+(test-equal "… in screen space it does not" '(80 150 255 255) (game-pixel hud 0 0))
+(test-equal "draw-line, both ends included" '((0 255 0 255) (0 255 0 255))
+  (list (game-pixel hud 0 31) (game-pixel hud 31 31)))
+(test-equal "draw-sprite without a map draws nothing" background (game-pixel hud 20 0))
+(test-equal "draw-text: the top of A" '(255 255 255 255) (game-pixel hud 1 10))
+(define sprite-hud (make-game width: 16 height: 16 scene: (make-scene tilemap: level)
+                              render: (lambda (game) (draw-sprite 4 8 8 space: 'screen flip-x?: #t))))
+(game-run! sprite-hud frames: 1)
+(capture-of sprite-hud)
+(test-assert "draw-sprite draws a gid of the scene's map, flipped" (tile-drawn? sprite-hud 8 8 3 #t #f #f))
+
+(test-assert "draw-rect outside a game's drawing names itself"
+  (mentions? (error-text (lambda () (draw-rect 0 0 1 1))) "draw-rect" "render:"))
+(define (error-in-render proc)
+  (let ((game (make-game width: 8 height: 8 render: (lambda (game) (proc)))))
+    (error-text (lambda () (game-run! game frames: 1)))))
+(test-assert "a bad colour is named"
+  (mentions? (error-in-render (lambda () (draw-rect 0 0 1 1 '(300 0 0)))) "draw-rect" "color" "(300 0 0)"))
+(test-assert "an unknown colour name is named"
+  (mentions? (error-in-render (lambda () (draw-line 0 0 1 1 'mauve))) "draw-line" "mauve"))
+(test-assert "a bad space is named"
+  (mentions? (error-in-render (lambda () (draw-text "x" 0 0 'white space: 'hud))) "draw-text" "space" "hud"))
+(test-assert "NaN coordinates are refused"
+  (mentions? (error-in-render (lambda () (draw-rect +nan.0 0 1 1))) "draw-rect" "x" "+nan.0"))
+(test-assert "a bad sprite gid is named"
+  (mentions? (error-in-render (lambda () (draw-sprite -1 0 0))) "draw-sprite" "gid" "-1"))
+
+;;; ---------------------------------------------------------------- entities and maps that cannot be drawn
+(test-assert "a bad #:sprite is named by key and value"
+  (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8
+                                                             scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 1 #:height 1 #:sprite "hero"))))
+                                                  (string-append dir "/x.png"))))
+             "#:sprite" "\"hero\""))
+(define no-image (load-tilemap (string-append data "/maps/render/no-image.tmx")))
+(test-assert "a map whose image is missing loads (physics needs no images)" (tilemap? no-image))
+(test-assert "… and drawing it names the missing file"
+  (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8 scene: (make-scene tilemap: no-image))
+                                                  (string-append dir "/y.png"))))
+             "absent.png"))
+(test-assert "game-capture to a folder that does not exist names the file"
+  (mentions? (error-text (lambda () (game-capture g "/nonexistent-dir/z.png"))) "game-capture" "/nonexistent-dir/z.png"))
+(test-assert "make-game refuses a width of 0"
+  (mentions? (error-text (lambda () (make-game width: 0))) "make-game" "width" "0"))
+
+;;; ---------------------------------------------------------------- --capture
+(define capture-dir (string-append dir "/frames"))
+(define status (status:exit-val (system* host "--capture" capture-dir
+                                         (string-append data "/scripts/capture-game.scm") "4")))
+(test-equal "downstroke --capture runs the script" 0 status)
+(test-equal "… writing one PNG per frame, named by frame number"
+  '("000000.png" "000001.png" "000002.png" "000003.png")
+  (sort (filter (lambda (f) (string-suffix? ".png" f)) (scandir capture-dir)) string<?))
+(test-equal "… each the game's size, unscaled" '(48 32) (png-size (string-append capture-dir "/000003.png")))
+(test-equal "--window and --capture together are refused" 2
+  (status:exit-val (system* host "--window" "--capture" capture-dir "x.scm")))
+(test-equal "--help exits 0" 0 (status:exit-val (system* host "--help")))
+
+;;; ---------------------------------------------------------------- input
+(test-assert "the default input map binds every action games use"
+  (lset<= eq? '(left right up down a b start select quit) (map car (default-input-map))))
+(test-assert "an input map naming no key is refused, naming it"
+  (mentions? (error-text (lambda () (make-game input-map: '((jump "NoSuchKey"))))) "make-game" "NoSuchKey"))
+(test-assert "a malformed input map is refused"
+  (mentions? (error-text (lambda () (make-game input-map: '(("jump" "Z"))))) "make-game" "input-map"))
+(test-assert "an input map of keys and pads is accepted"
+  (game? (make-game input-map: '((jump "Space" "pad:a") (left "Left" "pad:leftx-")))))
+
+;;; The input log of a run replays it: the same scene, frame for frame.
+(define (walker script)
+  (make-game scene: (make-scene entities: (list '(#:id w #:x 0 #:y 0 #:width 4 #:height 4 #:vx 0)))
+             input-script: script
+             update: (lambda (game dt)
+                       (let* ((s (game-scene game)) (e (car (scene-entities s)))
+                              (in (game-input game)))
+                         (game-scene-set! game (update-scene s entities:
+                                                             (list (entity-set e #:vx (cond ((input-held? in 'right) 2)
+                                                                                            ((input-held? in 'left) -1)
+                                                                                            (else 0))))))))))
+(define played (walker '((0 . ()) (3 . (right)) (7 . (left right)) (9 . (left)) (12 . ()))))
+(game-run! played frames: 15)
+(define log (game-input-log played))
+(test-equal "the input log has one entry per frame" 15 (length log))
+(test-equal "… holding what was held" '(() () () (right) (right)) (list-head log 5))
+(define replayed (walker (input-log->script log)))
+(game-run! replayed frames: 15)
+(test-equal "replaying the log gives the same scene" (scene-entities (game-scene played))
+  (scene-entities (game-scene replayed)))
+
+;;; ---------------------------------------------------------------- sounds
+(define tone (string-append data "/sounds/tone.ogg"))
+(load-sound 'jump (string-append demo-dir "/sounds/jump.wav"))
+(load-sound 'tone tone)
+(define noisy (make-game update: (lambda (game dt) (when (= (game-frame game) 2) (play-sound 'jump)))))
+(game-run! noisy frames: 4)
+(test-equal "headless, a loaded sound is recorded with its frame" '((2 . jump)) (game-sounds noisy))
+(test-assert "a missing sound file is named"
+  (mentions? (error-text (lambda () (load-sound 'x (string-append dir "/none.wav")))) "load-sound" "none.wav"))
+(test-assert "a directory is not a sound"
+  (mentions? (error-text (lambda () (load-sound 'x dir))) "load-sound" dir))
+(test-assert "a sound's name must be a symbol"
+  (mentions? (error-text (lambda () (load-sound "x" tone))) "load-sound" "name"))
+
+(test-end "render")
