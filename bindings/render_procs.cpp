@@ -425,7 +425,7 @@ SCM poll_input(SCM display) {
     int toggles = 0;
     if (d && d->window) {
         guarded(f, nullptr, [&] { d->window->poll(d->input); });
-        held = d->input.held();
+        held = d->input.take_held();
         quit = d->input.quit_requested();
         toggles = d->input.take_debug_toggles();
     }

@@ -118,7 +118,16 @@ void InputState::set_bindings(std::vector<Binding> bindings) {
 
 void InputState::set_down(Binding::Kind kind, int32_t code, bool down) {
     for (size_t i = 0; i < bindings_.size(); ++i)
-        if (bindings_[i].kind == kind && bindings_[i].code == code) down_[i] = down;
+        if (bindings_[i].kind == kind && bindings_[i].code == code) {
+            down_[i] = down;
+            if (down && bindings_[i].action < kMaxActions) tapped_ |= uint64_t{1} << bindings_[i].action;
+        }
+}
+
+uint64_t InputState::take_held() {
+    const uint64_t bits = held() | tapped_;
+    tapped_ = 0;
+    return bits;
 }
 
 void InputState::handle_key(const SDL_KeyboardEvent& k) {
@@ -198,6 +207,9 @@ uint64_t InputState::held() const {
 
 int InputState::take_debug_toggles() { return std::exchange(debug_toggles_, 0); }
 
-void InputState::release_all() { std::fill(down_.begin(), down_.end(), 0); }
+void InputState::release_all() {
+    std::fill(down_.begin(), down_.end(), 0);
+    tapped_ = 0;
+}
 
 }  // namespace ds::render

@@ -53,6 +53,10 @@ public:
     void handle(const SDL_Event& e);
     // Bit a set: action a is held by at least one of its inputs.
     uint64_t held() const;
+    // held(), plus every action that went down since the last call even if
+    // it is up again: a tap shorter than one frame (both events in one poll)
+    // still holds its action for a frame instead of vanishing.
+    uint64_t take_held();
     // The window's close button (SDL_QUIT or a window close event) was used.
     bool quit_requested() const { return quit_; }
     // How many times F1 went down since the last call (the debug overlay's toggle).
@@ -74,6 +78,7 @@ private:
     std::vector<SDL_GameController*> pads_;
     bool quit_ = false;
     int debug_toggles_ = 0;
+    uint64_t tapped_ = 0;  // actions that went down since take_held()
 };
 
 }  // namespace ds::render

@@ -152,6 +152,21 @@ TEST_CASE("a key holds its action from down to up; repeats change nothing") {
     CHECK(in.held() == 0);
 }
 
+TEST_CASE("a tap inside one poll still holds its action for that poll") {
+    InputState in;
+    in.set_bindings(bind({{"Escape", 8}, {"Left", 0}}));
+    in.handle(key(SDL_KEYDOWN, SDLK_ESCAPE));
+    in.handle(key(SDL_KEYUP, SDLK_ESCAPE));
+    CHECK(in.held() == 0);
+    CHECK(in.take_held() == (uint64_t{1} << 8));
+    CHECK(in.take_held() == 0);  // only once
+    in.handle(key(SDL_KEYDOWN, SDLK_LEFT));
+    CHECK(in.take_held() == 1);
+    CHECK(in.take_held() == 1);  // still down: still held
+    in.handle(key(SDL_KEYUP, SDLK_LEFT));
+    CHECK(in.take_held() == 0);
+}
+
 TEST_CASE("two keys on one action: letting go of one keeps it held") {
     InputState in;
     in.set_bindings(bind({{"Left", 0}, {"A", 0}, {"Right", 1}}));
