@@ -5,8 +5,9 @@ The outputs are checked in; the build never runs this. Standard library only.
 Run it from anywhere:
     python3 demo/maps/make_maps.py
 
-Every map is orthogonal with 16x16 tiles and uses the one external tileset
-written here, demo-tiles.tsx (over tiles.png, 4 tiles in a row). Solidity is
+Every map is orthogonal with 16x16 tiles and uses the external tileset
+written here, demo-tiles.tsx (over tiles.png, 4 tiles in a row), then
+sprites.tsx (written by make_art.py) for the entities' pictures. Solidity is
 tile metadata: a <properties><property name="solid" type="bool" value="true"/>
 on the tile. Levels are drawn below as ASCII, one character a cell:
 
@@ -28,6 +29,10 @@ import zlib
 HERE = os.path.dirname(os.path.abspath(__file__))
 TILE = 16
 GIDS = {".": 0, "#": 1, "W": 2, "=": 3, '"': 4}
+# sprites.tsx (16x16 frames, written by make_art.py) follows demo-tiles.tsx in
+# every map, so that entities can take a #:sprite gid from the map's tilesets:
+# (+ SPRITES_FIRSTGID local-id). No cell uses it.
+SPRITES_FIRSTGID = 1 + 4  # demo-tiles.tsx's firstgid + its tilecount
 
 TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 <tileset version="1.10" tiledversion="1.10.2" name="demo-tiles" tilewidth="16" tileheight="16" tilecount="4" columns="4">
@@ -185,6 +190,7 @@ def tmx(rows, encoding, objects=(), title=""):
   <property name="title" value="{title}"/>
  </properties>
  <tileset firstgid="1" source="demo-tiles.tsx"/>
+ <tileset firstgid="{SPRITES_FIRSTGID}" source="sprites.tsx"/>
  <layer id="1" name="tiles" width="{width}" height="{height}">
 {data_element(gids, width, encoding)}
  </layer>
