@@ -1,9 +1,10 @@
-;;; A real window: `downstroke --window --scale 2' under Xvfb, the Right
-;;; arrow held with xdotool (the X server's own key events, through SDL's
-;;; keyboard path and the default input map), a screenshot of the whole
-;;; display with xwd, read back here: the window shows the game's picture
-;;; scaled ×2 pixel-exactly with the box where the held key walked it; then
-;;; Escape quits. Every wait is bounded.
+;;; A real window: `downstroke --window --scale 2 --repl-server S' under
+;;; Xvfb, the Right arrow held with xdotool (the X server's own key events,
+;;; through SDL's keyboard path and the default input map), a screenshot of
+;;; the whole display with xwd, read back here: the window shows the game's
+;;; picture scaled ×2 pixel-exactly with the box where the held key walked
+;;; it; a change made from the REPL shows in the next screenshot; then Escape
+;;; quits. Every wait is bounded.
 (use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 rdelim) (ice-9 binary-ports) (rnrs bytevectors))
 
 (load "support.scm")
@@ -67,7 +68,9 @@
 (test-assert "Xvfb starts" (wait-for (lambda () (file-exists? (format #f "/tmp/.X11-unix/X~a" display-number))) 10))
 
 (define out (pipe))
-(define game (spawn host (list "--window" "--scale" "2" game-script) (port->fdes (cdr out))))
+(define socket-path (string-append dir "/repl.sock"))
+(define game (spawn host (list "--window" "--scale" "2" "--repl-server" socket-path game-script)
+                    (port->fdes (cdr out))))
 (close-port (cdr out))
 (define from-game (car out))
 
@@ -78,9 +81,12 @@
 (test-equal "holding Right walks the box to x = 20" "arrived" (read-line-within from-game 20))
 (system* "xdotool" "keyup" "Right")
 (usleep 300000)  ; a few more frames drawn
-(define shot-file (string-append dir "/screen.xwd"))
-(test-equal "xwd takes a screenshot" 0 (status:exit-val (system* "sh" "-c" (string-append "xwd -root -silent > " shot-file))))
-(define shot (xwd-pixels shot-file))
+(define (screenshot name)
+  (let ((file (string-append dir "/" name)))
+    (and (zero? (status:exit-val (system* "sh" "-c" (string-append "xwd -root -silent > " file))))
+         (xwd-pixels file))))
+(define shot (screenshot "screen.xwd"))
+(test-assert "xwd takes a screenshot" shot)
 (test-equal "the display is 320 × 240" '(320 240) (list-head shot 2))
 
 ;; Find the window: the picture's background, 64 × 48 scaled ×2, centred.
@@ -92,6 +98,8 @@
           (else (search y (+ x 1))))))
 (test-assert "the window shows the game's red bar" origin)
 (define (canvas-pixel cx cy)
+  (canvas-pixel-of shot cx cy))
+(define (canvas-pixel-of shot cx cy)
   ;; The screen's 2 × 2 block for canvas pixel (cx, cy), if all four agree.
   (let* ((x (+ (car origin) (* 2 cx))) (y (+ (cdr origin) (* 2 cy)))
          (block (list (screen-pixel shot x y) (screen-pixel shot (+ x 1) y)
@@ -106,6 +114,21 @@
   (test-equal "… and not where it started" background (canvas-pixel 4 21))
   (test-equal "every canvas pixel is one 2 × 2 block: a pixel-exact scale" #t
     (every (lambda (cy) (every (lambda (cx) (and (canvas-pixel cx cy) #t)) (iota 64))) (iota 48))))
+
+;; The REPL moves the box; the next frame drawn shows it.
+(define client
+  (let ((s (socket PF_UNIX SOCK_STREAM 0)))
+    (and (wait-for (lambda () (false-if-exception (begin (connect s AF_UNIX socket-path) #t))) 10) s)))
+(test-assert "the REPL server of the windowed game accepts a client" client)
+(when client
+  (display "(game-scene-set! game (scene-map-entities (game-scene game) (lambda (e) (entity-set e #:x 40))))\n" client)
+  (force-output client)
+  (usleep 500000)
+  (let ((after (screenshot "after-repl.xwd")))
+    (test-equal "the REPL's change shows in the window: the box at x 40" '(80 220 100)
+      (and after origin (canvas-pixel-of after 40 20)))
+    (test-equal "… and no longer at x 20" background (and after origin (canvas-pixel-of after 20 21))))
+  (close-port client))
 
 (system* "xdotool" "key" "Escape")
 (test-equal "Escape quits the game" "quit" (read-line-within from-game 20))
