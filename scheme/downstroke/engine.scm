@@ -166,11 +166,9 @@ a tile step's axis, not solid, not in a group). It is the last step-scene run
 on this thread, which for a running game is its own last frame. A last
 row (render drawn culled ms) says what drawing the last frame cost: tiles,
 sprites, boxes and commands drawn, entities outside the view, and time
-(zeros until a frame is drawn, and absent in a build without the renderer)."
+(zeros until a frame is drawn, and always in a build without the renderer)."
   (let ((display (game-display game)))
-    (if display
-        (append (%frame-stats) (list (%display-stats display)))
-        (%frame-stats))))
+    (append (%frame-stats) (list (if display (%display-stats display) '(render 0 0 0.0))))))
 
 ;;; Memory against time: how often the collector runs. A frame of a big scene
 ;;; allocates fresh plist heads, and each collection marks the whole live

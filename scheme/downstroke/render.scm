@@ -73,5 +73,10 @@ starts a line 9 × SCALE lower."
 (define (load-sound name file)
   "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.
 Headless runs decode it too (so a bad file is found at once) but play
-nothing. A missing, unreadable or undecodable file is an error naming it."
-  (%load-sound name file))
+nothing. A missing, unreadable or undecodable file is an error naming it.
+In a build without the renderer it only checks that FILE is a file."
+  (cond ((renderer-available?) (%load-sound name file))
+        ((not (symbol? name))
+         (scm-error 'wrong-type-arg "load-sound" "name: expected a symbol, got ~S" (list name) #f))
+        ((not (and (string? file) (file-exists? file) (eq? 'regular (stat:type (stat file)))))
+         (scm-error 'misc-error "load-sound" "sound ~S: no such file" (list file) #f))))
