@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 #include "font.hpp"
 #include "render_error.hpp"
@@ -20,6 +21,29 @@ uint32_t pack(Rgba c) {
 
 uint8_t mix(uint8_t src, uint8_t dst, uint8_t a) {
     return static_cast<uint8_t>((src * a + dst * (255 - a) + 127) / 255);
+}
+
+// Whether SDL would blit `p` onto the canvas as a plain copy of its pixels
+// (opaque, same format, nothing modulated). SDL 2's copy uses non-temporal
+// stores for 16-byte-aligned rows, made for large blits: they push the
+// canvas out of the cache, and a frame of 16×16 tiles and sprites then goes
+// to memory (a 16×16 blit to an x divisible by 4 took ~290 ns, ~60 ns at
+// other x; SDL 2.26). Such pictures are copied row by row here instead.
+bool plain_copy(SDL_Surface* p, uint8_t alpha) {
+    SDL_BlendMode mode;
+    Uint8 a, r, g, b;
+    return alpha == 255 && p->format->format == SDL_PIXELFORMAT_ARGB8888 && !SDL_MUSTLOCK(p) &&
+           SDL_GetSurfaceBlendMode(p, &mode) == 0 && mode == SDL_BLENDMODE_NONE && !SDL_HasColorKey(p) &&
+           SDL_GetSurfaceAlphaMod(p, &a) == 0 && a == 255 && SDL_GetSurfaceColorMod(p, &r, &g, &b) == 0 &&
+           r == 255 && g == 255 && b == 255;
+}
+
+// One row of pixels, in 16-byte pieces the compiler inlines: a call to
+// memcpy for each 64-byte row of a tile costs more than the copy itself.
+void copy_row(uint8_t* to, const uint8_t* from, size_t bytes) {
+    size_t i = 0;
+    for (; i + 16 <= bytes; i += 16) std::memcpy(to + i, from + i, 16);
+    for (; i < bytes; i += 4) std::memcpy(to + i, from + i, 4);
 }
 
 }  // namespace
@@ -146,6 +170,16 @@ void Canvas::text(int x, int y, std::string_view s, Rgba c, int scale) {
 
 void Canvas::blit(SDL_Surface* picture, int x, int y, uint8_t alpha) {
     if (!picture) return;
+    if (plain_copy(picture, alpha)) {
+        const int x0 = std::max(x, 0), y0 = std::max(y, 0);
+        const int x1 = static_cast<int>(std::min<long>(long(x) + picture->w, width()));
+        const int y1 = static_cast<int>(std::min<long>(long(y) + picture->h, height()));
+        for (int py = y0; py < y1; ++py)
+            copy_row(static_cast<uint8_t*>(surface_->pixels) + py * surface_->pitch + x0 * 4,
+                     static_cast<const uint8_t*>(picture->pixels) + (py - y) * picture->pitch + (x0 - x) * 4,
+                     size_t(std::max(x1 - x0, 0)) * 4);
+        return;
+    }
     SDL_Rect dst{x, y, picture->w, picture->h};
     if (alpha != 255) SDL_SetSurfaceAlphaMod(picture, alpha);
     SDL_BlitSurface(picture, nullptr, surface_, &dst);
