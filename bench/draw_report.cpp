@@ -17,6 +17,7 @@ const char* const kEnd = "# END downstroke-bench drawing";
 
 std::string side(int cells) { return std::to_string(cells) + "²"; }
 std::string ratio(double r) { return r < 0 ? "-" : sig3(r) + "×"; }
+std::string ratios(const Row& r) { return r.ratio < 0 ? "-" : ratio(r.ratio) + ", " + ratio(r.min_ratio); }
 std::string ms(double v) { return sig3(v) + " ms"; }
 
 std::string cell(std::string s) {
@@ -75,14 +76,17 @@ std::string section(const Document& d) {
       << d.frames << " timed frames.\n"
          "tiles/frame and sprites/frame count the pictures blitted (a sprite up to\n"
          "256 px off the canvas is blitted and clipped by SDL); × " << side(kMapSide)
-      << " is the median over\n"
-         "the " << side(kMapSide) << " map-size case's.\n\n";
+      << " is the median and\n"
+         "the min over those of the " << side(kMapSide)
+      << " map-size case. Map-size independence is judged\n"
+         "on the min: the VM's other tenants move medians far more than minima,\n"
+         "and a cost that grew with the map would be in every frame.\n\n";
     o << org_row({"case", "map", "sprites", "camera crosses", "frames", "tiles/frame", "sprites/frame",
-                  "median ms", "min ms", "× " + side(kMapSide)})
+                  "median ms", "min ms", "× " + side(kMapSide) + " (median, min)"})
       << "|-\n";
     for (const Row& r : d.rows)
         o << org_row({r.name, side(r.map_side), r.sprites, r.camera, std::to_string(r.frames), sig3(r.tiles),
-                      sig3(r.drawn), sig3(r.stats.median_ms), sig3(r.stats.min_ms), ratio(r.ratio)});
+                      sig3(r.drawn), sig3(r.stats.median_ms), sig3(r.stats.min_ms), ratios(r)});
     o << "\n" << org_row({"goal", "measured", "met?"}) << "|-\n";
     for (const Goal& g : d.goals) o << org_row({g.name, g.measured, g.met ? "yes" : "no"});
     o << "\n" << kEnd << "\n";
@@ -100,26 +104,26 @@ std::vector<Goal> judge(const std::vector<Row>& rows) {
         goals.push_back({"≤ " + ms(kGoalMs) + " per drawn frame (median), every case",
                          "slowest: " + worst->name + ", " + ms(worst->stats.median_ms),
                          worst->stats.median_ms <= kGoalMs});
-    Goal sizes{"map size costs nothing outside the view (within " + sig3(kSizeTolerance * 100) + " % of " +
-                   side(kMapSide) + ")",
+    Goal sizes{"map size costs nothing outside the view (fastest frame within " + sig3(kSizeTolerance * 100) +
+                   " % of " + side(kMapSide) + "'s)",
                "", true};
     for (const Row& r : rows) {
         if (r.size_case == 0 || r.size_case == kMapSide) continue;
-        sizes.measured += (sizes.measured.empty() ? "" : ", ") + side(r.size_case) + ": " + ratio(r.ratio);
-        sizes.met = sizes.met && r.ratio > 0 && std::abs(r.ratio - 1) <= kSizeTolerance;
+        sizes.measured += (sizes.measured.empty() ? "" : ", ") + side(r.size_case) + ": " + ratio(r.min_ratio) +
+                          " (median " + ratio(r.ratio) + ")";
+        sizes.met = sizes.met && r.min_ratio > 0 && std::abs(r.min_ratio - 1) <= kSizeTolerance;
     }
     if (!sizes.measured.empty()) goals.push_back(sizes);
     return goals;
 }
 
 void print_rows(std::FILE* out, const std::vector<Row>& rows) {
-    std::fprintf(out, "%-14s %-6s %-22s %-16s %6s %11s %13s %10s %8s %7s\n", "case", "map", "sprites", "camera",
-                 "frames", "tiles/frame", "sprites/frame", "median ms", "min ms", "x 1000");
+    std::fprintf(out, "%-14s %-6s %-22s %-16s %6s %11s %13s %10s %8s %s\n", "case", "map", "sprites", "camera",
+                 "frames", "tiles/frame", "sprites/frame", "median ms", "min ms", "× 1000² (median, min)");
     for (const Row& r : rows)
-        std::fprintf(out, "%-14s %-6d %-22s %-16s %6d %11s %13s %10s %8s %7s\n", r.name.c_str(), r.map_side,
+        std::fprintf(out, "%-14s %-6d %-22s %-16s %6d %11s %13s %10s %8s %s\n", r.name.c_str(), r.map_side,
                      r.sprites.c_str(), r.camera.c_str(), r.frames, sig3(r.tiles).c_str(), sig3(r.drawn).c_str(),
-                     sig3(r.stats.median_ms).c_str(), sig3(r.stats.min_ms).c_str(),
-                     r.ratio < 0 ? "-" : (sig3(r.ratio) + "x").c_str());
+                     sig3(r.stats.median_ms).c_str(), sig3(r.stats.min_ms).c_str(), ratios(r).c_str());
     std::fflush(out);
 }
 

@@ -12,9 +12,11 @@ namespace bench::draw {
 
 // The goal: a drawn frame's median at most this, on the 2-core machine.
 constexpr double kGoalMs = 4.0;
-// Map-size independence holds when the other sizes' medians are within this
-// share of the 1000 × 1000 map's: alternated blocks keep the VM's drift
-// between them below it, and a cost that grew with the map would not be.
+// Map-size independence holds when the other sizes' fastest frames are
+// within this share of the 1000 × 1000 map's. The fastest, not the median:
+// other tenants of the VM moved one case's median by up to 27 % against an
+// identical one in the same run while the minima agreed to 1 %, and a cost
+// that grew with the map would be in every frame, the fastest included.
 constexpr double kSizeTolerance = 0.10;
 
 struct Row {
@@ -27,7 +29,8 @@ struct Row {
     int frames = 0;       // timed, over all rounds
     Stats stats;
     double tiles = 0, drawn = 0;  // tiles and sprites drawn per frame, mean
-    double ratio = -1;            // median / the 1000 × 1000 map-size case's (< 0: n/a)
+    // Median and min over the 1000 × 1000 map-size case's (< 0: not a map-size case).
+    double ratio = -1, min_ratio = -1;
 };
 
 struct Goal {
