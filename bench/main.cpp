@@ -1,11 +1,13 @@
 // downstroke-bench: how long one physics frame takes, per scene × N × path
 // (speed, the default mode); how each demo's memory behaves over many frames
-// (soak, soak.cpp); run time against error (accuracy, accuracy.cpp).
+// (soak, soak.cpp); run time against error (accuracy, accuracy.cpp); how
+// long the renderer takes to draw a frame (draw, draw.cpp).
 //
 //   downstroke-bench [speed] [--scene S] [--n N] [--path P] [--frames F]
 //                    [--warmup W] [--json FILE] [--org FILE]
 //   downstroke-bench soak [--frames N] [--org FILE]
 //   downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]
+//   downstroke-bench draw [--frames F] [--warmup W] [--rounds R] [--org FILE]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -14,6 +16,7 @@
 #include <stdexcept>
 
 #include "accuracy.hpp"
+#include "draw.hpp"
 #include "guile_boot.hpp"
 #include "isolate.hpp"
 #include "options.hpp"
@@ -198,6 +201,14 @@ int main(int argc, char** argv) {
     try {
         if (argc > 1 && std::string(argv[1]) == "child") return bench::child_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "accuracy") return bench::accuracy_main(argc, argv);
+        if (argc > 1 && std::string(argv[1]) == "draw") {
+#if DS_BENCH_HAVE_RENDER
+            return bench::draw_main(argc, argv);
+#else
+            std::fputs("downstroke-bench: draw needs the renderer, and SDL2 was not found at configure time\n", stderr);
+            return 2;
+#endif
+        }
         const bench::Options opts = bench::parse_options(argc, argv);
         if (opts.help) {
             std::fputs(bench::usage().c_str(), stdout);
@@ -205,7 +216,7 @@ int main(int argc, char** argv) {
         }
         if (opts.mode == "soak") return bench::soak(opts);
         if (opts.mode != "speed") {
-            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy)\n", opts.mode.c_str());
+            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw)\n", opts.mode.c_str());
             return 2;
         }
         return bench::speed(opts);

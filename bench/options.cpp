@@ -74,6 +74,7 @@ std::string usage() {
     return "usage: downstroke-bench [speed] [options]   how long a frame takes\n"
            "       downstroke-bench soak [--frames N] [--org FILE]   memory of each demo over N frames\n"
            "       downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]   run time against error\n"
+           "       downstroke-bench draw [--frames F] [--warmup W] [--rounds R] [--org FILE]   one drawn frame\n"
            "speed options:\n"
            "  --scene S[,S…]   rain crowd rest bullets platformer (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"
