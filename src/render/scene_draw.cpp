@@ -150,11 +150,6 @@ void draw_overlay(Canvas& c, const SceneView& v, int64_t cx, int64_t cy) {
 
 }  // namespace
 
-int64_t pixel_of(double world) {
-    if (!std::isfinite(world)) return 0;
-    return static_cast<int64_t>(std::floor(std::clamp(world, -4.0e15, 4.0e15)));
-}
-
 CellWindow visible_cells(const TileLayer& layer, int tile_w, int tile_h, int64_t view_x,
                          int64_t view_y, int view_w, int view_h, int over_w, int over_h) {
     CellWindow w;

@@ -45,7 +45,12 @@ CellWindow visible_cells(const TileLayer& layer, int tile_w, int tile_h, int64_t
                          int64_t view_y, int view_w, int view_h, int over_w, int over_h);
 
 // The camera's pixel: positions are floored once, so a tile and an entity
-// standing on it move together by whole pixels.
-int64_t pixel_of(double world);
+// standing on it move together by whole pixels. Inline and without libm:
+// a frame asks it four times for every entity in the scene, in view or not.
+inline int64_t pixel_of(double world) {
+    if (!(world > -4.0e15 && world < 4.0e15)) return world >= 4.0e15 ? int64_t(4e15) : world <= -4.0e15 ? -int64_t(4e15) : 0;
+    const auto t = static_cast<int64_t>(world);  // toward zero, exact here
+    return t > world ? t - 1 : t;
+}
 
 }  // namespace ds::render
