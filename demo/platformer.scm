@@ -149,9 +149,12 @@ running on the ground."
            (player (dress player wanted on-ground? (game-frame game))))
       (game-scene-set! game (update-scene scene entities: (list player))))))
 
-(define (shadowed-text text x y color . scale)
-  ;; Text on the screen with a dark shadow, legible over sky and bricks alike.
-  (let ((scale (if (pair? scale) (car scale) 1)))
+(define (hud-text text x y color . scale)
+  ;; Text on the screen on a translucent dark plate, with a shadow: legible
+  ;; over any tile.
+  (let* ((scale (if (pair? scale) (car scale) 1))
+         (w (* 6 scale (string-length text))))
+    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
     (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
     (draw-text text x y color #:scale scale #:space 'screen)))
 
@@ -164,12 +167,12 @@ running on the ground."
          (seconds (/ (* (game-frame-delay game) (- (or goal-frame frame) start-frame)) 1000.)))
     (draw-sprite goal-flag (entity-ref goal #:x)
                  (- (+ (entity-ref goal #:y) (entity-ref goal #:height)) 16))
-    (shadowed-text (format #f "TIME ~,1f" seconds) 4 4 'white)
+    (hud-text (format #f "TIME ~,1f" seconds) 4 4 'white)
     (cond (reached-goal?
-           (shadowed-text "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow 3)
-           (shadowed-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
+           (hud-text "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow 3)
+           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
           ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
-           (shadowed-text "ARROWS RUN   Z JUMP   GET TO THE FLAG"
+           (hud-text "ARROWS RUN   Z JUMP   GET TO THE FLAG"
                           (centred-x "ARROWS RUN   Z JUMP   GET TO THE FLAG" 1 (game-width game))
                           (- (game-height game) 12) 'white)))))
 
