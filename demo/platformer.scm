@@ -7,9 +7,14 @@
 ;;; engine-update; the camera follows the player (camera-target: 'player).
 ;;; Reaching the goal object of the map plays 'goal.
 ;;;
+;;; Keys (in a window): Left/Right or A/D run, Z or Space jumps, Return
+;;; starts again, Escape quits.
+;;;
 ;;; Run: build/bin/downstroke demo/platformer.scm
 ;;; Headless: it plays the built-in input script below for `demo-frames'
 ;;; frames and prints a line every 20 frames plus one per event.
+;;; In a window (downstroke --window demo/platformer.scm) it runs until the
+;;; player quits.
 ;;; Loaded from elsewhere (tests/scheme/demos-test.scm) it only defines
 ;;; `game', `run!', `events', `history' and friends.
 (use-modules (ice-9 format) (srfi srfi-1))
@@ -20,6 +25,21 @@
         (else "demo")))
 
 (define level (load-tilemap (string-append demo-dir "/maps/platformer.tmx")))
+
+;;; ------------------------------------------------------------ looks and sounds
+;;; The map's tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
+(define (sprite local-id) (+ 5 local-id))
+(define player-standing (sprite 0))
+(define player-running (sprite 1))
+(define player-jumping (sprite 2))
+(define goal-flag (sprite 11))
+
+;;; The sounds update plays. Headless runs only record play-sound's calls
+;;; (game-sounds); a build without the renderer has no sounds to load.
+(when (renderer-available?)
+  (for-each (lambda (name)
+              (load-sound name (string-append demo-dir "/sounds/" (symbol->string name) ".wav")))
+            '(jump goal)))
 
 (define (map-object name)
   (or (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects level))
@@ -62,12 +82,42 @@ the last 1000."
 (define was-blocked? #f)
 (define last-wanted 0)                  ; the #:vx asked for last frame
 (define reached-goal? #f)
+(define start-frame 0)                  ; the frame the run (re)started at
+(define goal-frame #f)                  ; the frame the goal was reached at
+
+(define (dress player wanted on-ground? frame)
+  "PLAYER with its picture: facing the way it last ran (#:flip-x? mirrors the
+right-facing sprite), the jump frame in the air, a two-frame run cycle while
+running on the ground."
+  (let ((left? (cond ((negative? wanted) #t)
+                     ((positive? wanted) #f)
+                     (else (entity-ref player #:flip-x? #f)))))
+    (entity-set (entity-set player #:flip-x? left?)
+                #:sprite (cond ((not on-ground?) player-jumping)
+                               ((zero? wanted) player-standing)
+                               ((even? (quotient frame 6)) player-running)
+                               (else player-standing)))))
+
+(define (restart! game)
+  ;; Return in a window: the player back at the spawn point, the clock at 0.
+  (set! was-on-ground? #f)
+  (set! was-blocked? #f)
+  (set! last-wanted 0)
+  (set! reached-goal? #f)
+  (set! start-frame (+ (game-frame game) 1))
+  (set! goal-frame #f)
+  (game-scene-set! game (update-scene (game-scene game) entities: (list (dress player0 0 #f 0)))))
 
 (define (overlaps? a b)
   (aabb-overlap? (entity-ref a #:x 0) (entity-ref a #:y 0) (entity-ref a #:width 0) (entity-ref a #:height 0)
                  (entity-ref b #:x 0) (entity-ref b #:y 0) (entity-ref b #:width 0) (entity-ref b #:height 0)))
 
 (define (update game dt)
+  (if (input-pressed? (game-input game) 'start)
+      (restart! game)
+      (play! game dt)))
+
+(define (play! game dt)
   ;; Physics has already run this frame: #:on-ground? and #:x are resolved.
   (let* ((input (game-input game))
          (scene (game-scene game))
@@ -85,6 +135,7 @@ the last 1000."
     (when (and blocked? (not was-blocked?)) (note! game 'bumped))
     (when (and (not reached-goal?) (overlaps? player goal))
       (set! reached-goal? #t)
+      (set! goal-frame (game-frame game))
       (play-sound 'goal)
       (note! game 'goal))
     (set! was-on-ground? on-ground?)
@@ -94,12 +145,42 @@ the last 1000."
       (play-sound 'jump)
       (note! game 'jumped))
     (let* ((player (entity-set player #:vx wanted))
-           (player (if jump? (entity-set player #:ay (- *jump-force*)) player)))
+           (player (if jump? (entity-set player #:ay (- *jump-force*)) player))
+           (player (dress player wanted on-ground? (game-frame game))))
       (game-scene-set! game (update-scene scene entities: (list player))))))
+
+(define (hud-text text x y color . scale)
+  ;; Text on the screen on a translucent dark plate, with a shadow: legible
+  ;; over any tile.
+  (let* ((scale (if (pair? scale) (car scale) 1))
+         (w (* 6 scale (string-length text))))
+    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
+    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
+    (draw-text text x y color #:scale scale #:space 'screen)))
+
+(define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
+
+(define (draw! game)
+  ;; The goal flag (a map object, not an entity) and the HUD; the player is
+  ;; drawn by the engine from its #:sprite.
+  (let* ((frame (game-frame game))
+         (seconds (/ (* (game-frame-delay game) (- (or goal-frame frame) start-frame)) 1000.)))
+    (draw-sprite goal-flag (entity-ref goal #:x)
+                 (- (+ (entity-ref goal #:y) (entity-ref goal #:height)) 16))
+    (hud-text (format #f "TIME ~,1f" seconds) 4 4 'white)
+    (cond (reached-goal?
+           (hud-text "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow 3)
+           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
+          ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
+           (hud-text "ARROWS RUN   Z JUMP   GET TO THE FLAG"
+                          (centred-x "ARROWS RUN   Z JUMP   GET TO THE FLAG" 1 (game-width game))
+                          (- (game-height game) 12) 'white)))))
 
 (define (render game)
   ;; Runs after camera-follow! (which keeps the view inside the map).
-  ;; Headless "rendering": remember the player, print a line every 20 frames.
+  ;; Draws the goal and the HUD (when the game has a display), remembers the
+  ;; player and, headless, prints a line every 20 frames.
+  (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (player (car (scene-entities (game-scene game))))
         (camera (scene-camera (game-scene game))))
@@ -140,7 +221,8 @@ the last 1000."
   (game-run! game frames: frames))
 
 (when (main-script? "platformer.scm")
-  (run! (script-number-argument 0 demo-frames))
+  ;; Headless or capturing: the scripted demo; in a window: until the player quits.
+  (run! (script-number-argument 0 (if (eq? (display-mode) 'window) #f demo-frames)))
   (format #t "sounds: ~s~%" (game-sounds game))
   (format #t "camera: (~a, ~a)~%" (camera-x (scene-camera (game-scene game)))
           (camera-y (scene-camera (game-scene game)))))

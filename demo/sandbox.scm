@@ -11,9 +11,15 @@
 ;;;   wall stopped them, i.e. when the tile collision left their #:vx at 0.
 ;;; update: only runs that per-entity logic, through scene-map-entities.
 ;;;
+;;; Keys (in a window): Left/Right or A/D move the dropper along the top,
+;;; Z or Space drops a crate from it, Return puts everything back, Escape
+;;; quits.
+;;;
 ;;; Run: build/bin/downstroke demo/sandbox.scm
 ;;; Headless: it runs `demo-frames' frames (no input needed) and prints a line
 ;;; every 20 frames plus one per event.
+;;; In a window (downstroke --window demo/sandbox.scm) it runs until the
+;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
 
 (define demo-dir
@@ -23,18 +29,35 @@
 
 (define arena (load-tilemap (string-append demo-dir "/maps/sandbox.tmx")))
 
+;;; ------------------------------------------------------------ looks
+;;; The map's tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
+(define (sprite local-id) (+ 5 local-id))
+(define walker-picture (sprite 3))
+(define walker-step-picture (sprite 4))
+(define crate-picture (sprite 9))
+(define flag-picture (sprite 11))
+(define platform-picture (sprite 12))   ; a 16×8 piece, in the bottom half of its 16×16 frame
+
 ;;; ------------------------------------------------------------ entities
 (define (platform id x y w)
-  (list #:id id #:kind 'platform #:x x #:y y #:width w #:height 8 #:solid? #t #:immovable? #t))
+  ;; Drawn as a row of platform pieces (see draw-platforms!).
+  (list #:id id #:kind 'platform #:x x #:y y #:width w #:height 8 #:solid? #t #:immovable? #t
+        #:sprite platform-picture))
 
 (define (box id x y)
   (list #:id id #:kind 'box #:x x #:y y #:width 12 #:height 12 #:vx 0 #:vy 0
-        #:gravity? #t #:solid? #t #:on-ground? #f))
+        #:gravity? #t #:solid? #t #:on-ground? #f #:sprite crate-picture))
 
 (define (bot id x vx)
   ;; Standing on the floor (its top at y 208).
-  (list #:id id #:kind 'bot #:x x #:y (- 208 14) #:width 12 #:height 14 #:vx vx #:vy 0
-        #:speed (abs vx) #:gravity? #t #:solid? #t #:on-ground? #t))
+  (dress-bot (list #:id id #:kind 'bot #:x x #:y (- 208 14) #:width 12 #:height 14 #:vx vx #:vy 0
+                   #:speed (abs vx) #:gravity? #t #:solid? #t #:on-ground? #t)))
+
+(define (dress-bot e)
+  "The bot E with its picture: a two-frame walk, mirrored (#:flip-x?) while
+it walks left."
+  (entity-set (entity-set e #:flip-x? (negative? (entity-ref e #:vx 0)))
+              #:sprite (if (even? (quotient (entity-ref e #:x) 6)) walker-picture walker-step-picture)))
 
 (define raft-speed 1)
 (define raft-min-x 256)
@@ -42,7 +65,7 @@
 
 (define (plank id local-x origin?)
   (append (list #:id id #:kind 'raft #:x (+ raft-min-x local-x) #:y 160 #:width 16 #:height 8
-                #:solid? #t #:immovable? #t #:group-id 'raft)
+                #:solid? #t #:immovable? #t #:group-id 'raft #:sprite platform-picture)
           (if origin?
               (list #:group-origin? #t #:vx raft-speed)
               (list #:group-local-x local-x #:group-local-y 0))))
@@ -51,9 +74,9 @@
   (list (plank 'raft-0 0 #t)
         (plank 'raft-1 16 #f)
         (plank 'raft-2 32 #f)
-        ;; The mast: not solid, carried along all the same.
+        ;; The mast: not solid, carried along all the same; a flag flies on it.
         (list #:id 'mast #:kind 'raft #:x (+ raft-min-x 22) #:y 140 #:width 4 #:height 20
-              #:group-id 'raft #:group-local-x 22 #:group-local-y -20)))
+              #:group-id 'raft #:group-local-x 22 #:group-local-y -20 #:sprite flag-picture)))
 
 ;;; Order matters for stacks: resolve-entity-collisions makes one pass over
 ;;; the pairs in list order, and in the pair (lower, upper) the earlier body
@@ -107,10 +130,10 @@ one of the last 1000."
               ;; A wall zeroed #:vx: walk the other way.
               (begin
                 (note! game (list 'turned (entity-ref e #:id) 'at (entity-ref e #:x)))
-                (entity-set (entity-set e #:dir (- dir)) #:vx (* (- dir) speed)))
+                (dress-bot (entity-set (entity-set e #:dir (- dir)) #:vx (* (- dir) speed))))
               ;; Keep the patrol speed (a push from another body may change it).
               (let ((dir (if (negative? vx) -1 1)))
-                (entity-set (entity-set e #:dir dir) #:vx (* dir speed)))))
+                (dress-bot (entity-set (entity-set e #:dir dir) #:vx (* dir speed))))))
         e)))
 
 (define (raft-logic game)
@@ -137,12 +160,86 @@ one of the last 1000."
                 (note! game (list 'landed (entity-ref e #:id) 'y (entity-ref e #:y)))))
             (scene-entities (game-scene game))))
 
+;;; The player's part (in a window; headless runs hold nothing): a dropper
+;;; that moves along the top and drops crates, and a reset.
+(define dropper-x 234)                  ; where a dropped crate's left edge starts
+(define dropper-y 18)
+(define dropper-speed 3)
+(define max-dropped 24)                 ; beyond that the oldest dropped crate goes
+(define dropped 0)                      ; crates dropped so far
+
+(define (drop-crate entities)
+  ;; ENTITIES with a crate under the dropper, unless something is in the way.
+  (let ((free? (not (any (lambda (e) (aabb-overlap? dropper-x dropper-y 12 12
+                                                    (entity-ref e #:x 0) (entity-ref e #:y 0)
+                                                    (entity-ref e #:width 0) (entity-ref e #:height 0)))
+                         entities))))
+    (if (not free?)
+        entities
+        (let* ((old (filter (lambda (e) (entity-ref e #:dropped? #f)) entities))
+               (entities (if (>= (length old) max-dropped) (delete (car old) entities eq?) entities)))
+          (set! dropped (+ dropped 1))
+          (append entities
+                  (list (append (box (string->symbol (format #f "crate-~a" dropped)) dropper-x dropper-y)
+                                (list #:dropped? #t))))))))
+
+(define (player-input! game)
+  (let ((input (game-input game)) (scene (game-scene game)))
+    (cond ((input-pressed? input 'start)
+           (set! landed '())
+           (game-scene-set! game (update-scene scene entities: entities0)))
+          (else
+           (set! dropper-x (max 16 (min (- 464 12)
+                                        (+ dropper-x (if (input-held? input 'left) (- dropper-speed) 0)
+                                           (if (input-held? input 'right) dropper-speed 0)))))
+           (when (input-pressed? input 'a)
+             (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene)))))))))
+
 (define (update game dt)
   ;; The default engine-update has moved everything; now the game's own logic.
   (watch-boxes! game)
-  (game-scene-set! game (scene-map-entities (game-scene game) (bot-logic game) (raft-logic game))))
+  (game-scene-set! game (scene-map-entities (game-scene game) (bot-logic game) (raft-logic game)))
+  (player-input! game))
+
+(define (hud-text text x y color . scale)
+  ;; Text on the screen on a translucent dark plate, with a shadow: legible
+  ;; over any tile.
+  (let* ((scale (if (pair? scale) (car scale) 1))
+         (w (* 6 scale (string-length text))))
+    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
+    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
+    (draw-text text x y color #:scale scale #:space 'screen)))
+
+(define (draw-platforms! entities)
+  ;; An immovable platform is wider than one piece: a row of them along it
+  ;; (each 16×8 piece sits in the bottom half of its frame).
+  (for-each (lambda (e)
+              (when (eq? (entity-ref e #:kind) 'platform)
+                (let ((x (entity-ref e #:x)) (y (entity-ref e #:y)))
+                  (for-each (lambda (k) (draw-sprite platform-picture (+ x (* 16 k)) (- y 8)))
+                            (iota (quotient (entity-ref e #:width) 16))))))
+            entities))
+
+(define (draw! game)
+  ;; The crates, bots and raft are drawn by the engine from their #:sprite.
+  (let* ((entities (scene-entities (game-scene game)))
+         (boxes (filter (lambda (e) (eq? (entity-ref e #:kind) 'box)) entities))
+         (at-rest (count (lambda (e) (memq (entity-ref e #:id) landed)) boxes))
+         (hint "ARROWS MOVE   Z DROP A CRATE   RETURN RESET"))
+    (draw-platforms! entities)
+    ;; The dropper: where the next crate appears, and an arrow down.
+    (draw-rect dropper-x dropper-y 12 12 '(250 220 70 200))
+    (draw-line (+ dropper-x 6) (+ dropper-y 3) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
+    (draw-line (+ dropper-x 4) (+ dropper-y 6) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
+    (draw-line (+ dropper-x 8) (+ dropper-y 6) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
+    (hud-text (format #f "CRATES ~a   LANDED ~a" (length boxes) at-rest) 4 4 'white)
+    (hud-text hint (- (game-width game) 4 (* 6 (string-length hint))) 4 'white)))
 
 (define (render game)
+  ;; Draws the platforms, the dropper and the HUD (when the game has a
+  ;; display), remembers the entities and, headless, prints a line every 20
+  ;; frames.
+  (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
     (remember! frame entities)
@@ -168,5 +265,6 @@ one of the last 1000."
   (game-run! game frames: frames))
 
 (when (main-script? "sandbox.scm")
-  (run! (script-number-argument 0 demo-frames))
+  ;; Headless or capturing: the demo's frames; in a window: until the player quits.
+  (run! (script-number-argument 0 (if (eq? (display-mode) 'window) #f demo-frames)))
   (format #t "(* marks #:on-ground?)~%"))

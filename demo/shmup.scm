@@ -7,10 +7,42 @@
 ;;; they pass through nothing and are checked by hand, as the physics doc
 ;;; advises.
 ;;;
+;;; The scene's map, demo/maps/shmup.tmx, has no tiles at all: it is there
+;;; for its tilesets, which the entities' #:sprite gids refer to. The stars
+;;; are drawn by render.
+;;;
+;;; Keys (in a window): Left/Right or A/D steer, Z or Space fires (one shot
+;;; a press), Return starts a new game, Escape quits.
+;;;
 ;;; Run: build/bin/downstroke demo/shmup.scm
 ;;; Headless: it plays the built-in input script for `demo-frames' frames and
 ;;; prints a line every 20 frames plus one per event.
+;;; In a window (downstroke --window demo/shmup.scm) it runs until the
+;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
+
+(define demo-dir
+  (cond ((current-filename) => dirname)
+        ((getenv "DS_DEMO_DIR"))
+        (else "demo")))
+
+;;; ------------------------------------------------------------ looks and sounds
+;;; No solid tile, no camera-target: the map changes nothing but what gids mean.
+(define backdrop (load-tilemap (string-append demo-dir "/maps/shmup.tmx")))
+;;; Its tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
+(define (sprite local-id) (+ 5 local-id))
+(define ship-picture (sprite 5))
+(define enemy-picture (sprite 6))
+(define enemy-flap-picture (sprite 7))
+(define bullet-picture (sprite 8))
+(define explosion-picture (sprite 15))
+
+;;; The sounds update plays. Headless runs only record play-sound's calls
+;;; (game-sounds); a build without the renderer has no sounds to load.
+(when (renderer-available?)
+  (for-each (lambda (name)
+              (load-sound name (string-append demo-dir "/sounds/" (symbol->string name) ".wav")))
+            '(shot boom)))
 
 (define screen-width 320)
 (define screen-height 240)
@@ -18,12 +50,13 @@
 (define bullet-speed 6)
 
 (define ship0
-  (list #:id 'ship #:kind 'ship #:x 154 #:y 216 #:width 12 #:height 12 #:score 0))
+  (list #:id 'ship #:kind 'ship #:x 154 #:y 216 #:width 12 #:height 12 #:score 0
+        #:sprite ship-picture))
 
 (define (enemy row col)
   (list #:id (string->symbol (format #f "enemy-~a-~a" row col)) #:kind 'enemy
         #:x (+ 40 (* 48 col)) #:y (+ 40 (* 24 row)) #:width 16 #:height 12
-        #:vx 1 #:vy 0 #:points (if (= row 0) 200 100)))
+        #:vx 1 #:vy 0 #:points (if (= row 0) 200 100) #:sprite enemy-picture))
 
 (define enemies0
   (append-map (lambda (row) (map (lambda (col) (enemy row col)) (iota 5))) (iota 2)))
@@ -65,7 +98,7 @@ one of the last 1000."
   (set! shots (+ shots 1))
   (list #:id (string->symbol (format #f "bullet-~a" shots)) #:kind 'bullet
         #:x (+ (entity-ref ship #:x) 5) #:y (- (entity-ref ship #:y) 6) #:width 2 #:height 6
-        #:vx 0 #:vy (- bullet-speed)))
+        #:vx 0 #:vy (- bullet-speed) #:sprite bullet-picture))
 
 (define (turn-formation enemies)
   ;; The formation turns round as one when any of it reaches a screen edge.
@@ -76,7 +109,28 @@ one of the last 1000."
       (map (lambda (e) (entity-set e #:vx (- (entity-ref e #:vx)))) enemies)
       enemies))
 
+;;; Explosions are only drawn: (x y until-frame) of each enemy shot down,
+;;; kept out of the scene so they touch nothing.
+(define explosions '())
+(define explosion-frames 12)
+
+(define (flap enemies frame)
+  ;; The formation beats its wings together, every 8 frames.
+  (let ((picture (if (even? (quotient frame 8)) enemy-picture enemy-flap-picture)))
+    (map (lambda (e) (entity-set e #:sprite picture)) enemies)))
+
+(define (restart! game)
+  ;; Return in a window: a new game, the ship and the whole formation back.
+  (set! explosions '())
+  (game-scene-set! game (update-scene (game-scene game) entities: (cons ship0 enemies0))))
+
 (define (update game dt)
+  (set! explosions (filter (lambda (x) (> (caddr x) (game-frame game))) explosions))
+  (if (input-pressed? (game-input game) 'start)
+      (restart! game)
+      (play! game dt)))
+
+(define (play! game dt)
   (let* ((input (game-input game))
          (scene (game-scene game))
          (entities (scene-entities scene))
@@ -86,7 +140,7 @@ one of the last 1000."
          (move (lambda (e) (apply-velocity e scene dt)))
          ;; Old bullets move; a new one starts where it was fired.
          (bullets (append (map move (filter (kind-of 'bullet) entities)) new-bullets))
-         (enemies (turn-formation (map move (filter (kind-of 'enemy) entities)))))
+         (enemies (flap (turn-formation (map move (filter (kind-of 'enemy) entities))) (game-frame game))))
     (when fire?
       (play-sound 'shot)
       (note! game (list 'fired (entity-ref (car new-bullets) #:id) 'x (entity-ref (car new-bullets) #:x))))
@@ -102,10 +156,67 @@ one of the last 1000."
         => (lambda (hit)
              (play-sound 'boom)
              (note! game (list 'hit (entity-ref hit #:id) 'by (entity-ref (car bullets) #:id)))
+             (set! explosions (cons (list (entity-ref hit #:x) (entity-ref hit #:y)
+                                          (+ (game-frame game) explosion-frames))
+                                    explosions))
              (loop (cdr bullets) (delete hit enemies eq?) kept (+ score (entity-ref hit #:points)))))
        (else (loop (cdr bullets) enemies (cons (car bullets) kept) score))))))
 
+(define (hud-text text x y color . scale)
+  ;; Text on the screen on a translucent dark plate, with a shadow.
+  (let* ((scale (if (pair? scale) (car scale) 1))
+         (w (* 6 scale (string-length text))))
+    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
+    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
+    (draw-text text x y color #:scale scale #:space 'screen)))
+
+(define (centred-x text scale) (quotient (- screen-width (* 6 scale (string-length text))) 2))
+
+;;; Stars: fixed columns, drifting down at three speeds (half, one and one
+;;; and a half pixels a frame), the faster the brighter.
+(define star-count 48)
+(define star-colors '#((70 78 110) (120 130 165) (210 215 235)))
+
+(define (behind-sprite? x y entities)
+  ;; Whether (X, Y) is inside an entity's 16×16 picture (centred on its box,
+  ;; bottom-aligned): a star is drawn over the sprites, so it skips those.
+  (any (lambda (e)
+         (let ((left (+ (entity-ref e #:x) (quotient (- (entity-ref e #:width) 16) 2)))
+               (top (- (+ (entity-ref e #:y) (entity-ref e #:height)) 16)))
+           (and (<= left x (+ left 15)) (<= top y (+ top 15)))))
+       entities))
+
+(define (draw-stars! frame entities)
+  (for-each (lambda (i)
+              (let* ((speed (modulo i 3))
+                     (x (modulo (+ 13 (* i 97)) screen-width))
+                     (y (modulo (+ (* i 61) (quotient (* frame (+ speed 1)) 2)) screen-height)))
+                (unless (behind-sprite? x y entities)
+                  (draw-rect x y 1 1 (vector-ref star-colors speed) #:fill? #t))))
+            (iota star-count)))
+
+(define (draw! game)
+  ;; The ship, the enemies and the bullets are drawn by the engine from
+  ;; their #:sprite; the stars, the explosions and the HUD here.
+  (let* ((frame (game-frame game))
+         (entities (scene-entities (game-scene game)))
+         (ship (find (kind-of 'ship) entities))
+         (left (count (kind-of 'enemy) entities)))
+    (draw-stars! frame entities)
+    (for-each (lambda (x) (draw-sprite explosion-picture (car x) (- (cadr x) 4))) explosions)
+    (hud-text (format #f "SCORE ~a" (entity-ref ship #:score)) 4 4 'white)
+    (let ((enemies (format #f "ENEMIES ~a" left)))
+      (hud-text enemies (- screen-width 4 (* 6 (string-length enemies))) 4 'green))
+    (cond ((zero? left)
+           (hud-text "WAVE CLEARED!" (centred-x "WAVE CLEARED!" 2) 90 'yellow 2)
+           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1) 116 'white))
+          ((< frame 240)                ; the first 4 s: how to play
+           (hud-text "ARROWS MOVE   Z FIRE" (centred-x "ARROWS MOVE   Z FIRE" 1) 4 'white)))))
+
 (define (render game)
+  ;; Draws the stars, explosions and HUD (when the game has a display),
+  ;; remembers the entities and, headless, prints a line every 20 frames.
+  (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
     (remember! frame entities)
@@ -137,7 +248,7 @@ one of the last 1000."
 (define game
   (make-game title: "Downstroke — shmup" width: screen-width height: screen-height frame-delay: 16
              engine-update: #f
-             scene: (make-scene entities: (cons ship0 enemies0))
+             scene: (make-scene entities: (cons ship0 enemies0) tilemap: backdrop)
              update: update render: render
              input-script: input-script))
 
@@ -146,6 +257,7 @@ one of the last 1000."
   (game-run! game frames: frames))
 
 (when (main-script? "shmup.scm")
-  (run! (script-number-argument 0 demo-frames))
+  ;; Headless or capturing: the scripted demo; in a window: until the player quits.
+  (run! (script-number-argument 0 (if (eq? (display-mode) 'window) #f demo-frames)))
   (format #t "score: ~a, shots: ~a, sounds: ~s~%"
           (entity-ref (car (scene-entities (game-scene game))) #:score) shots (game-sounds game)))

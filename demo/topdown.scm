@@ -6,9 +6,14 @@
 ;;; and the coins come from the map's object layer; walking over a coin
 ;;; (aabb-overlap?) collects it.
 ;;;
+;;; Keys (in a window): the arrows or WASD walk (diagonals too), Return
+;;; starts again, Escape quits.
+;;;
 ;;; Run: build/bin/downstroke demo/topdown.scm
 ;;; Headless: it plays the built-in input script for `demo-frames' frames and
 ;;; prints a line every 20 frames plus one per event.
+;;; In a window (downstroke --window demo/topdown.scm) it runs until the
+;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
 
 (define demo-dir
@@ -17,6 +22,18 @@
         (else "demo")))
 
 (define room (load-tilemap (string-append demo-dir "/maps/topdown.tmx")))
+
+;;; ------------------------------------------------------------ looks and sounds
+;;; The map's tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
+(define (sprite local-id) (+ 5 local-id))
+(define player-standing (sprite 0))
+(define player-walking (sprite 1))
+(define coin-picture (sprite 10))
+
+;;; The sound update plays. Headless runs only record play-sound's calls
+;;; (game-sounds); a build without the renderer has no sounds to load.
+(when (renderer-available?)
+  (load-sound 'coin (string-append demo-dir "/sounds/coin.wav")))
 
 ;;; Map objects → entities. Object ids are Tiled's numbers; the game names
 ;;; entities by symbols instead.
@@ -34,7 +51,8 @@
     (append (object->entity spawn)
             (list #:speed (entity-ref spawn #:speed 3) #:vx 0 #:vy 0 #:gravity? #f #:score 0))))
 
-(define coins0 (map object->entity (objects-of-type 'coin)))
+(define coins0
+  (map (lambda (o) (append (object->entity o) (list #:sprite coin-picture))) (objects-of-type 'coin)))
 
 ;;; ------------------------------------------------------------ bookkeeping
 ;;; Both records are bounded (see (downstroke history)), so that a game left
@@ -83,7 +101,33 @@ one of the last 1000."
                         'y (entity-ref player #:y))))
     (set! blocked (cons bx? by?))))
 
+(define (dress player vx vy frame)
+  "PLAYER with its picture: facing the way it last walked sideways
+(#:flip-x? mirrors the right-facing sprite), a two-frame walk while moving."
+  (let ((left? (cond ((negative? vx) #t)
+                     ((positive? vx) #f)
+                     (else (entity-ref player #:flip-x? #f)))))
+    (entity-set (entity-set player #:flip-x? left?)
+                #:sprite (if (and (or (not (zero? vx)) (not (zero? vy))) (even? (quotient frame 6)))
+                             player-walking
+                             player-standing))))
+
+(define start-frame 0)                  ; the frame the run (re)started at
+
+(define (restart! game)
+  ;; Return in a window: the player back at its spawn point, every coin back.
+  (set! last-intent '(0 . 0))
+  (set! blocked '(#f . #f))
+  (set! start-frame (+ (game-frame game) 1))
+  (game-scene-set! game (update-scene (game-scene game)
+                                      entities: (cons (dress player0 0 0 0) coins0))))
+
 (define (update game dt)
+  (if (input-pressed? (game-input game) 'start)
+      (restart! game)
+      (play! game dt)))
+
+(define (play! game dt)
   (let* ((input (game-input game))
          (scene (game-scene game))
          (player (car (scene-entities scene)))
@@ -100,11 +144,43 @@ one of the last 1000."
     (set! last-intent (cons vx vy))
     (let* ((player (entity-set player #:score (fold + (entity-ref player #:score 0)
                                                      (map (lambda (c) (entity-ref c #:value 1)) taken))))
-           (player (entity-set (entity-set player #:vx vx) #:vy vy)))
+           (player (entity-set (entity-set player #:vx vx) #:vy vy))
+           (player (dress player vx vy (game-frame game))))
       (game-scene-set! game (update-scene scene entities:
                                           (cons player (remove (lambda (c) (memq c taken)) coins)))))))
 
+(define (hud-text text x y color . scale)
+  ;; Text on the screen on a translucent dark plate, with a shadow: legible
+  ;; over any tile.
+  (let* ((scale (if (pair? scale) (car scale) 1))
+         (w (* 6 scale (string-length text))))
+    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
+    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
+    (draw-text text x y color #:scale scale #:space 'screen)))
+
+(define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
+
+(define (draw-hud! game)
+  ;; The player and the coins are drawn by the engine from their #:sprite.
+  (let* ((entities (scene-entities (game-scene game)))
+         (left (length (cdr entities)))
+         (total (length coins0))
+         (width (game-width game)))
+    (hud-text (format #f "SCORE ~a" (entity-ref (car entities) #:score 0)) 4 4 'white)
+    (let ((coins (format #f "COINS ~a/~a" (- total left) total)))
+      (hud-text coins (- width 4 (* 6 (string-length coins))) 4 'yellow))
+    (cond ((zero? left)
+           (hud-text "ALL COINS!" (centred-x "ALL COINS!" 3 width) 90 'yellow 3)
+           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 width) 120 'white))
+          ((< (- (game-frame game) start-frame) 240)   ; the first 4 s: how to play
+           (hud-text "ARROWS WALK - PICK UP EVERY COIN"
+                          (centred-x "ARROWS WALK - PICK UP EVERY COIN" 1 width)
+                          (- (game-height game) 12) 'white)))))
+
 (define (render game)
+  ;; Draws the HUD (when the game has a display), remembers the entities
+  ;; and, headless, prints a line every 20 frames.
+  (when (current-display) (draw-hud! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
     (remember! frame entities)
@@ -146,6 +222,7 @@ one of the last 1000."
   (game-run! game frames: frames))
 
 (when (main-script? "topdown.scm")
-  (run! (script-number-argument 0 demo-frames))
+  ;; Headless or capturing: the scripted demo; in a window: until the player quits.
+  (run! (script-number-argument 0 (if (eq? (display-mode) 'window) #f demo-frames)))
   (format #t "score: ~a, sounds: ~s~%" (entity-ref (car (scene-entities (game-scene game))) #:score)
           (game-sounds game)))

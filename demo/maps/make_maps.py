@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Regenerates the Tiled maps of the demos (demo/*.scm) under demo/maps/.
+"""Regenerates the Tiled maps of the demos (demo/*.scm) under demo/maps/
+(all but level1.tmx, which demo/fall.scm and the tests load as it is).
 
 The outputs are checked in; the build never runs this. Standard library only.
 Run it from anywhere:
@@ -139,6 +140,15 @@ SANDBOX = [
     "W############################W",  # 14
 ]
 
+# ---------------------------------------------------------------- shmup, tweens
+# 20x15, the screen's size, and no tile at all: demo/shmup.scm and
+# demo/tweens.scm load these only for the tilesets, so that their entities
+# can take a #:sprite gid. A map with no solid cell adds no collision (tweens'
+# engine-update steps tile collisions against it; shmup has no physics
+# pass), and neither scene has a camera-target, so the map's size clamps no
+# camera.
+EMPTY_SCREEN = ["." * 20] * 15
+
 
 def gids_of(rows):
     width = len(rows[0])
@@ -208,6 +218,8 @@ def main():
     write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer"))
     write("topdown.tmx", tmx(TOPDOWN, "base64", TOPDOWN_OBJECTS, "top-down"))
     write("sandbox.tmx", tmx(SANDBOX, "zlib", (), "sandbox"))
+    write("shmup.tmx", tmx(EMPTY_SCREEN, "csv", (), "shmup"))
+    write("tweens.tmx", tmx(EMPTY_SCREEN, "csv", (), "tweens"))
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Regenerates the demos' sound effects: jump.wav, goal.wav, hit.wav, coin.wav.
+"""Regenerates the demos' sound effects: jump.wav, goal.wav, hit.wav, coin.wav,
+and shmup's shot.wav and boom.wav.
 
 The outputs are checked in; the build never runs this. Run it from anywhere:
     python3 demo/sounds/make_sounds.py
@@ -99,6 +100,37 @@ def hit():
     return render(0.18, sample)
 
 
+def shot():
+    """A laser blip: a narrow pulse sweeping down three octaves, 0.12 s."""
+    phase = [0.0]
+
+    def sample(t, frac):
+        freq = 1600 * 2 ** (-3 * frac)
+        phase[0] += freq / RATE
+        return (1.0 if phase[0] % 1.0 < 0.125 else -1.0) * (1 - 0.7 * frac)
+
+    return render(0.12, sample)
+
+
+def boom():
+    """An explosion: slow, dull noise over a falling low square, 0.3 s."""
+    lfsr = noise_source()
+    held = [0.0, 0.0]
+    phase = [0.0]
+
+    def sample(t, frac):
+        rate = 3000 * (1 - frac) + 200
+        held[1] -= 1 / RATE
+        if held[1] <= 0:
+            held[0] = next(lfsr)
+            held[1] = 1 / rate
+        phase[0] += (120 - 80 * frac) / RATE
+        rumble = 1.0 if phase[0] % 1.0 < 0.5 else -1.0
+        return (0.75 * held[0] + 0.25 * rumble) * math.exp(-3 * frac)
+
+    return render(0.3, sample)
+
+
 def write(name, samples):
     path = os.path.join(HERE, name)
     with wave.open(path, "wb") as w:
@@ -114,3 +146,5 @@ if __name__ == "__main__":
     write("coin.wav", coin())
     write("goal.wav", goal())
     write("hit.wav", hit())
+    write("shot.wav", shot())
+    write("boom.wav", boom())

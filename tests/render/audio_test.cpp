@@ -169,7 +169,7 @@ TEST_CASE("a failed load leaves the earlier sound of that name; a good one repla
 TEST_CASE("the demos' sound effects all decode") {
     SoundBank bank(false);
     const fs::path sounds = fs::path(DS_TEST_DATA) / ".." / ".." / "demo" / "sounds";
-    for (const char* name : {"jump", "goal", "hit", "coin"}) {
+    for (const char* name : {"jump", "goal", "hit", "coin", "shot", "boom"}) {
         CAPTURE(name);
         bank.load(name, (sounds / (std::string(name) + ".wav")).string());
         CHECK(bank.play(name));

@@ -80,7 +80,21 @@ demos' top-level names stay in that module."
     (test-assert "sandbox: the ledge (row 7, columns 24-27)" (solid-cells? m (row-cells (range 24 28) 7)))
     (test-assert "sandbox: open around the ledge" (empty-cells? m (list '(23 . 7) '(28 . 7) '(25 . 6) '(25 . 8))))
     (test-equal "sandbox: grass not solid" '(4 #f) (list (tilemap-gid m 0 5 12) (tilemap-cell-solid? m 5 12)))
-    (test-equal "sandbox: no objects" '() (tilemap-objects m))))
+    (test-equal "sandbox: no objects" '() (tilemap-objects m)))
+  ;; Maps loaded only for their tilesets (the entities' #:sprite gids): not
+  ;; one tile, so they add no collision.
+  (for-each
+   (lambda (name)
+     (let ((m (tilemap name)))
+       (test-equal (string-append name ": 20×15 of 16 px, the screen's size") '(20 15 16 16)
+         (list (tilemap-width m) (tilemap-height m) (tilemap-tile-width m) (tilemap-tile-height m)))
+       (test-assert (string-append name ": no tile in any cell, so none solid")
+         (every (lambda (row)
+                  (every (lambda (col) (and (= 0 (tilemap-gid m 0 col row)) (not (tilemap-cell-solid? m col row))))
+                         (range 0 20)))
+                (range 0 15)))
+       (test-equal (string-append name ": no objects") '() (tilemap-objects m))))
+   '("shmup" "tweens")))
 
 ;;; Loading does not run a demo: each runs itself only as the host's script.
 (let ((m (load-demo "platformer.scm")))
