@@ -173,7 +173,7 @@ one of the last 1000."
 ;;; the 5×7 font).
 (define labels
   '((20 31 "SLIDER: LINEAR, CUBIC BACK")
-    (252 22 "FADER: SQRT")
+    (186 38 "FADER: SQRT")
     (152 58 "REPEATER: X3")
     (100 96 "PULSE: SINE YOYO")
     (72 161 "BOUNCER: BOUNCE-OUT")

@@ -10,17 +10,19 @@ mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# demo frame [extra arguments for the demo]
+# capture DEMO FRAME [NAME [HOST OPTIONS…]]
 capture() {
-  local demo=$1 frame=$2
-  shift 2
-  build/bin/downstroke --capture "$tmp/$demo" "demo/$demo.scm" "$@" >/dev/null
-  cp "$tmp/$demo/$(printf '%06d' "$frame").png" "$out/$demo.png"
-  echo "docs/images/$demo.png: frame $frame of demo/$demo.scm"
+  local demo=$1 frame=$2 name=${3:-$1}
+  shift $(( $# < 3 ? $# : 3 ))
+  build/bin/downstroke "$@" --capture "$tmp/$name" "demo/$demo.scm" >/dev/null
+  cp "$tmp/$name/$(printf '%06d' "$frame").png" "$out/$name.png"
+  echo "docs/images/$name.png: frame $frame of demo/$demo.scm $*"
 }
 
-capture platformer 140
-capture topdown 120
-capture sandbox 200
-capture shmup 150
-capture tweens 60
+capture platformer 70
+capture topdown 60
+capture sandbox 60
+capture shmup 24
+capture tweens 14
+capture fall 45
+capture sandbox 60 sandbox-debug --debug

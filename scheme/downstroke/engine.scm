@@ -113,10 +113,12 @@ default-input-map, which is used when it is #f."
   (check-substeps "make-game" substeps)
   (let ((display (and (renderer-available?) (%make-display width height))))
     (when display (%display-set-input-map! display (or input-map (default-input-map))))
-    (%make-game title width height frame-delay scene update render engine-update
-                collision-mode substeps (and resting-contacts? #t)
-                (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)
-                display #f '())))
+    (let ((game (%make-game title width height frame-delay scene update render engine-update
+                            collision-mode substeps (and resting-contacts? #t)
+                            (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)
+                            display #f '())))
+      (when (debug-draw-default) (game-debug-draw-set! game #t))
+      game)))
 
 ;;; ---------------------------------------------------------------- time travel
 ;;; Scenes are values, so keeping the past costs one pointer per frame.

@@ -76,6 +76,7 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --window            show the game in a window: real time, keyboard and
                       controllers, sound (closing it quits; F1: debug overlay)
   --scale N           the window's whole scale factor (default: fit the screen)
+  --debug             start with the debug overlay on (F1 toggles it in a window)
   --capture DIR       headless, and draw every frame off-screen into
                       DIR/NNNNNN.png (NNNNNN: the frame number)
   --repl-server PATH  serve a REPL into the game on a Unix socket (mode 0600)
@@ -97,6 +98,7 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
     (cond ((null? args) (cons (reverse opts) '()))
           ((string=? (car args) "--window") (loop (cdr args) (acons 'window #t opts)))
           ((string=? (car args) "--help") (loop (cdr args) (acons 'help #t opts)))
+          ((string=? (car args) "--debug") (loop (cdr args) (acons 'debug #t opts)))
           ((string=? (car args) "--scale")
            (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
           ((string=? (car args) "--capture") (with-value 'capture string?))
@@ -110,6 +112,7 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   ;; #f when the options cannot be honoured (said on the error port).
   (let ((window? (assq-ref opts 'window))
         (capture (assq-ref opts 'capture)))
+    (when (assq-ref opts 'debug) (debug-draw-default #t))
     (cond ((and window? capture)
            (display "downstroke: --window and --capture exclude each other\n" (current-error-port))
            #f)

@@ -2,7 +2,7 @@
 ;;; and how the host asked frames to be shown (headless, a window, captures).
 (define-module (downstroke render)
   #:use-module (downstroke native)
-  #:export (renderer-available? display-mode capture-directory window-scale
+  #:export (renderer-available? display-mode capture-directory window-scale debug-draw-default
             current-display default-input-map
             draw-rect draw-line draw-sprite draw-text
             color-rgba load-sound))
@@ -18,6 +18,8 @@
 (define capture-directory (make-parameter #f))
 ;; --scale N: the window's whole scale factor; 0 fits the screen.
 (define window-scale (make-parameter 0))
+;; --debug: every game starts with the debug overlay on.
+(define debug-draw-default (make-parameter #f))
 
 ;; The display of the game being run: where draw-* queue their commands.
 (define current-display (make-parameter #f))
