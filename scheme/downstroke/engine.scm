@@ -68,7 +68,7 @@
   (history game-history-log game-history-log-set!)  ; a bounded log of (frame . scene)
   (display game-display)            ; the renderer's, or #f in a build without it
   (debug-draw game-debug-draw? %game-debug-draw-set!)
-  (input-log %game-input-log %game-input-log-set!))  ; ((frame . held) …) at each change, newest first
+  (input-log %game-input-log %game-input-log-set!))  ; a bounded log of (frame . held) at each change
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -116,7 +116,7 @@ default-input-map, which is used when it is #f."
     (let ((game (%make-game title width height frame-delay scene update render engine-update
                             collision-mode substeps (and resting-contacts? #t)
                             (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)
-                            display #f '())))
+                            display #f (make-bounded-log))))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       game)))
 
@@ -290,24 +290,35 @@ every frame whose set of held actions differs from the frame before."
 
 (export input-held-actions input-log->script)
 
+;; A game played for hours must not keep every change of input: the log
+;; keeps at least the newest 65536 changes (at a change every few frames,
+;; an hour or more of play), so a long run stays in bounded memory.
+(define *input-changes-kept* 65536)
+
 (define (game-input-log game)
-  "The actions held in each frame played so far, from frame 0 on (one list
-per frame): give it to input-log->script to replay a played session
-headless, frame for frame."
-  (let loop ((changes (%game-input-log game)) (frame (game-frame game)) (acc '()))
+  "The actions held in each frame played so far, one list per frame, from
+frame 0 on (or, after a very long run, from the oldest change still kept):
+give it to input-log->script to replay a played session headless, frame
+for frame."
+  (let loop ((changes (bounded-log-items (%game-input-log game))) (frame (game-frame game)) (acc '()))
     ;; CHANGES is newest first: each (start . held) holds from START on.
-    (cond ((null? changes) (append (make-list (max 0 frame) '()) acc))
+    ;; The first change is frame 0's, unless the oldest were dropped.
+    (cond ((null? changes) acc)
           (else
            (let* ((start (caar changes)) (n (max 0 (- frame start))))
              (loop (cdr changes) (min frame start) (append (make-list n (cdar changes)) acc)))))))
 
 (define (record-input! game frame held)
-  (let ((log (%game-input-log game)))
-    ;; A rewind replays from an earlier frame: forget what came after it.
-    (let ((log (drop-while (lambda (e) (>= (car e) frame)) log)))
-      (%game-input-log-set! game (if (and (pair? log) (lset= eq? (cdar log) held))
-                                     log
-                                     (cons (cons frame held) log))))))
+  (let* ((log (%game-input-log game))
+         (items (bounded-log-items log))
+         ;; A rewind replays from an earlier frame: forget what came after it.
+         (log (if (and (pair? items) (>= (caar items) frame))
+                  (list->bounded-log (drop-while (lambda (e) (>= (car e) frame)) items))
+                  log))
+         (newest (bounded-log-items log)))
+    (%game-input-log-set! game (if (and (pair? newest) (lset= eq? (cdar newest) held))
+                                   log
+                                   (bounded-log-push log (cons frame held) *input-changes-kept*)))))
 
 ;;; ---------------------------------------------------------------- drawing
 
