@@ -29,13 +29,21 @@ uint8_t mix(uint8_t src, uint8_t dst, uint8_t a) {
 // canvas out of the cache, and a frame of 16×16 tiles and sprites then goes
 // to memory (a 16×16 blit to an x divisible by 4 took ~290 ns, ~60 ns at
 // other x; SDL 2.26). Such pictures are copied row by row here instead.
-bool plain_copy(SDL_Surface* p, uint8_t alpha) {
+// How blit() may draw a picture itself rather than through SDL: a plain
+// copy (opaque, as every tile of an RGB image), a blend by each pixel's
+// alpha (a sprite sheet: through SDL it took 5.0 ms for 10k sprites in
+// view, against 2.9 ms here), or neither (any other setting: SDL does it).
+enum class Fast { No, Copy, Blend };
+Fast fast_kind(SDL_Surface* p, uint8_t alpha) {
     SDL_BlendMode mode;
     Uint8 a, r, g, b;
-    return alpha == 255 && p->format->format == SDL_PIXELFORMAT_ARGB8888 && !SDL_MUSTLOCK(p) &&
-           SDL_GetSurfaceBlendMode(p, &mode) == 0 && mode == SDL_BLENDMODE_NONE && !SDL_HasColorKey(p) &&
-           SDL_GetSurfaceAlphaMod(p, &a) == 0 && a == 255 && SDL_GetSurfaceColorMod(p, &r, &g, &b) == 0 &&
-           r == 255 && g == 255 && b == 255;
+    if (p->format->format != SDL_PIXELFORMAT_ARGB8888 || SDL_MUSTLOCK(p) || SDL_HasColorKey(p) ||
+        SDL_GetSurfaceBlendMode(p, &mode) != 0 || SDL_GetSurfaceAlphaMod(p, &a) != 0 || a != 255 ||
+        SDL_GetSurfaceColorMod(p, &r, &g, &b) != 0 || r != 255 || g != 255 || b != 255)
+        return Fast::No;
+    if (mode == SDL_BLENDMODE_NONE) return alpha == 255 ? Fast::Copy : Fast::No;
+    // Faded (a layer's opacity), SDL blends by another rule: leave it to SDL.
+    return mode == SDL_BLENDMODE_BLEND && alpha == 255 ? Fast::Blend : Fast::No;
 }
 
 // One row of pixels, in 16-byte pieces the compiler inlines: a call to
@@ -44,6 +52,27 @@ void copy_row(uint8_t* to, const uint8_t* from, size_t bytes) {
     size_t i = 0;
     for (; i + 16 <= bytes; i += 16) std::memcpy(to + i, from + i, 16);
     for (; i < bytes; i += 4) std::memcpy(to + i, from + i, 4);
+}
+
+// One row blended by each source pixel's alpha onto the opaque canvas:
+// "over", rounded to the nearest value as fill_rect rounds (SDL's blitter
+// approximates / 255 by shifts and is off by one in about half the cases).
+// Sprite pixels are mostly fully clear or fully opaque, which skip the
+// arithmetic.
+void blend_row(uint32_t* to, const uint32_t* from, int n) {
+    for (int i = 0; i < n; ++i) {
+        const uint32_t s = from[i], a = s >> 24;
+        if (a == 0) continue;
+        if (a == 255) {
+            to[i] = s;
+            continue;
+        }
+        const uint32_t d = to[i];
+        const auto ch = [&](int shift) {
+            return ((s >> shift & 0xff) * a + (d >> shift & 0xff) * (255 - a) + 127) / 255;
+        };
+        to[i] = 0xff000000u | ch(16) << 16 | ch(8) << 8 | ch(0);
+    }
 }
 
 }  // namespace
@@ -184,14 +213,18 @@ void Canvas::text(int x, int y, std::string_view s, Rgba c, int scale) {
 
 void Canvas::blit(SDL_Surface* picture, int x, int y, uint8_t alpha) {
     if (!picture) return;
-    if (plain_copy(picture, alpha)) {
+    const Fast fast = fast_kind(picture, alpha);
+    if (fast != Fast::No) {
         const int x0 = std::max(x, 0), y0 = std::max(y, 0);
         const int x1 = static_cast<int>(std::min<long>(long(x) + picture->w, width()));
         const int y1 = static_cast<int>(std::min<long>(long(y) + picture->h, height()));
-        for (int py = y0; py < y1; ++py)
-            copy_row(static_cast<uint8_t*>(surface_->pixels) + py * surface_->pitch + x0 * 4,
-                     static_cast<const uint8_t*>(picture->pixels) + (py - y) * picture->pitch + (x0 - x) * 4,
-                     size_t(std::max(x1 - x0, 0)) * 4);
+        for (int py = y0; py < y1 && x0 < x1; ++py) {
+            uint8_t* to = static_cast<uint8_t*>(surface_->pixels) + py * surface_->pitch + x0 * 4;
+            const uint8_t* from =
+                static_cast<const uint8_t*>(picture->pixels) + (py - y) * picture->pitch + (x0 - x) * 4;
+            if (fast == Fast::Copy) copy_row(to, from, size_t(x1 - x0) * 4);
+            else blend_row(reinterpret_cast<uint32_t*>(to), reinterpret_cast<const uint32_t*>(from), x1 - x0);
+        }
         return;
     }
     SDL_Rect dst{x, y, picture->w, picture->h};
