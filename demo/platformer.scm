@@ -149,15 +149,6 @@ running on the ground."
            (player (dress player wanted on-ground? (game-frame game))))
       (game-scene-set! game (update-scene scene entities: (list player))))))
 
-(define (hud-text text x y color . scale)
-  ;; Text on the screen on a translucent dark plate, with a shadow: legible
-  ;; over any tile.
-  (let* ((scale (if (pair? scale) (car scale) 1))
-         (w (* 6 scale (string-length text))))
-    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
-    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
-    (draw-text text x y color #:scale scale #:space 'screen)))
-
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
 (define (draw! game)
@@ -167,14 +158,12 @@ running on the ground."
          (seconds (/ (* (game-frame-delay game) (- (or goal-frame frame) start-frame)) 1000.)))
     (draw-sprite goal-flag (entity-ref goal #:x)
                  (- (+ (entity-ref goal #:y) (entity-ref goal #:height)) 16))
-    (hud-text (format #f "TIME ~,1f" seconds) 4 4 'white)
+    (draw-label (format #f "TIME ~,1f" seconds) 4 4 'white)
     (cond (reached-goal?
-           (hud-text "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow 3)
-           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
+           (draw-label "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow #:scale 3)
+           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
           ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
-           (hud-text "ARROWS RUN   Z JUMP   GET TO THE FLAG"
-                          (centred-x "ARROWS RUN   Z JUMP   GET TO THE FLAG" 1 (game-width game))
-                          (- (game-height game) 12) 'white)))))
+           (draw-label "ARROWS RUN   Z JUMP   GET TO THE FLAG" (centred-x "ARROWS RUN   Z JUMP   GET TO THE FLAG" 1 (game-width game)) (- (game-height game) 12) 'white)))))
 
 (define (render game)
   ;; Runs after camera-follow! (which keeps the view inside the map).

@@ -201,15 +201,6 @@ one of the last 1000."
   (game-scene-set! game (scene-map-entities (game-scene game) (bot-logic game) (raft-logic game)))
   (player-input! game))
 
-(define (hud-text text x y color . scale)
-  ;; Text on the screen on a translucent dark plate, with a shadow: legible
-  ;; over any tile.
-  (let* ((scale (if (pair? scale) (car scale) 1))
-         (w (* 6 scale (string-length text))))
-    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
-    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
-    (draw-text text x y color #:scale scale #:space 'screen)))
-
 (define (draw-platforms! entities)
   ;; An immovable platform is wider than one piece: a row of them along it
   ;; (each 16×8 piece sits in the bottom half of its frame).
@@ -232,8 +223,8 @@ one of the last 1000."
     (draw-line (+ dropper-x 6) (+ dropper-y 3) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
     (draw-line (+ dropper-x 4) (+ dropper-y 6) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
     (draw-line (+ dropper-x 8) (+ dropper-y 6) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
-    (hud-text (format #f "CRATES ~a   LANDED ~a" (length boxes) at-rest) 4 4 'white)
-    (hud-text hint (- (game-width game) 4 (* 6 (string-length hint))) 4 'white)))
+    (draw-label (format #f "CRATES ~a   LANDED ~a" (length boxes) at-rest) 4 4 'white)
+    (draw-label hint (- (game-width game) 4 (* 6 (string-length hint))) 4 'white)))
 
 (define (render game)
   ;; Draws the platforms, the dropper and the HUD (when the game has a

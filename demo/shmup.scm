@@ -162,14 +162,6 @@ one of the last 1000."
              (loop (cdr bullets) (delete hit enemies eq?) kept (+ score (entity-ref hit #:points)))))
        (else (loop (cdr bullets) enemies (cons (car bullets) kept) score))))))
 
-(define (hud-text text x y color . scale)
-  ;; Text on the screen on a translucent dark plate, with a shadow.
-  (let* ((scale (if (pair? scale) (car scale) 1))
-         (w (* 6 scale (string-length text))))
-    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
-    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
-    (draw-text text x y color #:scale scale #:space 'screen)))
-
 (define (centred-x text scale) (quotient (- screen-width (* 6 scale (string-length text))) 2))
 
 ;;; Stars: fixed columns, drifting down at three speeds (half, one and one
@@ -204,14 +196,14 @@ one of the last 1000."
          (left (count (kind-of 'enemy) entities)))
     (draw-stars! frame entities)
     (for-each (lambda (x) (draw-sprite explosion-picture (car x) (- (cadr x) 4))) explosions)
-    (hud-text (format #f "SCORE ~a" (entity-ref ship #:score)) 4 4 'white)
+    (draw-label (format #f "SCORE ~a" (entity-ref ship #:score)) 4 4 'white)
     (let ((enemies (format #f "ENEMIES ~a" left)))
-      (hud-text enemies (- screen-width 4 (* 6 (string-length enemies))) 4 'green))
+      (draw-label enemies (- screen-width 4 (* 6 (string-length enemies))) 4 'green))
     (cond ((zero? left)
-           (hud-text "WAVE CLEARED!" (centred-x "WAVE CLEARED!" 2) 90 'yellow 2)
-           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1) 116 'white))
+           (draw-label "WAVE CLEARED!" (centred-x "WAVE CLEARED!" 2) 90 'yellow #:scale 2)
+           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1) 116 'white))
           ((< frame 240)                ; the first 4 s: how to play
-           (hud-text "ARROWS MOVE   Z FIRE" (centred-x "ARROWS MOVE   Z FIRE" 1) 4 'white)))))
+           (draw-label "ARROWS MOVE   Z FIRE" (centred-x "ARROWS MOVE   Z FIRE" 1) 4 'white)))))
 
 (define (render game)
   ;; Draws the stars, explosions and HUD (when the game has a display),

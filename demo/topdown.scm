@@ -149,15 +149,6 @@ one of the last 1000."
       (game-scene-set! game (update-scene scene entities:
                                           (cons player (remove (lambda (c) (memq c taken)) coins)))))))
 
-(define (hud-text text x y color . scale)
-  ;; Text on the screen on a translucent dark plate, with a shadow: legible
-  ;; over any tile.
-  (let* ((scale (if (pair? scale) (car scale) 1))
-         (w (* 6 scale (string-length text))))
-    (draw-rect (- x 2) (- y 2) (+ w 3) (+ (* 7 scale) 4) '(22 17 31 150) #:fill? #t #:space 'screen)
-    (draw-text text (+ x scale) (+ y scale) '(22 17 31) #:scale scale #:space 'screen)
-    (draw-text text x y color #:scale scale #:space 'screen)))
-
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
 (define (draw-hud! game)
@@ -166,16 +157,14 @@ one of the last 1000."
          (left (length (cdr entities)))
          (total (length coins0))
          (width (game-width game)))
-    (hud-text (format #f "SCORE ~a" (entity-ref (car entities) #:score 0)) 4 4 'white)
+    (draw-label (format #f "SCORE ~a" (entity-ref (car entities) #:score 0)) 4 4 'white)
     (let ((coins (format #f "COINS ~a/~a" (- total left) total)))
-      (hud-text coins (- width 4 (* 6 (string-length coins))) 4 'yellow))
+      (draw-label coins (- width 4 (* 6 (string-length coins))) 4 'yellow))
     (cond ((zero? left)
-           (hud-text "ALL COINS!" (centred-x "ALL COINS!" 3 width) 90 'yellow 3)
-           (hud-text "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 width) 120 'white))
+           (draw-label "ALL COINS!" (centred-x "ALL COINS!" 3 width) 90 'yellow #:scale 3)
+           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 width) 120 'white))
           ((< (- (game-frame game) start-frame) 240)   ; the first 4 s: how to play
-           (hud-text "ARROWS WALK - PICK UP EVERY COIN"
-                          (centred-x "ARROWS WALK - PICK UP EVERY COIN" 1 width)
-                          (- (game-height game) 12) 'white)))))
+           (draw-label "ARROWS WALK - PICK UP EVERY COIN" (centred-x "ARROWS WALK - PICK UP EVERY COIN" 1 width) (- (game-height game) 12) 'white)))))
 
 (define (render game)
   ;; Draws the HUD (when the game has a display), remembers the entities

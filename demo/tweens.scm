@@ -162,13 +162,6 @@ one of the last 1000."
 (define (show x)
   (if (inexact? x) (format #f "~,2f" x) (format #f "~a" x)))
 
-(define (hud-text text x y color)
-  ;; Text on the screen on a translucent dark plate, with a shadow.
-  (let ((w (* 6 (string-length text))))
-    (draw-rect (- x 2) (- y 2) (+ w 3) 11 '(22 17 31 150) #:fill? #t #:space 'screen)
-    (draw-text text (+ x 1) (+ y 1) '(22 17 31) #:space 'screen)
-    (draw-text text x y color #:space 'screen)))
-
 ;;; What each one shows, written by where it moves (capitals read best in
 ;;; the 5×7 font).
 (define labels
@@ -203,9 +196,9 @@ one of the last 1000."
       (when (> cover 0)
         (draw-rect (- (entity-ref fader #:x) 4) (- (entity-ref fader #:y) 8) 16 16
                    (append background (list cover)) #:fill? #t)))
-    (hud-text "TWEENS" 4 4 'white)
+    (draw-label "TWEENS" 4 4 'white)
     (let ((text (format #f "HITS ~a   RETURN: AGAIN" hits)))
-      (hud-text text (- (game-width game) 4 (* 6 (string-length text))) 4 'white))))
+      (draw-label text (- (game-width game) 4 (* 6 (string-length text))) 4 'white))))
 
 (define (render game)
   ;; Draws the scenery and HUD (when the game has a display), remembers the

@@ -4,7 +4,7 @@
   #:use-module (downstroke native)
   #:export (renderer-available? display-mode capture-directory window-scale debug-draw-default
             current-display default-input-map
-            draw-rect draw-line draw-sprite draw-text
+            draw-rect draw-line draw-sprite draw-text draw-label text-width
             color-rgba load-sound))
 
 (define (renderer-available?)
@@ -71,6 +71,25 @@ honoured) with its top-left corner at (X, Y)."
 each font pixel is SCALE × SCALE, each letter 6 × SCALE wide, and a newline
 starts a line 9 × SCALE lower."
   (%draw-text! (display-for "draw-text") text x y (color-rgba "draw-text" color) scale space))
+
+(define* (text-width text #:key (scale 1))
+  "How many pixels wide TEXT is in the built-in font at SCALE: 6 × SCALE per
+letter of its longest line (for centring or right-aligning a label)."
+  (* 6 scale (apply max 0 (map string-length (string-split text #\newline)))))
+
+;; A label's plate: dark and translucent, so the text reads over any tile.
+(define label-plate '(22 17 31 150))
+(define label-shadow '(22 17 31))
+
+(define* (draw-label text x y #:optional (color 'white) #:key (scale 1) (space 'screen))
+  "Draw TEXT as draw-text does, with a one-pixel shadow on a translucent dark
+plate, so it reads over any map: for a score or a message. SPACE defaults
+to 'screen (a HUD); the plate reaches 2 px beyond the text on every side."
+  (let ((lines (length (string-split text #\newline))))
+    (draw-rect (- x 2) (- y 2) (+ (text-width text #:scale scale) 3)
+               (+ (* 9 scale (- lines 1)) (* 7 scale) 4) label-plate #:fill? #t #:space space)
+    (draw-text text (+ x scale) (+ y scale) label-shadow #:scale scale #:space space)
+    (draw-text text x y color #:scale scale #:space space)))
 
 (define (load-sound name file)
   "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.

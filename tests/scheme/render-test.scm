@@ -158,6 +158,15 @@
 (capture-of sprite-hud)
 (test-assert "draw-sprite draws a gid of the scene's map, flipped" (tile-drawn? sprite-hud 8 8 3 #t #f #f))
 
+(define labelled (make-game width: 32 height: 16 render: (lambda (game) (draw-label "A" 4 4 'yellow))))
+(game-run! labelled frames: 1)
+(capture-of labelled)
+(test-equal "draw-label: its plate blends (22 17 31) at alpha 150 over the background"
+  '(23 22 35 255) (game-pixel labelled 2 2))
+(test-equal "… the text in its colour (A's top row)" '(250 220 70 255) (game-pixel labelled 5 4))
+(test-equal "… nothing past the plate" background (game-pixel labelled 14 4))
+(test-equal "text-width: 6 px a letter of the longest line" '(42 12 84) (list (text-width "SCORE 3") (text-width "AB\nC") (text-width "SCORE 3" #:scale 2)))
+
 (test-assert "draw-rect outside a game's drawing names itself"
   (mentions? (error-text (lambda () (draw-rect 0 0 1 1))) "draw-rect" "render:"))
 (define (error-in-render proc)
