@@ -439,6 +439,9 @@ SCM poll_input(SCM display) {
 // ---------------------------------------------------------------- sound
 
 std::unique_ptr<SoundBank> bank;  // one per process: there is one audio device
+// What was loaded under each name, so a bank reopened on the real device
+// (a window opening after the script loaded its sounds) has them all again.
+std::unordered_map<std::string, std::string> sound_files;
 
 SCM open_audio(SCM audible) {
     Failure f{.proc = "load-sound"};
@@ -446,6 +449,7 @@ SCM open_audio(SCM audible) {
         if (!bank || (scm_is_true(audible) && !bank->audible())) {
             bank.reset();
             bank = std::make_unique<SoundBank>(scm_is_true(audible));
+            for (const auto& [name, path] : sound_files) bank->load(name, path);
         }
     });
     if (f) raise(f);
@@ -461,6 +465,7 @@ SCM load_sound(SCM name, SCM path) {
         guarded(f, nullptr, [&] {
             if (!bank) bank = std::make_unique<SoundBank>(false);
             bank->load(n, p);
+            sound_files[n] = p;
         });
     if (f) raise(f);
     return SCM_UNSPECIFIED;

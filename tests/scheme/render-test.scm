@@ -251,6 +251,9 @@
 (define noisy (make-game update: (lambda (game dt) (when (= (game-frame game) 2) (play-sound 'jump)))))
 (game-run! noisy frames: 4)
 (test-equal "headless, a loaded sound is recorded with its frame" '((2 . jump)) (game-sounds noisy))
+(test-assert "opening the real audio device (as a window does) keeps the sounds loaded before"
+  (begin ((@ (downstroke native) %open-audio!) #t)
+         ((@ (downstroke native) %play-sound) 'jump)))
 (test-assert "a missing sound file is named"
   (mentions? (error-text (lambda () (load-sound 'x (string-append dir "/none.wav")))) "load-sound" "none.wav"))
 (test-assert "a directory is not a sound"
