@@ -27,6 +27,8 @@ constexpr Rgba kVelocityColor{255, 240, 120, 255};
 constexpr Rgba kGroundMarkColor{255, 140, 40, 255};
 constexpr Rgba kPushedPairColor{255, 70, 70, 255};
 constexpr Rgba kTrailColor{120, 230, 255, 255};
+// Behind the overlay's legend: dark enough for its colours to read over grass.
+constexpr Rgba kLegendPlate{0, 0, 0, 170};
 // A velocity in px/frame is drawn this many frames long: a body moving one
 // pixel a frame would otherwise get a vector no longer than a pixel.
 constexpr double kVelocityScale = 4.0;

@@ -112,9 +112,13 @@ void draw_legend(Canvas& c) {
     const std::pair<const char*, Rgba> roles[] = {{"solid", kSolidColor},   {"immovable", kImmovableColor},
                                                   {"ghost", kGhostColor},   {"plain", kPlainColor},
                                                   {"resting", kRestingColor}};
-    // Along the bottom edge, where a HUD is least often drawn.
+    // Along the bottom edge, where a HUD is least often drawn, on a dark
+    // plate so it reads over the ground.
     int x = 2;
     const int y = c.height() - kLineHeight;
+    int width = 0;
+    for (const auto& [name, color] : roles) width += (int(std::char_traits<char>::length(name)) + 1) * kGlyphAdvance;
+    c.fill_rect(0, y - 1, width + 2, kLineHeight + 1, kLegendPlate);
     for (const auto& [name, color] : roles) {
         c.text(x, y, name, color);
         x += (int(std::char_traits<char>::length(name)) + 1) * kGlyphAdvance;

@@ -235,7 +235,7 @@ TEST_CASE("the debug overlay: outlines, velocity, ground mark, pushed pairs, tra
     es[1] = {.x = 20, .y = 2, .w = 5, .h = 5, .solid = true};
     const std::pair<uint32_t, uint32_t> pairs[] = {{0, 1}};
     const Trail trails[] = {{{30.5, 20.5}, {34.5, 20.5}}, {}};
-    Canvas c(40, 30);
+    Canvas c(40, 40);
     TileArt art;
     SceneView v;
     v.entities = es;
@@ -255,7 +255,7 @@ TEST_CASE("the debug overlay: outlines, velocity, ground mark, pushed pairs, tra
     for (int x = 30; x <= 34; ++x) CHECK(c.pixel(x, 20) == kTrailColor);
     // The legend names the roles along the bottom edge.
     bool legend = false;
-    for (int x = 0; x < 40; ++x) legend |= c.pixel(x, 30 - kLineHeight + 3) == kSolidColor;
+    for (int x = 0; x < 40; ++x) legend |= c.pixel(x, 40 - kLineHeight + 3) == kSolidColor;
     CHECK(legend);
 }
 
