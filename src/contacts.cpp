@@ -129,10 +129,6 @@ void resolve_entity_collisions(std::span<Body> bodies) {
     resolve_entity_collisions_by(bodies, PairMethod::Auto);
 }
 
-void resolve_entity_collisions(std::span<Body> bodies, std::span<const uint8_t> resting) {
-    resolve_entity_collisions_by(bodies, PairMethod::Auto, resting);
-}
-
 void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting) {
     // Only solid, non-ghost bodies take part; walking just those, in list

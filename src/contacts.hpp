@@ -47,7 +47,6 @@ enum class PairMethod { Auto, AllPairs, Grid };
 // earlier pairs produced.
 // `resting` (empty, or one flag per body) marks the bodies that rested.
 void resolve_entity_collisions(std::span<Body> bodies);
-void resolve_entity_collisions(std::span<Body> bodies, std::span<const uint8_t> resting);
 void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting = {});
 // The same for a caller that already knows which bodies collide (Body::collides),

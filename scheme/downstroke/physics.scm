@@ -65,4 +65,4 @@ continuous one as k grows."
                                   substeps (resting-contacts?))))
     (if (eq? stepped entities)
         scene
-        (%scene-with-entities scene stepped))))
+        ((@@ (downstroke world) %scene-with-entities) scene stepped))))

@@ -4,7 +4,6 @@
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
             scene-map-entities scene-transform-entities
-            %scene-with-entities
             make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
 
 (define-record-type <camera>
