@@ -12,8 +12,8 @@
 #include "accuracy/jobs.hpp"
 #include "accuracy/plot.hpp"
 #include "accuracy/report.hpp"
+#include "common/command_line.hpp"
 #include "common/timing.hpp"
-#include "speed/options.hpp"
 
 namespace bench::accuracy {
 

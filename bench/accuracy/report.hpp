@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "accuracy/runs.hpp"
-#include "speed/report.hpp"
+#include "common/run_info.hpp"
 
 namespace bench::accuracy {
 

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "canvas.hpp"
+#include "common/command_line.hpp"
 #include "draw/report.hpp"
 #include "draw/scenes.hpp"
 #include "scene_draw.hpp"
-#include "speed/options.hpp"
 #include "tile_art.hpp"
 
 namespace bench::draw {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/run_info.hpp"
 #include "common/timing.hpp"
-#include "speed/report.hpp"
 
 namespace bench::draw {
 

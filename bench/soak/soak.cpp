@@ -14,7 +14,7 @@
 
 #include "common/guile_boot.hpp"
 #include "common/org_file.hpp"
-#include "speed/report.hpp"
+#include "common/run_info.hpp"
 
 
 namespace bench {

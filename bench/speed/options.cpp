@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/command_line.hpp"
 #include "speed/scenes.hpp"
 
 namespace bench {
@@ -18,47 +19,7 @@ std::vector<std::string> split(const std::string& s) {
     return out;
 }
 
-// Whether `parse` (std::stod, std::stoi, …) reads all of v, storing it in
-// out; a throw reads nothing (so "" counts as read whole, out left as it was).
-template <class T, class Parse>
-bool parse_whole(const std::string& v, T& out, Parse parse) {
-    size_t used = 0;
-    try {
-        out = parse(v, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    return used == v.size();
-}
-
-double to_double(const std::string& opt, const std::string& v) {
-    double d = 0;
-    const bool whole = parse_whole(v, d, [](const std::string& s, size_t* used) { return std::stod(s, used); });
-    if (!whole || !(d > 0)) throw std::invalid_argument(opt + ": expected a positive number, got '" + v + "'");
-    return d;
-}
-
-std::string quoted(const std::string& arg) {
-    if (!arg.empty() && arg.find_first_of(" \t'\"$\\") == std::string::npos) return arg;
-    std::string q = "'";
-    for (char c : arg) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
 }  // namespace
-
-int count_arg(const std::string& opt, const std::string& v, int least) {
-    int n = 0;
-    const bool whole = parse_whole(v, n, [](const std::string& s, size_t* used) { return std::stoi(s, used); });
-    if (!whole || n < least) throw std::invalid_argument(opt + ": expected a count, got '" + v + "'");
-    return n;
-}
-
-std::string command_line(int argc, char** argv) {
-    std::string command;
-    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + quoted(argv[i]);
-    return command;
-}
 
 const std::vector<std::string>& path_names() {
     static const std::vector<std::string> names = {"guile", "native", "bare", "reference", "box2d",
@@ -136,8 +97,8 @@ Options parse_options(int argc, char** argv) {
         }
         else if (a == "--json") o.json = value;
         else if (a == "--org") o.org = value;
-        else if (a == "--max-frame-s") o.max_frame_s = to_double(a, value);
-        else if (a == "--budget") o.budget_s = to_double(a, value);
+        else if (a == "--max-frame-s") o.max_frame_s = positive_arg(a, value);
+        else if (a == "--budget") o.budget_s = positive_arg(a, value);
         else if (a.rfind("-", 0) == 0) throw std::invalid_argument("unknown option " + a);
         else if (!positional_seen) {
             o.mode = a;

@@ -1,4 +1,6 @@
-// The command line of downstroke-bench.
+// The command line of downstroke-bench: the speed mode's options, which
+// the soak mode shares (mode, --frames, --warmup, --org), and the usage of
+// every mode. The other modes parse their own (common/command_line.hpp).
 #pragma once
 #include <string>
 #include <vector>
@@ -21,11 +23,6 @@ struct Options {
 };
 
 const std::vector<std::string>& path_names();
-// An option's whole-number value of at least `least`; throws
-// std::invalid_argument ("OPT: expected a count, got 'V'") otherwise.
-int count_arg(const std::string& opt, const std::string& v, int least);
-// argv as a shell would take it back (arguments quoted where needed).
-std::string command_line(int argc, char** argv);
 // Parses argv; throws std::invalid_argument with a message on a bad option.
 Options parse_options(int argc, char** argv);
 std::string usage();

@@ -1,9 +1,10 @@
-// The figures of one run: the stdout table, JSON and the Org document.
+// The figures of one speed run: the stdout table, JSON and the Org document.
 #pragma once
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "common/run_info.hpp"
 #include "common/timing.hpp"
 
 namespace bench {
@@ -25,16 +26,6 @@ struct Row {
     double checksum = 0;  // NaN: not computed
     int checksum_frames = 0;
 };
-
-struct RunInfo {
-    std::string date, cpu, kernel, build_type, core_flags, bench_flags, compiler;
-    std::string guile_version, box2d_version, command;
-    std::string source;  // commit, and whether src/ bindings/ scheme/ had uncommitted changes
-    int cores = 0;
-    double total_s = 0;
-};
-
-RunInfo collect_run_info(const std::string& command);
 
 void print_header(std::FILE* out);
 void print_row(std::FILE* out, const Row& row);
