@@ -20,7 +20,7 @@ const char* kIntro = R"(#+title: Accuracy
 How far the physics strays from a known truth, against what a frame costs,
 for each collision mode (swept, discrete), number of sub-frames k (1, 2, 4,
 8) and resting contacts (off, on): the work-precision benchmark. Measured by
-=build/bin/downstroke-bench accuracy= (sources in =bench/accuracy*.cpp=):
+=build/bin/downstroke-bench accuracy= (sources in =bench/accuracy/=):
 
 #+begin_src sh
 build/bin/downstroke-bench accuracy            # about two minutes; writes docs/accuracy.org and .png

@@ -49,7 +49,7 @@ std::string section(const Document& d) {
       << " off-screen canvas (software,\n"
          "an SDL surface; nothing shown): clear, the visible cells of the map's\n"
          "layers, the sprites, and in the debug case the overlay. Measured by\n"
-         "=build/bin/downstroke-bench draw= (sources in =bench/draw*.cpp=).\n\n"
+         "=build/bin/downstroke-bench draw= (sources in =bench/draw/=).\n\n"
       << org_row({"machine", info.cpu + ", " + std::to_string(info.cores) + " cores, Linux " + info.kernel})
       << org_row({"date", info.date})
       << org_row({"build type", (info.build_type.empty() ? "(none)" : info.build_type) + " — =" +

@@ -136,7 +136,7 @@ run makes later, smaller runs collect far less often than they would alone.
 
 * What each scene measures
 
-Every scene is built deterministically from N (=bench/scenes.cpp=), with
+Every scene is built deterministically from N (=bench/speed/scenes.cpp=), with
 exact integer coordinates and velocities, and every path starts from the
 same bodies. Tiles are 16 px. A scene grows wider with N, not taller, so
 each body goes through the same motion whatever N is.
