@@ -1,5 +1,6 @@
 // What the accuracy figures say, in words derived from the figures: the
-// paragraphs of the Org document that change with the results.
+// sentence of the Org document that changes with the results. Why each
+// cause happens is hand-written in docs/accuracy.org.
 #pragma once
 #include <string>
 #include <vector>
@@ -8,7 +9,8 @@
 
 namespace bench::accuracy {
 
-// Where bodies ended inside solids, and why.
-std::string penetration_notes(const std::vector<Row>& rows);
+// How many scene runs had a body end a frame inside a solid, the deepest
+// case, and the causes of each run's deepest case, counted.
+std::string penetration_summary(const std::vector<Row>& rows);
 
 }  // namespace bench::accuracy
