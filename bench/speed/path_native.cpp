@@ -1,0 +1,104 @@
+// The native path: the scene as a ds::World, one ds::Frame::step per frame;
+// and the bare loop over the same body array.
+#include <vector>
+
+#include "common/timing.hpp"
+#include "frame.hpp"
+#include "speed/paths.hpp"
+
+namespace bench {
+
+namespace {
+
+ds::Num exact(int64_t v) { return ds::Num::integer(static_cast<double>(v)); }
+
+std::vector<ds::Body> to_bodies(const Scene& s) {
+    std::vector<ds::Body> out;
+    out.reserve(s.bodies.size());
+    for (const SceneBody& sb : s.bodies) {
+        ds::Body b;
+        b.x = exact(sb.x);
+        b.y = exact(sb.y);
+        b.w = exact(sb.w);
+        b.h = exact(sb.h);
+        b.vx = exact(sb.vx);
+        b.vy = exact(sb.vy);
+        b.gravity = sb.gravity;
+        b.solid = sb.solid;
+        b.immovable = sb.immovable;
+        b.on_ground = sb.on_ground;
+        out.push_back(b);
+    }
+    return out;
+}
+
+// The untimed bounce update, as (bench driver) does it on plists: an axis
+// whose velocity a collision zeroed turns round.
+void bounce(std::vector<ds::Body>& bodies, std::vector<int64_t>& rvx, std::vector<int64_t>& rvy) {
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        ds::Body& b = bodies[i];
+        if (rvx[i] != 0 && b.vx.exact && b.vx.v == 0) {
+            rvx[i] = -rvx[i];
+            b.vx = exact(rvx[i]);
+        }
+        if (rvy[i] != 0 && b.vy.exact && b.vy.v == 0) {
+            rvy[i] = -rvy[i];
+            b.vy = exact(rvy[i]);
+        }
+    }
+}
+
+}  // namespace
+
+PathResult run_native(const Scene& scene, const RunConfig& cfg) {
+    PathResult r;
+    const int64_t t_setup = now_ns();
+    ds::TileGrid grid(scene.cols, scene.rows, scene.tile, scene.tile, scene.solid);
+    ds::World world;
+    world.grid = &grid;
+    world.bodies = to_bodies(scene);
+    std::vector<int64_t> rvx, rvy;
+    for (const SceneBody& b : scene.bodies) rvx.push_back(b.rvx), rvy.push_back(b.rvy);
+    ds::Frame frame;
+    const ds::FrameOptions opts;  // swept, dt = 1000/60 ms
+    r.setup_ms = static_cast<double>(now_ns() - t_setup) / 1e6;
+    FrameGuard guard(cfg.max_frame_ms, cfg.budget_ms);
+    r.frame_ms.reserve(static_cast<size_t>(cfg.frames));
+    for (int i = 0; i < cfg.warmup + cfg.frames; ++i) {
+        const int64_t t0 = now_ns();
+        frame.step(world, opts);
+        const int64_t t1 = now_ns();
+        const double ms = static_cast<double>(t1 - t0) / 1e6;
+        if (i >= cfg.warmup) r.frame_ms.push_back(ms);
+        r.spent_ms += ms;
+        if (scene.bounce) bounce(world.bodies, rvx, rvy);
+        if (!guard.keep_going(ms, static_cast<int>(r.frame_ms.size()))) break;
+    }
+    r.skipped = guard.skip_reason();
+    r.checksum = 0;
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+        if (!scene.bodies[i].immovable) r.checksum += world.bodies[i].x.v + 3 * world.bodies[i].y.v;
+    return r;
+}
+
+PathResult run_bare(const Scene& scene, const RunConfig& cfg) {
+    PathResult r;
+    std::vector<ds::Body> bodies = to_bodies(scene);
+    auto pass = [&] {
+        for (ds::Body& b : bodies) {
+            b.x = b.x + b.vx;
+            b.y = b.y + b.vy;
+        }
+        asm volatile("" : : "r"(bodies.data()) : "memory");  // keep every frame's writes
+    };
+    for (int i = 0; i < cfg.warmup + cfg.frames; ++i) {
+        const int64_t t0 = now_ns();
+        pass();
+        const int64_t t1 = now_ns();
+        if (i >= cfg.warmup) r.frame_ms.push_back(static_cast<double>(t1 - t0) / 1e6);
+        r.spent_ms += static_cast<double>(t1 - t0) / 1e6;
+    }
+    return r;
+}
+
+}  // namespace bench

@@ -1,0 +1,49 @@
+// The paths a scene is stepped through. Each builds its own world from the
+// Scene, runs `warmup` untimed frames, then up to `frames` timed frames,
+// under a FrameGuard (common/timing.hpp) built from the config.
+#pragma once
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "speed/scenes.hpp"
+
+namespace bench {
+
+struct RunConfig {
+    int warmup = 0;
+    int frames = 0;
+    double max_frame_ms = 2000;  // any frame slower than this: stop, skipped
+    double budget_ms = 1e300;    // stop timing once the frames add up to this (≥ 3 timed)
+};
+
+struct PathResult {
+    std::vector<double> frame_ms;  // one per timed frame
+    double bytes_per_frame = -1;   // < 0: not measured on this path
+    double gc_ms = -1;             // collection time inside the timed frames (< 0: n/a)
+    double setup_ms = 0;           // building the world (untimed)
+    // Σ (x + 3y) over the movers after the last frame, in px: equal on the
+    // native, guile and reference paths when they agree (box2d: close).
+    double checksum = std::numeric_limits<double>::quiet_NaN();
+    int checksum_frames = 0;  // frames stepped (warm-up + timed) before the checksum
+    std::string error;             // non-empty: the run failed
+    std::string skipped;           // non-empty: stopped, a frame was too slow
+    double spent_ms = 0;           // all frames stepped, warm-up included
+};
+
+// ds::World + ds::Frame::step, one call per frame.
+PathResult run_native(const Scene& scene, const RunConfig& cfg);
+// The same body array, x += vx and y += vy (ds::Num) per body: a floor.
+PathResult run_bare(const Scene& scene, const RunConfig& cfg);
+// (step-scene scene dt) from (downstroke physics), or from
+// (downstroke reference) when `reference`, in a Scheme loop.
+PathResult run_guile(const Scene& scene, const RunConfig& cfg, bool reference);
+
+#if DS_BENCH_HAVE_BOX2D
+// Box2D's defaults (continuous collision on), or with continuous collision
+// off (`discrete`: no time-of-impact pass, fast bodies may tunnel).
+PathResult run_box2d(const Scene& scene, const RunConfig& cfg, bool discrete);
+std::string box2d_version();
+#endif
+
+}  // namespace bench
