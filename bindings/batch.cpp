@@ -72,8 +72,9 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
 }
 
 void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
-    const bool same_inputs = grid == batch.frame_grid && opts.same_physics(batch.frame_opts);
-    batch.frame_grid = grid;
+    const bool same_inputs = revision_of(grid) == batch.frame_revision && opts.same_physics(batch.frame_opts);
+    batch.frame_revision = revision_of(grid);
+    batch.all_settled = false;  // until this frame completes (note_settled)
     batch.frame_opts = opts;
     batch.colliders = any_collider(batch.bodies);
     batch.quiet.assign(batch.size(), 0);
@@ -92,17 +93,15 @@ void note_settled(Batch& batch) {
     }
 }
 
-bool frame_is_noop(const Batch& batch, SCM entities, SCM tilemap, const FrameOptions& opts) {
+bool frame_is_noop(const Batch& batch, SCM entities, const TileGrid* grid, const FrameOptions& opts) {
     return batch.all_settled && scm_is_true(batch.last_result) &&
            scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 0), entities) &&
-           scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 1), tilemap) &&
-           opts.same_physics(batch.frame_opts);
+           revision_of(grid) == batch.frame_revision && opts.same_physics(batch.frame_opts);
 }
 
-void note_result(Batch& batch, SCM result, SCM tilemap) {
-    if (scm_is_false(batch.last_result)) batch.last_result = scm_gc_protect_object(scm_c_make_vector(2, SCM_BOOL_F));
+void note_result(Batch& batch, SCM result) {
+    if (scm_is_false(batch.last_result)) batch.last_result = scm_gc_protect_object(scm_c_make_vector(1, SCM_BOOL_F));
     SCM_SIMPLE_VECTOR_SET(batch.last_result, 0, result);
-    SCM_SIMPLE_VECTOR_SET(batch.last_result, 1, tilemap);
     batch.last_count = batch.size();
 }
 

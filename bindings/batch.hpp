@@ -41,17 +41,17 @@ struct Batch {
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
-    // The list the last whole frame returned and its tilemap (slots 0 and 1
-    // of a protected vector, so neither can be recycled into a look-alike at
-    // the same address), and whether every entity in it had settled: handed
-    // that very list again under the same map and options, the frame would
-    // change nothing.
+    // The list the last whole frame returned (slot 0 of a protected vector,
+    // so it cannot be recycled into a look-alike at the same address), and
+    // whether every entity in it had settled: handed that very list again
+    // under the same map (revision) and options, the frame would change
+    // nothing.
     SCM last_result = SCM_BOOL_F;
     size_t last_count = 0;  // its length (the other calls sharing this Batch resize `bodies`)
     bool all_settled = false;
-    // The map and options (mode, substeps, contacts) of the last whole frame,
-    // which settled entities assume.
-    const TileGrid* frame_grid = nullptr;
+    // The map (its revision, 0 for none) and options (mode, substeps,
+    // contacts) of the last whole frame, which settled entities assume.
+    uint64_t frame_revision = 0;
     FrameOptions frame_opts;
 
     size_t size() const { return bodies.size(); }
@@ -75,10 +75,10 @@ void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
 void note_settled(Batch& batch);
 
 // Whether `entities` is the list the last whole frame returned, every entity
-// of it settled, under the same map and options: the frame is a no-op.
-bool frame_is_noop(const Batch& batch, SCM entities, SCM tilemap, const FrameOptions& opts);
-// Records the list a whole frame returned and its tilemap (after note_settled).
-void note_result(Batch& batch, SCM result, SCM tilemap);
+// of it settled, under the same map revision and options: the frame is a no-op.
+bool frame_is_noop(const Batch& batch, SCM entities, const TileGrid* grid, const FrameOptions& opts);
+// Records the list a whole frame returned (after note_settled).
+void note_result(Batch& batch, SCM result);
 
 // A scratch Batch for the current native call. Nested calls (a Scheme
 // callback stepping another scene) get their own; the lease is returned by a

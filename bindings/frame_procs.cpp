@@ -56,7 +56,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
         auto t0 = Clock::now();
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
-            frame_is_noop(batch, entities, tilemap, opts)) {
+            frame_is_noop(batch, entities, grid, opts)) {
             // Nothing settled can change: skip even the decoding.
             stats.entities = batch.last_count;
             stats.decode.skipped = stats.encode.skipped = batch.last_count;
@@ -83,7 +83,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                 result = encode_batch(list, batch, f);
                 if (!f) {
                     note_settled(batch);
-                    note_result(batch, result, tilemap);
+                    note_result(batch, result);
                     stats.encode.ms = ms_since(t0);
                     const StepStats tween_stats = stats.core.step[kStepTweens];
                     stats.core = batch.frame.stats();

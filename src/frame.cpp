@@ -285,7 +285,8 @@ bool any_collider(std::span<const Body> bodies) {
 
 void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
-    const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.same_physics(last_opts_);
+    const bool same_inputs = n == last_out_.size() && revision_of(world.grid) == last_revision_ &&
+                            opts.same_physics(last_opts_);
     quiet_.assign(n, 0);
     untouched_.assign(n, 0);
     tweened_.assign(n, 0);
@@ -313,7 +314,7 @@ void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
 
 size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
-    last_grid_ = world.grid;
+    last_revision_ = revision_of(world.grid);
     last_opts_ = opts;
     if (last_out_.size() != n) {  // a new scene: every body was stepped
         last_out_.assign(n, Body{});

@@ -170,7 +170,7 @@ private:
     FrameStats stats_;
     // Settled bodies (World path): each body's state after the last frame,
     // whether that frame left it unchanged while it depended on nobody, and
-    // the map and mode it ran under; this frame's plan.
+    // the map (by revision) and mode it ran under; this frame's plan.
     std::vector<Body> last_out_;
     std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
     std::vector<uint8_t> still_;  // by body, after the last frame: still, depending on nobody
@@ -178,7 +178,7 @@ private:
     // When not tracking, step_bodies counts the bodies that end the frame still.
     bool count_still_ = false;
     size_t counted_still_ = 0;
-    const TileGrid* last_grid_ = nullptr;
+    uint64_t last_revision_ = 0;  // of the map the last frame ran under (0: none)
     FrameOptions last_opts_;
     bool worth_tracking_ = true;
     bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)

@@ -100,6 +100,9 @@ private:
     GridRevision revision_;
 };
 
+// The revision of a map, or 0 for none.
+inline uint64_t revision_of(const TileGrid* grid) { return grid ? grid->revision() : 0; }
+
 // Defined here so the tile steps, which ask for a few per body, inline them.
 namespace cell_math {
 
