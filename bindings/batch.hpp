@@ -9,6 +9,7 @@
 #include "body.hpp"
 #include "failure.hpp"
 #include "frame.hpp"
+#include "settle.hpp"
 #include "tile_grid.hpp"
 
 namespace ds::guile {
@@ -19,9 +20,6 @@ struct CachedEntity {
     Body body;
     uint16_t watched = 0;
     bool has_tween = false;
-    // Came out of the last frame unchanged while depending on no other
-    // entity: under the same map and mode it will again.
-    bool settled = false;
 };
 
 struct Batch {
@@ -36,8 +34,10 @@ struct Batch {
     // protected while this Batch holds it, and their decodings.
     SCM cache = SCM_BOOL_F;
     std::vector<CachedEntity> cached;
-    std::vector<uint8_t> hit;    // by position: taken from the cache this time
-    std::vector<uint8_t> quiet;  // by position: the frame may leave it alone
+    std::vector<uint8_t> hit;    // by position: taken from the cache this time (as left)
+    // By position: which entities settled, under which map and options, and
+    // which the frame leaves asleep (settle.hpp).
+    Settling settling;
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
@@ -49,10 +49,6 @@ struct Batch {
     SCM last_result = SCM_BOOL_F;
     size_t last_count = 0;  // its length (the other calls sharing this Batch resize `bodies`)
     bool all_settled = false;
-    // The map (its revision, 0 for none) and options (mode, substeps,
-    // contacts) of the last whole frame, which settled entities assume.
-    uint64_t frame_revision = 0;
-    FrameOptions frame_opts;
 
     size_t size() const { return bodies.size(); }
 };
@@ -68,10 +64,11 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f);
 // the list as it was, when a changed value left the range of a double.
 SCM encode_batch(SCM entities, Batch& batch, Failure& f);
 
-// Marks the entities a whole frame can leave alone (settled, same object,
-// same map and mode, still depending on no other entity), and after the
-// frame (after encode_batch) records which entities settled. Both by position.
-void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
+// Plans which entities a whole frame leaves asleep (settled, handed back as
+// the same object, under the same map revision and options, still depending
+// on no other entity), and after the frame (after encode_batch) records
+// which entities settled. Both by position, in Batch::settling.
+void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
 void note_settled(Batch& batch);
 
 // Whether `entities` is the list the last whole frame returned, every entity
