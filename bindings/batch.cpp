@@ -55,8 +55,9 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         if (!hit) {
             Decoded d;
             if (!decode_entity(e, d, f)) return false;
-            c = {d.body, watched_fields(d), scm_is_true(d.tween), false};
+            c = {d.body, watched_fields(d), scm_is_true(d.tween)};
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
+            batch.settling.forget(i);  // the mark was another entity's
         }
         batch.hit.push_back(hit);
         batch.before.push_back(c.body);
@@ -71,38 +72,30 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     return true;
 }
 
-void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
-    const bool same_inputs = grid == batch.frame_grid && opts.same_physics(batch.frame_opts);
-    batch.frame_grid = grid;
-    batch.frame_opts = opts;
+void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
+    batch.all_settled = false;  // until this frame completes (note_settled)
     batch.colliders = any_collider(batch.bodies);
-    batch.quiet.assign(batch.size(), 0);
-    if (!same_inputs) return;
+    if (!batch.settling.begin(batch.size(), SettleConditions::of(grid, opts))) return;
     for (size_t i = 0; i < batch.size(); ++i)
-        batch.quiet[i] = batch.hit[i] && batch.cached[i].settled && !batch.has_tween[i] &&
-                         !depends_on_others(batch.bodies[i], batch.colliders);
+        batch.settling.plan(i, batch.hit[i], batch.has_tween[i], batch.bodies[i], batch.colliders);
 }
 
 void note_settled(Batch& batch) {
-    batch.all_settled = true;
-    for (size_t i = 0; i < batch.size(); ++i) {
-        batch.cached[i].settled = !batch.has_tween[i] && !batch.changed[i] &&
-                                  !depends_on_others(batch.before[i], batch.colliders);
-        batch.all_settled &= batch.cached[i].settled;
-    }
+    bool all = true;
+    for (size_t i = 0; i < batch.size(); ++i)
+        all &= batch.settling.settle(i, !batch.changed[i], batch.has_tween[i], batch.before[i], batch.colliders);
+    batch.all_settled = all;
 }
 
-bool frame_is_noop(const Batch& batch, SCM entities, SCM tilemap, const FrameOptions& opts) {
+bool frame_is_noop(const Batch& batch, SCM entities, const TileGrid* grid, const FrameOptions& opts) {
     return batch.all_settled && scm_is_true(batch.last_result) &&
            scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 0), entities) &&
-           scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 1), tilemap) &&
-           opts.same_physics(batch.frame_opts);
+           batch.settling.holds(SettleConditions::of(grid, opts));
 }
 
-void note_result(Batch& batch, SCM result, SCM tilemap) {
-    if (scm_is_false(batch.last_result)) batch.last_result = scm_gc_protect_object(scm_c_make_vector(2, SCM_BOOL_F));
+void note_result(Batch& batch, SCM result) {
+    if (scm_is_false(batch.last_result)) batch.last_result = scm_gc_protect_object(scm_c_make_vector(1, SCM_BOOL_F));
     SCM_SIMPLE_VECTOR_SET(batch.last_result, 0, result);
-    SCM_SIMPLE_VECTOR_SET(batch.last_result, 1, tilemap);
     batch.last_count = batch.size();
 }
 

@@ -9,6 +9,7 @@
 #include "body.hpp"
 #include "failure.hpp"
 #include "frame.hpp"
+#include "settle.hpp"
 #include "tile_grid.hpp"
 
 namespace ds::guile {
@@ -19,9 +20,6 @@ struct CachedEntity {
     Body body;
     uint16_t watched = 0;
     bool has_tween = false;
-    // Came out of the last frame unchanged while depending on no other
-    // entity: under the same map and mode it will again.
-    bool settled = false;
 };
 
 struct Batch {
@@ -36,23 +34,21 @@ struct Batch {
     // protected while this Batch holds it, and their decodings.
     SCM cache = SCM_BOOL_F;
     std::vector<CachedEntity> cached;
-    std::vector<uint8_t> hit;    // by position: taken from the cache this time
-    std::vector<uint8_t> quiet;  // by position: the frame may leave it alone
+    std::vector<uint8_t> hit;    // by position: taken from the cache this time (as left)
+    // By position: which entities settled, under which map and options, and
+    // which the frame leaves asleep (settle.hpp).
+    Settling settling;
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
-    // The list the last whole frame returned and its tilemap (slots 0 and 1
-    // of a protected vector, so neither can be recycled into a look-alike at
-    // the same address), and whether every entity in it had settled: handed
-    // that very list again under the same map and options, the frame would
-    // change nothing.
+    // The list the last whole frame returned (slot 0 of a protected vector,
+    // so it cannot be recycled into a look-alike at the same address), and
+    // whether every entity in it had settled: handed that very list again
+    // under the same map (revision) and options, the frame would change
+    // nothing.
     SCM last_result = SCM_BOOL_F;
     size_t last_count = 0;  // its length (the other calls sharing this Batch resize `bodies`)
     bool all_settled = false;
-    // The map and options (mode, substeps, contacts) of the last whole frame,
-    // which settled entities assume.
-    const TileGrid* frame_grid = nullptr;
-    FrameOptions frame_opts;
 
     size_t size() const { return bodies.size(); }
 };
@@ -68,17 +64,18 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f);
 // the list as it was, when a changed value left the range of a double.
 SCM encode_batch(SCM entities, Batch& batch, Failure& f);
 
-// Marks the entities a whole frame can leave alone (settled, same object,
-// same map and mode, still depending on no other entity), and after the
-// frame (after encode_batch) records which entities settled. Both by position.
-void plan_quiet(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
+// Plans which entities a whole frame leaves asleep (settled, handed back as
+// the same object, under the same map revision and options, still depending
+// on no other entity), and after the frame (after encode_batch) records
+// which entities settled. Both by position, in Batch::settling.
+void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
 void note_settled(Batch& batch);
 
 // Whether `entities` is the list the last whole frame returned, every entity
-// of it settled, under the same map and options: the frame is a no-op.
-bool frame_is_noop(const Batch& batch, SCM entities, SCM tilemap, const FrameOptions& opts);
-// Records the list a whole frame returned and its tilemap (after note_settled).
-void note_result(Batch& batch, SCM result, SCM tilemap);
+// of it settled, under the same map revision and options: the frame is a no-op.
+bool frame_is_noop(const Batch& batch, SCM entities, const TileGrid* grid, const FrameOptions& opts);
+// Records the list a whole frame returned (after note_settled).
+void note_result(Batch& batch, SCM result);
 
 // A scratch Batch for the current native call. Nested calls (a Scheme
 // callback stepping another scene) get their own; the lease is returned by a

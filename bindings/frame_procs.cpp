@@ -56,8 +56,8 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
         auto t0 = Clock::now();
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
-            frame_is_noop(batch, entities, tilemap, opts)) {
-            // Nothing settled can change: skip even the decoding.
+            frame_is_noop(batch, entities, grid, opts)) {
+            // Every entity settled and is handed back as left: skip even the decoding.
             stats.entities = batch.last_count;
             stats.decode.skipped = stats.encode.skipped = batch.last_count;
             for (StepStats& s : stats.core.step) s.skipped = batch.last_count;
@@ -74,16 +74,16 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             t0 = Clock::now();
             if (!f && (!tweened || decode_batch(list, batch, f))) {
                 stats.decode.ms += ms_since(t0);
-                plan_quiet(batch, grid, opts);
+                plan_sleep(batch, grid, opts);
                 batch.frame.step_physics(batch.bodies, grid, opts,
                                          tweened ? std::span<const Body>(batch.frame_start)
                                                  : std::span<const Body>(),
-                                         batch.writes, batch.quiet);
+                                         batch.writes, batch.settling.asleep());
                 t0 = Clock::now();
                 result = encode_batch(list, batch, f);
                 if (!f) {
                     note_settled(batch);
-                    note_result(batch, result, tilemap);
+                    note_result(batch, result);
                     stats.encode.ms = ms_since(t0);
                     const StepStats tween_stats = stats.core.step[kStepTweens];
                     stats.core = batch.frame.stats();

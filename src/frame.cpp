@@ -1,7 +1,6 @@
 #include "frame.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 #include "contacts.hpp"
 #include "groups.hpp"
@@ -70,21 +69,6 @@ const char* step_name(StepId id) {
         "tile-collisions-y", "on-solid", "entity-collisions", "groups"};
     return kNames[id];
 }
-
-bool depends_on_others(const Body& b, bool supporters_exist) {
-    return b.collides() || b.group != 0 ||
-           (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
-}
-
-namespace {
-
-// A still body that depends on nobody: one that can settle. Tracking costs
-// about half what stepping a body costs, so it pays once half of them can.
-bool may_settle(const Body& b, bool colliders) {
-    return b.vx.v == 0 && b.vy.v == 0 && !depends_on_others(b, colliders);
-}
-
-}  // namespace
 
 template <class MayWrite, class Step>
 Clock::time_point Frame::pass(StepId id, std::span<const uint32_t> block, std::span<Body> bodies,
@@ -168,12 +152,13 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
                  return indexed ? detect_on_supporters(b, supporters_, support_index_, support_slot_[i], grid)
                                 : detect_on_supporters(b, supporters_, support_slot_[i], grid);
              });
-        // Counted while the block is in cache. Nothing later in the frame
+        // The bodies that can settle, counted while the block is in cache
+        // (when step() does not track settling). Nothing later in the frame
         // moves a body that depends on nobody, and one that does never counts.
-        if (count_still_ && round + 1 == std::max(1, opts.substeps))
-            for (const uint32_t i : block) counted_still_ += may_settle(bodies[i], colliders_);
+        if (settling_.counting() && round + 1 == std::max(1, opts.substeps))
+            for (const uint32_t i : block) settling_.count(bodies[i], colliders_);
     }
-    // A step leaves alone every body it did not apply to, quiet ones included.
+    // A step leaves alone every body it did not apply to, asleep ones included.
     for (int id = kStepAcceleration; id <= kStepOnSolid; ++id) {
         if (id == kStepAcceleration && round != 0) continue;
         stats_.step[id].skipped += bodies.size() - (stats_.step[id].processed - before[id]);
@@ -193,11 +178,11 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
             writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
 }
 
-void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> quiet, bool take) {
+void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> asleep, bool take) {
     active_.clear();
     begin_census(bodies.size(), take);
     for (size_t i = 0; i < bodies.size(); ++i) {
-        if (quiet.empty() || !quiet[i]) active_.push_back(static_cast<uint32_t>(i));
+        if (asleep.empty() || !asleep[i]) active_.push_back(static_cast<uint32_t>(i));
         enlist(bodies[i], i);
     }
     end_census();
@@ -244,8 +229,8 @@ void Frame::take_supporters(std::span<const Body> scene) {
 
 void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                          std::span<const Body> scene, std::span<FirstWrites> writes,
-                         std::span<const uint8_t> quiet) {
-    census(bodies, quiet, false);
+                         std::span<const uint8_t> asleep) {
+    census(bodies, asleep, false);
     run_physics(bodies, grid, opts, scene, writes);
 }
 
@@ -279,82 +264,41 @@ void Frame::run_physics(std::span<Body> bodies, const TileGrid* grid, const Fram
     }
 }
 
-bool any_collider(std::span<const Body> bodies) {
-    return std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.collides(); });
-}
-
-void Frame::plan_quiet(const World& world, const FrameOptions& opts) {
+void Frame::plan_sleep(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
-    const bool same_inputs = n == last_out_.size() && world.grid == last_grid_ && opts.same_physics(last_opts_);
-    quiet_.assign(n, 0);
-    untouched_.assign(n, 0);
-    tweened_.assign(n, 0);
-    for (const TweenTrack& t : world.tweens)
-        if (t.body < n) tweened_[t.body] = 1;
-    // One sweep over the bodies does the census and finds those the caller
-    // left as the last frame did (bit 0 of quiet_: quiet unless it looks
-    // for supporters, bit 1, and some body turns out to collide).
+    settling_.begin(n, SettleConditions::of(world.grid, opts));
+    for (const TweenTrack& t : world.tweens) settling_.mark_tween(t.body);
+    // One sweep over the bodies does the census and proposes each body's
+    // sleep; whether any body collides, known after it, settles the plan.
     begin_census(n, true);
     for (size_t i = 0; i < n; ++i) {
-        const Body& b = world.bodies[i];
-        enlist(b, i);
-        if (!same_inputs) continue;
-        untouched_[i] = std::memcmp(&b, &last_out_[i], sizeof(Body)) == 0;
-        const bool alone = untouched_[i] && settled_[i] && !tweened_[i] && !depends_on_others(b, false);
-        quiet_[i] = static_cast<uint8_t>(alone | (depends_on_others(b, true) << 1));
+        enlist(world.bodies[i], i);
+        settling_.propose(i, world.bodies[i]);
     }
     end_census();
     active_.clear();
-    for (size_t i = 0; i < n; ++i) {
-        quiet_[i] = (quiet_[i] & 1) && !(colliders_ && (quiet_[i] & 2));
-        if (!quiet_[i]) active_.push_back(static_cast<uint32_t>(i));
-    }
+    for (size_t i = 0; i < n; ++i)
+        if (!settling_.confirm(i, colliders_)) active_.push_back(static_cast<uint32_t>(i));
 }
 
-size_t Frame::note_settled(const World& world, const FrameOptions& opts) {
-    const size_t n = world.bodies.size();
-    last_grid_ = world.grid;
-    last_opts_ = opts;
-    if (last_out_.size() != n) {  // a new scene: every body was stepped
-        last_out_.assign(n, Body{});
-        settled_.assign(n, 0);
-        still_.assign(n, 0);
-        still_count_ = 0;
-    }
-    // Quiet bodies are still settled and still as they were: only the
-    // stepped ones can change their standing.
-    for (const uint32_t i : active_) {
-        const Body& b = world.bodies[i];
-        // Settled: it entered this frame as the last one left it, and leaves
-        // it the same, depending on nobody.
-        const bool same_bits = std::memcmp(&last_out_[i], &b, sizeof(Body)) == 0;
-        settled_[i] = untouched_[i] && !tweened_[i] && (same_bits || differing_fields(last_out_[i], b) == 0) &&
-                      !depends_on_others(b, colliders_);
-        if (!same_bits) last_out_[i] = b;
-        const uint8_t still = may_settle(b, colliders_);
-        still_count_ += still;
-        still_count_ -= still_[i];
-        still_[i] = still;
-    }
-    return still_count_;
+void Frame::note_settled(const World& world) {
+    // Asleep bodies stay settled and as they were: only the stepped ones can
+    // change their standing.
+    for (const uint32_t i : active_) settling_.settle(i, world.bodies[i], colliders_);
 }
 
 const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
     report_.user_writes.clear();
     report_.completed.clear();
-    // Bodies that came out of the last frame unchanged, depending on no other
-    // body, and that nobody touched since, are left alone. Tracking that
-    // costs a copy of every body; it is done only while at least half of the
-    // bodies could settle (rain with a third at rest, or a crowd of solids
-    // that can never be quiet, would pay for nothing).
-    const bool track = worth_tracking_;
-    count_still_ = !track;  // step_bodies counts the still ones, all being active
-    counted_still_ = 0;
+    // Asleep bodies (settle.hpp) are left alone. Tracking them costs a copy
+    // of every body; it is done only while at least half of the bodies can
+    // settle (rain with a third at rest, or a crowd of solids that can never
+    // sleep, would pay for nothing).
+    const bool track = settling_.tracking();
     if (track) {
-        plan_quiet(world, opts);  // and the census
+        plan_sleep(world, opts);  // and the census
     } else {
-        quiet_.assign(world.bodies.size(), 0);
-        last_out_.clear();  // no longer known: nothing is settled
+        settling_.skip();  // step_bodies counts the bodies that can settle, all being awake
         census(world.bodies, {}, true);  // the bodies are the frame-start scene
     }
     // Every per-entity step sees the scene as it was before the tweens ran
@@ -367,9 +311,8 @@ const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
         step_tweens(world, opts.dt);
         run_physics(world.bodies, world.grid, opts, start_, {});
     }
-    const size_t still = track ? note_settled(world, opts) : counted_still_;
-    count_still_ = false;
-    worth_tracking_ = still * 2 >= world.bodies.size();
+    if (track) note_settled(world);
+    settling_.end_frame(world.bodies.size());
     return report_;
 }
 

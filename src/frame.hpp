@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "body.hpp"
+#include "frame_options.hpp"
+#include "settle.hpp"
 #include "stopwatch.hpp"
 #include "tile_grid.hpp"
 #include "tiles.hpp"
@@ -45,22 +47,6 @@ struct World {
     const TileGrid* grid = nullptr;  // none: tile steps do nothing
 };
 
-struct FrameOptions {
-    CollisionMode mode = CollisionMode::Swept;
-    double dt = 1000.0 / 60.0;  // ms; only tweens use it
-    // Beyond the seed. substeps: the physics after the tweens runs k times,
-    // each a 1/k sub-frame (SubStep), the one-shot acceleration in the first.
-    // resting_contacts: still bodies resting exactly on a tile or a still
-    // body skip gravity and hold up what lands on them (rests_on_tile,
-    // resolve_pair).
-    int substeps = 1;
-    bool resting_contacts = false;
-
-    bool same_physics(const FrameOptions& o) const {
-        return mode == o.mode && substeps == o.substeps && resting_contacts == o.resting_contacts;
-    }
-};
-
 // The steps of a frame, in order, for reporting what each cost.
 enum StepId : int {
     kStepTweens, kStepAcceleration, kStepGravity, kStepVelocityX, kStepTileX, kStepVelocityY,
@@ -70,7 +56,8 @@ const char* step_name(StepId id);  // the skip symbol's spelling: "velocity-x", 
 
 // For one step of the last frame: bodies it applied to, bodies it left
 // alone (guarded out, skipped by #:skip-pipelines, nothing to do such as no
-// speed on a tile step's axis, not solid, not in a group), and wall time.
+// speed on a tile step's axis, not solid, not in a group, asleep), and wall
+// time.
 struct StepStats {
     uint64_t processed = 0;
     uint64_t skipped = 0;
@@ -79,14 +66,6 @@ struct StepStats {
 struct FrameStats {
     StepStats step[kStepCount];
 };
-
-// Whether a body's frame can depend on other bodies: it pushes or is pushed
-// (solid, not a ghost), follows a group, or — when any supporters exist —
-// looks for one under its feet.
-bool depends_on_others(const Body& b, bool supporters_exist);
-// Whether any body collides (Body::collides): then ground detection has
-// supporters to look for.
-bool any_collider(std::span<const Body> bodies);
 
 // What a frame did besides moving bodies.
 struct FrameReport {
@@ -110,23 +89,22 @@ public:
     // `scene` is the frame-start state ground detection reads (before the
     // tweens); empty means the bodies as they are now. With `writes` (one per
     // body), each step's first writes to watched fields are logged in order.
-    // Bodies marked in `quiet` are left as they are: the caller knows the
-    // frame cannot change them (unchanged last frame, under the same map and
-    // mode, depending on no other body).
+    // Bodies marked in `asleep` (Settling::asleep) are left as they are: the
+    // caller knows the frame cannot change them (settle.hpp).
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                       std::span<const Body> scene = {}, std::span<FirstWrites> writes = {},
-                      std::span<const uint8_t> quiet = {});
+                      std::span<const uint8_t> asleep = {});
 
 private:
     void step_tweens(World& world, double dt);
-    void plan_quiet(const World& world, const FrameOptions& opts);
-    size_t note_settled(const World& world, const FrameOptions& opts);
+    void plan_sleep(const World& world, const FrameOptions& opts);
+    void note_settled(const World& world);
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      int round, std::span<FirstWrites> writes);
     // The census finds each body's roles; with `take`, in the same sweep it
     // copies out the supporters, which the bodies then must be the
     // frame-start scene for (a large scene is read once instead of twice).
-    void census(std::span<const Body> bodies, std::span<const uint8_t> quiet, bool take);
+    void census(std::span<const Body> bodies, std::span<const uint8_t> asleep, bool take);
     void begin_census(size_t n, bool take);
     void enlist(const Body& b, size_t i);  // the census's count of one body's roles
     void end_census();
@@ -156,7 +134,7 @@ private:
     std::vector<Supporter> supporters_;
     std::vector<std::ptrdiff_t> support_slot_;
     // This call's bodies by role, found in one sweep (a frame changes no
-    // flag): those the per-entity steps visit (not quiet), those that
+    // flag): those the per-entity steps visit (awake), those that
     // collide, in list order, and how many follow a group.
     std::vector<uint32_t> active_;
     std::vector<size_t> members_;
@@ -168,19 +146,7 @@ private:
     SupportIndex support_index_;     // over supporters_, when there are many
     FrameReport report_;
     FrameStats stats_;
-    // Settled bodies (World path): each body's state after the last frame,
-    // whether that frame left it unchanged while it depended on nobody, and
-    // the map and mode it ran under; this frame's plan.
-    std::vector<Body> last_out_;
-    std::vector<uint8_t> settled_, quiet_, untouched_, tweened_;
-    std::vector<uint8_t> still_;  // by body, after the last frame: still, depending on nobody
-    size_t still_count_ = 0;
-    // When not tracking, step_bodies counts the bodies that end the frame still.
-    bool count_still_ = false;
-    size_t counted_still_ = 0;
-    const TileGrid* last_grid_ = nullptr;
-    FrameOptions last_opts_;
-    bool worth_tracking_ = true;
+    SettleTracker settling_;  // which bodies step() may leave asleep (World path)
     bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
 };
 

@@ -1,11 +1,21 @@
 #include "tile_grid.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace ds {
+
+namespace {
+
+constinit std::atomic<uint64_t> last_revision{0};
+
+}  // namespace
+
+uint64_t GridRevision::next() { return last_revision.fetch_add(1, std::memory_order_relaxed) + 1; }
 
 TileGrid::TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8_t> solid,
                    int64_t origin_col, int64_t origin_row)
@@ -15,6 +25,31 @@ TileGrid::TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8
         throw std::invalid_argument("tile grid: sizes must be positive");
     if (solid_.size() != static_cast<size_t>(cols) * static_cast<size_t>(rows))
         throw std::invalid_argument("tile grid: solid mask is not cols*rows long");
+}
+
+TileGrid::TileGrid(TileGrid&& o) noexcept { *this = std::move(o); }
+
+TileGrid& TileGrid::operator=(TileGrid&& o) noexcept {
+    if (this == &o) return *this;
+    cols_ = std::exchange(o.cols_, 0);
+    rows_ = std::exchange(o.rows_, 0);
+    tile_w_ = o.tile_w_;
+    tile_h_ = o.tile_h_;
+    origin_col_ = std::exchange(o.origin_col_, 0);
+    origin_row_ = std::exchange(o.origin_row_, 0);
+    solid_ = std::move(o.solid_);
+    o.solid_.clear();
+    revision_.bump();
+    o.revision_.bump();
+    return *this;
+}
+
+void TileGrid::set_solid(int64_t col, int64_t row, bool solid) {
+    const int64_t c = col - origin_col_, r = row - origin_row_;
+    if (c < 0 || r < 0 || c >= cols_ || r >= rows_)
+        throw std::out_of_range("tile grid: set_solid outside the grid");
+    solid_[static_cast<size_t>(r * cols_ + c)] = solid ? 1 : 0;
+    revision_.bump();
 }
 
 CellRange TileGrid::clip(CellRange r, int64_t origin, int count) {

@@ -1,6 +1,8 @@
 // The solid-cell grid physics reads: which cells of a tile map block bodies.
 // Built from a loaded Tiled map or directly from a gid vector; knows nothing
-// of XML. Cells outside the grid are empty.
+// of XML. Cells outside the grid are empty. A grid is known by its revision,
+// never by its address: whatever is kept per map (settled bodies, above
+// all) compares revisions.
 #pragma once
 #include <algorithm>
 #include <bit>
@@ -27,6 +29,26 @@ inline CellRange cells_of(Num pos, Num size, int tile);
 // ⌊pos/tile⌋ on its own (the ground probe's row).
 inline int64_t cell_of(Num pos, int tile);
 
+// A grid revision: drawn from one process-wide counter whenever a grid is
+// made, copied, assigned or edited, so no two states of any grids in the
+// process share one — not even a new grid built where an old one was. Never 0
+// (callers keep 0 for "no grid").
+class GridRevision {
+public:
+    GridRevision() : n_(next()) {}
+    GridRevision(const GridRevision&) : n_(next()) {}
+    GridRevision& operator=(const GridRevision&) {
+        n_ = next();
+        return *this;
+    }
+    void bump() { n_ = next(); }
+    uint64_t value() const { return n_; }
+
+private:
+    static uint64_t next();
+    uint64_t n_;
+};
+
 class TileGrid {
 public:
     TileGrid() = default;
@@ -35,6 +57,20 @@ public:
     // whose chunks start left of or above the origin).
     TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8_t> solid,
              int64_t origin_col = 0, int64_t origin_row = 0);
+    // A copy is a grid of its own: same cells, a new revision. A moved-from
+    // grid is left empty (0 × 0), with a new revision too.
+    TileGrid(const TileGrid&) = default;
+    TileGrid& operator=(const TileGrid&) = default;
+    TileGrid(TileGrid&& o) noexcept;
+    TileGrid& operator=(TileGrid&& o) noexcept;
+
+    // This state of the grid (see GridRevision): every edit changes it.
+    uint64_t revision() const { return revision_.value(); }
+
+    // Makes a cell solid or empty (map cells, as solid() takes them) and
+    // bumps the revision. The grid does not grow: a cell outside it is
+    // std::out_of_range.
+    void set_solid(int64_t col, int64_t row, bool solid);
 
     int cols() const { return cols_; }
     int rows() const { return rows_; }
@@ -61,7 +97,11 @@ private:
     int cols_ = 0, rows_ = 0, tile_w_ = 1, tile_h_ = 1;
     int64_t origin_col_ = 0, origin_row_ = 0;
     std::vector<uint8_t> solid_;
+    GridRevision revision_;
 };
+
+// The revision of a map, or 0 for none.
+inline uint64_t revision_of(const TileGrid* grid) { return grid ? grid->revision() : 0; }
 
 // Defined here so the tile steps, which ask for a few per body, inline them.
 namespace cell_math {

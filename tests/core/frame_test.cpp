@@ -1,6 +1,8 @@
 // One whole engine pass (SPEC §5): tweens, per-entity steps against the
 // frame-start scene, entity push-apart, groups.
 #include <algorithm>
+#include <memory>
+#include <new>
 #include <vector>
 
 #include "frame.hpp"
@@ -640,6 +642,83 @@ TEST_CASE("settled bodies are left alone, until something they depend on changes
     w.grid = nullptr;
     f.step(w, opts());
     CHECK_EXACT(w.bodies[0].y, 17);
+}
+
+TEST_CASE("settled bodies wake when their grid is edited in place") {
+    // Two boxes rest on the floor and settle; the tile under one is taken
+    // out: the same grid, at the same address, in a new revision. Both wake
+    // (the map is one of the conditions every settled body assumes); the one
+    // over the hole falls, the other lands back where it was.
+    auto g = grid({"....", "....", "####"});
+    World w;
+    w.grid = &g;
+    Body b = box(16, 16, 16, 16);
+    b.gravity = true;
+    b.on_ground = true;
+    Body c = b;
+    c.x = I(48);
+    w.bodies = {b, c};
+    Frame f;
+    for (int k = 0; k < 3; ++k) f.step(w, opts());
+    REQUIRE(f.stats().step[ds::kStepGravity].processed == 0);  // both settled
+    g.set_solid(1, 2, false);
+    f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepGravity].processed == 2);
+    CHECK_EXACT(w.bodies[0].y, 17);
+    CHECK_EXACT(w.bodies[0].vy, 1);
+    CHECK_FALSE(w.bodies[0].on_ground);
+    CHECK(same_body(w.bodies[1], c));
+    // A tile put back in place is noticed as well: hovering (gravity
+    // skipped) over an empty row, a box settles off the ground, and stands
+    // once a tile appears under its feet.
+    auto open = grid({"....", "....", "...."});
+    Body hover = box(0, 16, 16, 16);
+    hover.gravity = true;
+    hover.skip = ds::kSkipGravity;
+    World h;
+    h.grid = &open;
+    h.bodies = {hover};
+    Frame fh;
+    for (int k = 0; k < 3; ++k) fh.step(h, opts());
+    REQUIRE(fh.stats().step[ds::kStepOnSolid].processed == 0);
+    REQUIRE_FALSE(h.bodies[0].on_ground);
+    open.set_solid(0, 2, true);
+    fh.step(h, opts());
+    CHECK(h.bodies[0].on_ground);
+}
+
+TEST_CASE("settled bodies wake when a new grid is built where the old one was") {
+    // The old grid is destroyed and a new one, without the floor, built in
+    // the same storage: the World's pointer does not change, the revision
+    // does, and the settled box falls.
+    alignas(ds::TileGrid) unsigned char storage[sizeof(ds::TileGrid)];
+    auto* floor = new (storage) ds::TileGrid(grid({"....", "....", "####"}));
+    World w;
+    w.grid = floor;
+    Body b = box(16, 16, 16, 16);
+    b.gravity = true;
+    b.on_ground = true;
+    w.bodies = {b};
+    Frame f;
+    for (int k = 0; k < 3; ++k) f.step(w, opts());
+    REQUIRE(f.stats().step[ds::kStepGravity].processed == 0);
+    std::destroy_at(floor);
+    auto* bare = new (storage) ds::TileGrid(grid({"....", "....", "...."}));
+    REQUIRE(static_cast<const void*>(bare) == static_cast<const void*>(w.grid));
+    f.step(w, opts());
+    CHECK(f.stats().step[ds::kStepGravity].processed == 1);
+    CHECK_EXACT(w.bodies[0].y, 17);
+    CHECK_EXACT(w.bodies[0].vy, 1);
+    // Assigning a new grid over the old one is the same case.
+    for (int k = 0; k < 8; ++k) f.step(w, opts());  // falls off the map, into the void
+    *bare = grid({"....", "....", "####"});
+    w.bodies = {b};
+    for (int k = 0; k < 4; ++k) f.step(w, opts());  // one frame more: tracking resumes first
+    REQUIRE(f.stats().step[ds::kStepGravity].processed == 0);
+    *bare = grid({"....", "....", "...."});
+    f.step(w, opts());
+    CHECK_EXACT(w.bodies[0].y, 17);
+    std::destroy_at(bare);
 }
 
 TEST_CASE("settled bodies are tracked once half of them end a frame still") {

@@ -1,5 +1,8 @@
 // Cell ranges of a box and the TileGrid itself (SPEC §4 "Tile cells of a box").
+#include <memory>
+#include <new>
 #include <stdexcept>
+#include <utility>
 
 #include "support.hpp"
 #include "tile_grid.hpp"
@@ -195,6 +198,68 @@ TEST_CASE("TileGrid: a mask of the wrong length or a non-positive tile is reject
     CHECK_THROWS_AS(TileGrid(2, 2, 0, 16, {1, 0, 0, 1}), std::invalid_argument);
     CHECK_THROWS_AS(TileGrid(2, 2, 16, -16, {1, 0, 0, 1}), std::invalid_argument);
     CHECK_NOTHROW(TileGrid(0, 0, 16, 16, {}));
+}
+
+TEST_CASE("TileGrid: set_solid edits a cell in map coordinates and bumps the revision") {
+    TileGrid g(2, 2, 16, 16, {0, 0, 0, 1}, -1, 3);
+    const uint64_t r0 = g.revision();
+    CHECK(r0 != 0);
+    g.set_solid(-1, 3, true);
+    CHECK(g.solid(-1, 3));
+    const uint64_t r1 = g.revision();
+    CHECK(r1 != r0);
+    g.set_solid(0, 4, false);
+    CHECK_FALSE(g.solid(0, 4));
+    CHECK(g.revision() != r1);
+    // Every edit bumps it, even one that leaves the cell as it was.
+    const uint64_t r2 = g.revision();
+    g.set_solid(0, 4, false);
+    CHECK(g.revision() != r2);
+    // Outside the grid: nothing to edit.
+    const uint64_t r3 = g.revision();
+    CHECK_THROWS_AS(g.set_solid(1, 3, true), std::out_of_range);
+    CHECK_THROWS_AS(g.set_solid(-2, 3, false), std::out_of_range);
+    CHECK_THROWS_AS(g.set_solid(0, 5, true), std::out_of_range);
+    CHECK(g.revision() == r3);
+}
+
+TEST_CASE("TileGrid: no two grids share a revision, whatever their address") {
+    TileGrid a = grid({"##"});
+    TileGrid b = grid({"##"});
+    CHECK(a.revision() != b.revision());
+    // A copy has the same cells and a revision of its own; assigning gives
+    // the target a new one.
+    TileGrid c = a;
+    CHECK(c.solid(1, 0));
+    CHECK(c.revision() != a.revision());
+    const uint64_t before = b.revision();
+    b = a;
+    CHECK(b.revision() != before);
+    CHECK(b.revision() != a.revision());
+    // Moving: the target gets a new revision, the source is left empty with
+    // one of its own.
+    const uint64_t ra = a.revision(), rc = c.revision();
+    TileGrid d = std::move(a);
+    CHECK(d.solid(0, 0));
+    CHECK(d.revision() != ra);
+    CHECK(a.cols() == 0);
+    CHECK(a.rows() == 0);
+    CHECK_FALSE(a.solid(0, 0));
+    CHECK(a.revision() != ra);
+    c = std::move(d);
+    CHECK(c.solid(1, 0));
+    CHECK(c.revision() != rc);
+    CHECK(d.cols() == 0);
+    // A new grid built in the very storage of an old one: same address, new
+    // revision.
+    alignas(TileGrid) unsigned char storage[sizeof(TileGrid)];
+    auto* first = new (storage) TileGrid(grid({"#."}));
+    const uint64_t r_first = first->revision();
+    std::destroy_at(first);
+    auto* second = new (storage) TileGrid(grid({"#."}));
+    CHECK(static_cast<void*>(second) == static_cast<void*>(first));
+    CHECK(second->revision() != r_first);
+    std::destroy_at(second);
 }
 
 TEST_CASE("cells of exact coordinates far past int64 do not overflow") {

@@ -372,5 +372,15 @@
 (test-eq "a new list with the same entities takes the full path, and is unchanged"
   (car (scene-entities settled))
   (car (scene-entities (step-scene (update-scene settled #:entities (list-copy (scene-entities settled))) 16))))
+;;; Settled marks belong to the map (and options) they were made under: a
+;;; list that shrinks while stepped on another map and then grows back
+;;; brings back entities that settled on the old map; on this one they fall.
+(step-scene settled 16)
+(step-scene settled 16)
+(define bare-map (make-tilemap 4 4 16 16 (make-list 16 0) '(1)))
+(step-scene (update-scene settled #:entities (list (car (scene-entities settled))) #:tilemap bare-map) 16)
+(test-equal "a list that shrank on another map grows back: every entity falls" '(41 41 41 41)
+  (map (lambda (e) (entity-ref e #:y))
+       (scene-entities (step-scene (update-scene settled #:tilemap bare-map) 16))))
 
 (test-end "world")

@@ -1,0 +1,24 @@
+// What a whole frame runs under besides the bodies and the map.
+#pragma once
+#include "tiles.hpp"
+
+namespace ds {
+
+struct FrameOptions {
+    CollisionMode mode = CollisionMode::Swept;
+    double dt = 1000.0 / 60.0;  // ms; only tweens use it
+    // Beyond the seed. substeps: the physics after the tweens runs k times,
+    // each a 1/k sub-frame (SubStep), the one-shot acceleration in the first.
+    // resting_contacts: still bodies resting exactly on a tile or a still
+    // body skip gravity and hold up what lands on them (rests_on_tile,
+    // resolve_pair).
+    int substeps = 1;
+    bool resting_contacts = false;
+
+    // The options physics reads (all but dt, which only tweens use).
+    bool same_physics(const FrameOptions& o) const {
+        return mode == o.mode && substeps == o.substeps && resting_contacts == o.resting_contacts;
+    }
+};
+
+}  // namespace ds
