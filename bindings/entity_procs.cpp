@@ -12,6 +12,7 @@
 #include "scm_number.hpp"
 #include "steps.hpp"
 #include "tilemap_type.hpp"
+#include "ground.hpp"
 #include "tiles.hpp"
 
 namespace ds::guile {
@@ -60,7 +61,7 @@ SCM resolve_tile_y_1(SCM e, SCM tm, SCM mode) {
 }
 
 // The scene's entities, decoded; every slot holding the entity itself (eq?)
-// is left out as a supporter, as SPEC §4 says "not eq?".
+// is left out as a supporter, as semantics §4 says "not eq?".
 SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
     Failure f{.proc = "detect-on-solid"};
     SCM result = e;

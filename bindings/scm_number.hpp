@@ -1,5 +1,5 @@
 // Scheme reals ⇄ ds::Num. Fixnums and flonums take a fast path; exactness
-// survives the round trip (SPEC §1).
+// survives the round trip (semantics §1).
 #pragma once
 #include <libguile.h>
 
@@ -12,7 +12,7 @@ namespace ds::guile {
 enum class NumCheck { Ok, NotReal, NotFinite };
 
 // Exact integers stay exact at any size (beyond 2^53 they are rounded to the
-// nearest double, as the core computes in double: SPEC §1); exact non-integer
+// nearest double, as the core computes in double: semantics §1); exact non-integer
 // rationals and flonums become flonums. Non-reals and NaN/±inf are refused.
 inline NumCheck num_from_scm(SCM v, Num& out) {
     if (SCM_I_INUMP(v)) {

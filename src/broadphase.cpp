@@ -5,17 +5,10 @@
 #include <climits>
 #include <cmath>
 
+#include "constants.hpp"
 #include "contacts.hpp"
 
 namespace ds {
-
-namespace {
-
-// A box spanning more cells than this on an axis is not put in the grid:
-// it is checked against everyone (a floor under a crowd).
-constexpr int64_t kMaxSpan = 8;
-
-}  // namespace
 
 bool PairSweep::same_cells(const CellRange& a, const CellRange& b) {
     return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
@@ -30,7 +23,7 @@ PairSweep::CellRange PairSweep::cells(const Body& b) const {
 }
 
 bool PairSweep::is_big(const CellRange& r) const {
-    return r.x1 - r.x0 >= kMaxSpan || r.y1 - r.y0 >= kMaxSpan;
+    return r.x1 - r.x0 >= kMaxFiledSpan || r.y1 - r.y0 >= kMaxFiledSpan;
 }
 
 size_t PairSweep::bucket(int64_t cx, int64_t cy) const { return layout_.bucket(cx, cy); }

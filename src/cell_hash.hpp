@@ -8,16 +8,17 @@
 #include <cstdint>
 #include <vector>
 
+#include "constants.hpp"
+
 namespace ds {
 
 // ⌊v / cell⌋ given 1/cell. Monotone in v (a product with a positive constant
 // rounds monotonely), so overlapping intervals always share a cell; huge
 // coordinates are clamped (they only make extra candidates).
 inline int64_t cell_index(double v, double inv_cell) {
-    constexpr double kLimit = 4.0e18;
     // ⌊c⌋ by truncation and a correction: without SSE4.1's roundsd, std::floor
     // is a dozen instructions, and the grids take four of these per box.
-    const double c = std::clamp(v * inv_cell, -kLimit, kLimit);
+    const double c = std::clamp(v * inv_cell, -kCellIndexLimit, kCellIndexLimit);
     const auto t = static_cast<int64_t>(c);
     return t - (c < static_cast<double>(t));
 }
@@ -29,7 +30,7 @@ inline int64_t cell_index(double v, double inv_cell) {
 // selection over 100000 sizes every frame. n must be positive.
 template <class Size>
 double inverse_cell_size(size_t n, std::vector<double>& scratch, Size&& size) {
-    const size_t stride = std::max<size_t>(1, n / 1024);
+    const size_t stride = std::max<size_t>(1, n / kCellSizeSamples);
     scratch.clear();
     for (size_t k = 0; k < n; k += stride) scratch.push_back(size(k));
     const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "constants.hpp"
 #include "broadphase.hpp"
 
 namespace ds {
@@ -110,15 +111,13 @@ void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
         }
 }
 
-// Below this many solid bodies trying every pair is cheaper than a grid.
-constexpr size_t kSweepFrom = 48;
 
 void run_pairs(std::span<Body> bodies, std::span<const size_t> members, PairMethod method,
                std::span<const uint8_t> resting) {
     thread_local PairSweep sweep;
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
-                      (method == PairMethod::Auto && members.size() >= kSweepFrom);
+                      (method == PairMethod::Auto && members.size() >= kPairGridFrom);
     if (grid) sweep.run(bodies, members, resting);
     else all_pairs(bodies, members, resting);
 }

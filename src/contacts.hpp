@@ -26,7 +26,7 @@ bool collision_eligible(const Body& a, const Body& b);
 // Pushes one eligible pair apart (a is the earlier in list order). With
 // resting contacts, a body that rested at the start of the (sub-)frame holds
 // up one whose centre is above its own, as an immovable body would: the
-// other lands on it (SPEC §4's immovable rule, first case).
+// other lands on it (semantics §4's immovable rule, first case).
 void resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
 
 // The pairs push-apart resolved, as body indices (the earlier first), in the

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "constants.hpp"
 #include "contacts.hpp"
+#include "ground.hpp"
 #include "groups.hpp"
 #include "steps.hpp"
 #include "stopwatch.hpp"
@@ -112,17 +114,16 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
     // zero speed.
     const CollisionMode mode = opts.mode;
     const SubStep sub = SubStep::of_frame(opts.substeps);
-    // A handful of supporters are cheaper to scan than to index.
     const auto t0 = Clock::now();
-    const bool indexed = supporters_.size() >= 32;
+    const bool indexed = supporters_.size() >= kSupportIndexFrom;
     if (indexed) support_index_.build(supporters_);
     stats_.step[kStepOnSolid].ms += ms_since(t0);
     resting_.assign(opts.resting_contacts ? bodies.size() : 0, 0);
     const std::span<const uint32_t> active(active_);
     uint64_t before[kStepCount];
     for (int id = 0; id < kStepCount; ++id) before[id] = stats_.step[id].processed;
-    for (size_t lo = 0; lo < active.size(); lo += kBlock) {
-        const auto block = active.subspan(lo, std::min(kBlock, active.size() - lo));
+    for (size_t lo = 0; lo < active.size(); lo += kStepBlock) {
+        const auto block = active.subspan(lo, std::min(kStepBlock, active.size() - lo));
         auto t = Clock::now();
         if (round == 0)
             t = pass(kStepAcceleration, block, bodies, writes, t,

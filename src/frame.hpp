@@ -1,4 +1,4 @@
-// One whole engine pass, the composition of default-engine-update (SPEC §5):
+// One whole engine pass, the composition of default-engine-update (semantics §5):
 // tweens; per-entity motion and tile steps against the frame-start scene;
 // then entity push-apart; then groups.
 #pragma once
@@ -11,6 +11,8 @@
 #include "settle.hpp"
 #include "stopwatch.hpp"
 #include "tile_grid.hpp"
+#include "support_index.hpp"
+#include "supporter.hpp"
 #include "tiles.hpp"
 #include "tween.hpp"
 
@@ -124,8 +126,6 @@ private:
     void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                      Bulk&& bulk);
 
-    // Bodies per block of the per-entity steps: 1024 × 168 B (172 KB) stays in L2.
-    static constexpr size_t kBlock = 1024;
 
     std::vector<Body> start_;  // the frame-start scene (before tweens)
     // The frame-start bodies that can hold another up (solid, not ghosts),

@@ -1,14 +1,12 @@
-// The per-entity motion steps (SPEC §4), each guarded and skippable exactly as
+// The per-entity motion steps (semantics §4), each guarded and skippable exactly as
 // default-engine-update would apply it. They read and write one body, and
 // return whether they applied (false: guarded out or skipped).
 #pragma once
 #include "body.hpp"
+#include "constants.hpp"
 
 namespace ds {
 
-constexpr double kGravity = 1.0;            // *gravity*, px/frame²
-constexpr double kJumpForce = 15.0;         // *jump-force*
-constexpr double kOnSolidTolerance = 4.0;   // *on-solid-tolerance*, px and px/frame
 
 // A sub-frame's share of a frame (beyond the seed: make-game substeps: k).
 // The seed's frame is whole (h = 1) and its steps stay exactly as they were;

@@ -5,16 +5,11 @@
 #include <climits>
 #include <cmath>
 
+#include "constants.hpp"
 #include "cell_hash.hpp"
 #include "steps.hpp"
 
 namespace ds {
-
-namespace {
-
-constexpr int64_t kMaxSpan = 8;  // columns; wider supporters go to the big list
-
-}  // namespace
 
 SupportIndex::Cells SupportIndex::top_cells(const Supporter& o) const {
     const double xa = o.x, xb = o.x + o.w;
@@ -45,7 +40,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     tops_.clear();
     for (const Supporter& o : bodies) {
         const Cells r = tops_.emplace_back(top_cells(o));
-        if (r.x1 - r.x0 >= kMaxSpan) continue;
+        if (r.x1 - r.x0 >= kMaxFiledSpan) continue;
         x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
         x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
     }
@@ -60,7 +55,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     };
     for (uint32_t k = 0; k < n; ++k) {
         const Cells& r = tops_[k];
-        if (r.x1 - r.x0 >= kMaxSpan) big_.push_back(k);
+        if (r.x1 - r.x0 >= kMaxFiledSpan) big_.push_back(k);
         else each_cell(r, [&](size_t h) { ++start_[h + 1]; });
     }
     for (size_t h = 0; h < buckets; ++h) start_[h + 1] += start_[h];
@@ -68,7 +63,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     cursor_.assign(start_.begin(), start_.end() - 1);
     for (uint32_t k = 0; k < n; ++k) {
         const Cells& r = tops_[k];
-        if (r.x1 - r.x0 >= kMaxSpan) continue;
+        if (r.x1 - r.x0 >= kMaxFiledSpan) continue;
         each_cell(r, [&](size_t h) { items_[cursor_[h]++] = k; });
     }
 }

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "constants.hpp"
 #include "body.hpp"
 #include "cell_hash.hpp"
 #include "supporter.hpp"
@@ -42,7 +43,6 @@ public:
     }
 
 private:
-    static constexpr int64_t kMaxQuerySpan = 64;  // columns
     struct Cells {
         int64_t x0, y0, x1, y1;
     };

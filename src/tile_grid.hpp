@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "constants.hpp"
 #include "number.hpp"
 
 namespace ds {
@@ -112,8 +113,7 @@ inline int64_t ceil_div(int64_t a, int64_t b) { return a / b + ((a % b != 0) && 
 
 // Doubles beyond int64 are clamped: such cells lie outside any grid anyway.
 inline int64_t to_cell(double c) {
-    constexpr double kLimit = 4.0e18;
-    return static_cast<int64_t>(std::clamp(c, -kLimit, kLimit));
+    return static_cast<int64_t>(std::clamp(c, -kCellIndexLimit, kCellIndexLimit));
 }
 
 // Tiles are nearly always a power of two wide: a shift then does the

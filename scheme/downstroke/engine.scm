@@ -13,7 +13,7 @@
                           %display-draw! %display-stats %display-save-png %display-pixel
                           %display-clear-commands! %display-set-input-map! %display-poll!
                           %display-open-window! %display-close-window! %open-audio!
-                          %play-sound %note-pushed-pairs!))
+                          %play-sound %note-pushed-pairs! %max-substeps))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
@@ -80,9 +80,9 @@ collision mode, substeps and resting contacts."
         (game-scene-set! game (step-scene scene dt #:substeps (game-substeps game)))))))
 
 (define (check-substeps who k)
-  (unless (and (exact-integer? k) (<= 1 k 1024))
-    (scm-error 'wrong-type-arg who "substeps: expected an exact integer from 1 to 1024, got ~S"
-               (list k) #f)))
+  (unless (and (exact-integer? k) (<= 1 k %max-substeps))
+    (scm-error 'wrong-type-arg who "substeps: expected an exact integer from 1 to ~S, got ~S"
+               (list %max-substeps k) #f)))
 
 (define (game-substeps-set! game k)
   "Split GAME's physics frames into K sub-frames from the next frame on."

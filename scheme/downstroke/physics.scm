@@ -9,9 +9,10 @@
             apply-velocity-y apply-velocity resolve-tile-collisions-x
             resolve-tile-collisions-y detect-on-solid step-scene))
 
-(define *gravity* 1)
-(define *jump-force* 15)
-(define *on-solid-tolerance* 4)
+;; The rules' numbers, from the core (src/constants.hpp): one home for each.
+(define *gravity* %gravity)
+(define *jump-force* %jump-force)
+(define *on-solid-tolerance* %on-solid-tolerance)
 
 (define collision-mode
   (make-parameter 'swept

@@ -1,4 +1,4 @@
-;;; (downstroke reference) — the physics rules of SPEC §1–§6 in plain Scheme.
+;;; (downstroke reference) — the physics rules of semantics §1–§6 in plain Scheme.
 ;;;
 ;;; An executable specification: the same procedures as (downstroke physics),
 ;;; written for reading, not for speed, and sharing nothing with the native
@@ -46,7 +46,7 @@
 
 ;;; ---------------------------------------------------------------- reading and writing entities (§2)
 
-;;; Every step first checks its entities as a whole (SPEC §2): a malformed
+;;; Every step first checks its entities as a whole (semantics §2): a malformed
 ;;; plist, or a wrongly typed physics key (first occurrence), is an error
 ;;; naming the step, the key and the value.
 
@@ -443,7 +443,7 @@ own, as an immovable body would."
 (define (resolve-entity-collisions entities)
   "One pass over the pairs (i, j), i < j, in list order, each seeing what
 earlier pairs did: solid, non-ghost, strictly overlapping pairs are pushed
-apart (SPEC §4)."
+apart (semantics §4)."
   (check-all 'resolve-entity-collisions entities)
   (push-apart entities (map (const #f) entities)))
 

@@ -1,5 +1,5 @@
 // A Tiled map in memory: tilesets, tile layers (raw gids, flip bits kept for
-// drawing), object layers, and the solidity rules of SPEC §7 that turn it
+// drawing), object layers, and the solidity rules of semantics §7 that turn it
 // into the TileGrid physics reads.
 #pragma once
 #include <cstdint>
@@ -113,7 +113,7 @@ struct Tilemap {
     const Tileset* tileset_for(uint32_t gid) const;
     // Solid by its tileset's metadata or by extra_solid_gids.
     bool gid_solid(uint32_t gid) const;
-    // Solid when any layer makes it so (SPEC §7).
+    // Solid when any layer makes it so (semantics §7).
     bool cell_solid(int64_t col, int64_t row) const;
     // The physics grid over the bounding box of every layer.
     TileGrid solid_grid() const;

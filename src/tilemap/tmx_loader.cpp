@@ -1,4 +1,4 @@
-// load_tilemap: a TMX map and its TSX tilesets read with tinyxml2 (SPEC §7).
+// load_tilemap: a TMX map and its TSX tilesets read with tinyxml2 (semantics §7).
 // Every failure is a MapError naming the file and, where there is one, the
 // line of the offending element; unknown elements and attributes are skipped.
 #include <tinyxml2.h>

@@ -7,6 +7,7 @@
 
 #include "contacts.hpp"
 #include "support_index.hpp"
+#include "ground.hpp"
 #include "tiles.hpp"
 #include "support.hpp"
 

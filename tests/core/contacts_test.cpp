@@ -1,4 +1,4 @@
-// Entity against entity: aabb_overlap and the sequential push-apart (SPEC §4).
+// Entity against entity: aabb_overlap and the sequential push-apart (semantics §4).
 #include <vector>
 
 #include "contacts.hpp"

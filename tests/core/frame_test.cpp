@@ -1,4 +1,4 @@
-// One whole engine pass (SPEC §5): tweens, per-entity steps against the
+// One whole engine pass (semantics §5): tweens, per-entity steps against the
 // frame-start scene, entity push-apart, groups.
 #include <algorithm>
 #include <memory>
@@ -425,7 +425,7 @@ TEST_CASE("tweens run before the motion steps") {
 }
 
 TEST_CASE("the frame-start scene is taken before the tweens") {
-    // SPEC §5: every per-entity step sees the scene as it was when the frame
+    // semantics §5: every per-entity step sees the scene as it was when the frame
     // began. The platform is tweened from y 100 up to 64 this frame, but
     // ground detection reads it at 100: feet at 49 + 16 = 65, |65 - 100| > 4.
     World w;

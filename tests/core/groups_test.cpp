@@ -1,4 +1,4 @@
-// Rigid groups: members follow the first origin of their group (SPEC §4).
+// Rigid groups: members follow the first origin of their group (semantics §4).
 #include <vector>
 
 #include "groups.hpp"

@@ -1,4 +1,4 @@
-// ds::Num: a double plus whether it is an exact integer (SPEC §1).
+// ds::Num: a double plus whether it is an exact integer (semantics §1).
 #include <cmath>
 
 #include "number.hpp"

@@ -1,4 +1,4 @@
-// The motion steps, skip bits and changed_fields (SPEC §1, §3, §4).
+// The motion steps, skip bits and changed_fields (semantics §1, §3, §4).
 #include <cmath>
 #include <cstring>
 

@@ -1,4 +1,4 @@
-// Cell ranges of a box and the TileGrid itself (SPEC §4 "Tile cells of a box").
+// Cell ranges of a box and the TileGrid itself (semantics §4 "Tile cells of a box").
 #include <memory>
 #include <new>
 #include <stdexcept>

@@ -1,8 +1,9 @@
 // Bodies against solid tiles: per-axis snap-out (discrete and swept) and the
-// ground probe (SPEC §4).
+// ground probe (semantics §4).
 #include <vector>
 
 #include "support.hpp"
+#include "ground.hpp"
 #include "tiles.hpp"
 
 using namespace dst;

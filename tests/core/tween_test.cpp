@@ -1,4 +1,4 @@
-// Easing curves, tween timing and tween values (SPEC §6).
+// Easing curves, tween timing and tween values (semantics §6).
 #include <string>
 #include <string_view>
 

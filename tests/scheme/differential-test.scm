@@ -89,7 +89,7 @@
 (define per-entity-steps
   '(step-tweens apply-acceleration apply-gravity apply-velocity-x apply-velocity-y
     apply-velocity resolve-tile-collisions-x resolve-tile-collisions-y detect-on-solid))
-;;; The frame's composition (SPEC §5), then the two bulk steps.
+;;; The frame's composition (semantics §5), then the two bulk steps.
 (define frame-stages
   '(step-tweens apply-acceleration apply-gravity apply-velocity-x resolve-tile-collisions-x
     apply-velocity-y resolve-tile-collisions-y detect-on-solid))
@@ -97,7 +97,7 @@
 ;;; ---------------------------------------------------------------- the two sides
 (define native (resolve-interface '(downstroke physics)))
 
-;;; The per-entity steps of IFACE composed into a frame, as SPEC §5 describes
+;;; The per-entity steps of IFACE composed into a frame, as semantics §5 describes
 ;;; default-engine-update; detect-on-solid sees the frame-start scene without
 ;;; the entity's own slot, as the native frame step does, and an entity that
 ;;; ends the frame equal to how it started is kept as the very same object.

@@ -70,7 +70,7 @@
 (test-assert "a skip list that is not a list: message names the key"
   (mentions? (error-text (lambda () (entity-skips-pipeline? '(#:skip-pipelines gravity) 'gravity)))
              "entity-skips-pipeline?" "#:skip-pipelines" "gravity"))
-;; SPEC §2: a wrongly typed value is an error naming the procedure, the key
+;; semantics §2: a wrongly typed value is an error naming the procedure, the key
 ;; and the value; a skip list must be a list of symbols, here as in the
 ;; native steps.
 (test-assert "a skip list holding a non-symbol is an error"

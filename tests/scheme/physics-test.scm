@@ -114,7 +114,7 @@
 (let ((e (list #:x -0.0 #:vx -0.0)))
   (test-eq "x −0.0, vx −0.0: −0.0, unchanged" e (apply-velocity-x e #f 16)))
 ;; Exact integers stay exact at any size; past 2^53 the core computes in
-;; double (SPEC §1): 2^60 + 2^10 is exact and representable.
+;; double (semantics §1): 2^60 + 2^10 is exact and representable.
 (test-eqv "2^60 + 2^10 exact" (+ (expt 2 60) 1024)
   (entity-ref (apply-velocity-x (list #:x (expt 2 60) #:vx 1024) #f 16) #:x))
 (test-eqv "2^70 + 2^20 exact (a bignum past int64)" (+ (expt 2 70) (expt 2 20))
@@ -364,7 +364,7 @@
 (test-equal "box [64, 80) touching column 3's edge" #f
   (entity-ref (detect-on-solid '(#:x 64 #:y 112 #:width 16 #:height 16 #:gravity? #t) pillar 16) #:on-ground?))
 ;; A 48 px box [32, 80) spans columns 2..4; its lower corners are over 2 and 4
-;; (both empty) but column 3 under its middle is solid: supported (SPEC).
+;; (both empty) but column 3 under its middle is solid: supported (semantics).
 (test-equal "wide box supported under its middle" #t
   (entity-ref (detect-on-solid '(#:x 32 #:y 112 #:width 48 #:height 16 #:gravity? #t) pillar 16) #:on-ground?))
 

@@ -123,7 +123,7 @@
                                             (lambda (l) (filter (lambda (e) (entity-ref e #:keep)) l)))))
 
 ;;; ---------------------------------------------------------------- step-scene = the composition
-;; SPEC §5: the per-entity steps, each applied to every entity with the scene
+;; semantics §5: the per-entity steps, each applied to every entity with the scene
 ;; as it was at the start of the frame, then the two bulk steps.
 (define (composed-frame scene dt)
   (let ((per-entity (list step-tweens apply-acceleration apply-gravity apply-velocity-x
@@ -177,7 +177,7 @@
                    '(#:id boat #:x 0 #:y 50 #:vx 2 #:group-id g #:group-origin? #t)
                    '(#:id flag #:group-id g #:group-local-x 4 #:group-local-y -8 #:name "flag"))))
 (define frames-a (same-as-composition? "platformer" scene-a))
-;; Spot checks from the SPEC, independent of the composition.
+;; Spot checks from docs/semantics.org, independent of the composition.
 ;; Runner: x = 16 + 8k until its box [x, x+16) meets the wall at 240:
 ;; k = 26 gives 224 (touching); k = 27 would give 232 → snapped to 240 − 16 = 224, vx 0.
 (let ((runner (lambda (k) (car (list-ref frames-a (- k 1))))))
@@ -323,7 +323,7 @@
   (scene-entities (step-scene lossy-pair 16)))
 (test-eqv -16.5 (entity-ref (car (scene-entities (step-scene lossy-pair 16))) #:x))
 
-;; SPEC §5: every per-entity step — detect-on-solid included — receives the
+;; semantics §5: every per-entity step — detect-on-solid included — receives the
 ;; scene as it was at the start of the frame, i.e. before this frame's tweens.
 ;; A platform tweened from y 100 to 150 (t = 0.2 per 20 ms frame: 110.0 after
 ;; one frame) under a resting body: the body's detect-on-solid sees the

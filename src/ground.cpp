@@ -1,0 +1,79 @@
+#include "ground.hpp"
+
+#include <cmath>
+
+namespace ds {
+
+bool tile_supports(const Body& b, const TileGrid& grid) {
+    const int64_t row = cell_of(b.y + b.h, grid.tile_height());
+    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    for (int64_t c = cols.first; c <= cols.last; ++c)
+        if (grid.solid(c, row)) return true;
+    return false;
+}
+
+bool rests_on_tile(const Body& b, const TileGrid& grid) {
+    const double feet = b.y.v + b.h.v;
+    return std::fmod(feet, grid.tile_height()) == 0 && tile_supports(b, grid);
+}
+
+namespace {
+
+// Strict overlap of b's span and o's along x.
+bool spans_meet(const Body& b, const Supporter& o) { return b.x.v < o.x + o.w && o.x < b.x.v + b.w.v; }
+
+}  // namespace
+
+bool rests_on(const Body& b, const Supporter& o) {
+    return o.vy == 0 && o.y == b.y.v + b.h.v && spans_meet(b, o);
+}
+
+bool entity_supports(const Body& b, const Supporter& o) {
+    if (!spans_meet(b, o)) return false;
+    return std::fabs((b.y.v + b.h.v) - o.y) <= kOnSolidTolerance &&
+           std::fabs(b.vy.v - o.vy) <= kOnSolidTolerance;
+}
+
+bool entity_supports(const Body& b, const Body& o) {
+    return o.collides() && entity_supports(b, Supporter::of(o));
+}
+
+namespace {
+
+template <class Other>
+bool supports_other(const Body& b, const Other& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
+    return !is_self(b, other, k, self_slot) && entity_supports(b, other);
+}
+
+template <class Other>
+bool detect_by_scan(Body& b, std::span<const Other> scene, std::ptrdiff_t self_slot,
+                    const TileGrid* grid) {
+    if (!b.gravity || b.skips(kSkipOnSolid)) return false;
+    bool ground = grid && tile_supports(b, *grid);
+    for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n && !ground; ++k)
+        ground = supports_other(b, scene[k], k, self_slot);
+    b.on_ground = ground;
+    return true;
+}
+
+}  // namespace
+
+bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
+                     const TileGrid* grid) {
+    return detect_by_scan(b, scene, self_slot, grid);
+}
+
+bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::ptrdiff_t self_slot,
+                          const TileGrid* grid) {
+    return detect_by_scan(b, supporters, self_slot, grid);
+}
+
+bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
+                          std::ptrdiff_t self_slot, const TileGrid* grid) {
+    if (!b.gravity || b.skips(kSkipOnSolid)) return false;
+    b.on_ground = (grid && tile_supports(b, *grid)) ||
+                  index.any(b, [&](uint32_t k) { return supports_other(b, supporters[k], k, self_slot); });
+    return true;
+}
+
+}  // namespace ds
