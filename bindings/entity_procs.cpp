@@ -123,24 +123,24 @@ SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h
 }  // namespace
 
 void register_entity_procedures() {
-    define_procedure("%apply-acceleration", 1, 0, 0, (Subr)apply_acceleration_1,
-                     "vy += ay, then ay = 0, for a #:gravity? entity.");
-    define_procedure("%apply-gravity", 1, 0, 0, (Subr)apply_gravity_1, "vy += *gravity* for a #:gravity? entity.");
-    define_procedure("%apply-velocity-x", 1, 0, 0, (Subr)apply_velocity_x_1, "x += vx.");
-    define_procedure("%apply-velocity-y", 1, 0, 0, (Subr)apply_velocity_y_1, "y += vy.");
-    define_procedure("%apply-velocity", 1, 0, 0, (Subr)apply_velocity_1, "x += vx and y += vy, each axis skippable.");
-    define_procedure("%resolve-tile-collisions-x", 3, 0, 0, (Subr)resolve_tile_x_1,
-                     "(entity tilemap mode): snap out of solid tiles along x.");
-    define_procedure("%resolve-tile-collisions-y", 3, 0, 0, (Subr)resolve_tile_y_1,
-                     "(entity tilemap mode): snap out of solid tiles along y.");
-    define_procedure("%detect-on-solid", 3, 0, 0, (Subr)detect_on_solid_1,
-                     "(entity tilemap entities): set #:on-ground? from tiles and solid entities.");
-    define_procedure("resolve-entity-collisions", 1, 0, 0, (Subr)resolve_entity_collisions_n,
-                     "Push overlapping solid entities apart: one pass over the pairs in list order.");
-    define_procedure("sync-groups", 1, 0, 0, (Subr)sync_groups_n,
-                     "Place every group member at its origin's position plus its local offset.");
-    define_procedure("aabb-overlap?", 8, 0, 0, (Subr)aabb_overlap_p,
-                     "(aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2): strict overlap of two boxes.");
+    define_procedure<1, 0, 0, apply_acceleration_1>("%apply-acceleration",
+        "vy += ay, then ay = 0, for a #:gravity? entity.");
+    define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", "vy += *gravity* for a #:gravity? entity.");
+    define_procedure<1, 0, 0, apply_velocity_x_1>("%apply-velocity-x", "x += vx.");
+    define_procedure<1, 0, 0, apply_velocity_y_1>("%apply-velocity-y", "y += vy.");
+    define_procedure<1, 0, 0, apply_velocity_1>("%apply-velocity", "x += vx and y += vy, each axis skippable.");
+    define_procedure<3, 0, 0, resolve_tile_x_1>("%resolve-tile-collisions-x",
+        "(entity tilemap mode): snap out of solid tiles along x.");
+    define_procedure<3, 0, 0, resolve_tile_y_1>("%resolve-tile-collisions-y",
+        "(entity tilemap mode): snap out of solid tiles along y.");
+    define_procedure<3, 0, 0, detect_on_solid_1>("%detect-on-solid",
+        "(entity tilemap entities): set #:on-ground? from tiles and solid entities.");
+    define_procedure<1, 0, 0, resolve_entity_collisions_n>("resolve-entity-collisions",
+        "Push overlapping solid entities apart: one pass over the pairs in list order.");
+    define_procedure<1, 0, 0, sync_groups_n>("sync-groups",
+        "Place every group member at its origin's position plus its local offset.");
+    define_procedure<8, 0, 0, aabb_overlap_p>("aabb-overlap?",
+        "(aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2): strict overlap of two boxes.");
 }
 
 }  // namespace ds::guile

@@ -116,13 +116,13 @@ SCM frame_stats() {
 }  // namespace
 
 void register_frame_procedures() {
-    define_procedure("%step-entities", 4, 2, 0, (Subr)step_entities,
-                     "(entities tilemap dt mode [substeps [resting-contacts?]]): the whole "
-                     "default-engine-update pass over a list of entities: tweens, then motion, "
-                     "tiles, ground, push-apart and groups in SUBSTEPS sub-frames (default 1).");
-    define_procedure("%frame-stats", 0, 0, 0, (Subr)frame_stats,
-                     "The last whole frame stepped on this thread: ((step processed skipped ms) …) "
-                     "for decode, each step in order, and encode.");
+    define_procedure<4, 2, 0, step_entities>("%step-entities",
+        "(entities tilemap dt mode [substeps [resting-contacts?]]): the whole "
+        "default-engine-update pass over a list of entities: tweens, then motion, "
+        "tiles, ground, push-apart and groups in SUBSTEPS sub-frames (default 1).");
+    define_procedure<0, 0, 0, frame_stats>("%frame-stats",
+        "The last whole frame stepped on this thread: ((step processed skipped ms) …) "
+        "for decode, each step in order, and encode.");
 }
 
 }  // namespace ds::guile

@@ -40,11 +40,11 @@ void apply_gc_policy() {
 }
 
 void register_gc_procedures() {
-    define_procedure("%gc-space-divisor", 0, 0, 0, (Subr)gc_space_divisor,
-                     "(): the collector's free-space divisor: it collects after allocating "
-                     "about twice the live heap divided by this (1 = least often).");
-    define_procedure("%set-gc-space-divisor!", 1, 0, 0, (Subr)set_gc_space_divisor,
-                     "(n): sets the free-space divisor to N, an exact integer from 1 to 1000.");
+    define_procedure<0, 0, 0, gc_space_divisor>("%gc-space-divisor",
+        "(): the collector's free-space divisor: it collects after allocating "
+        "about twice the live heap divided by this (1 = least often).");
+    define_procedure<1, 0, 0, set_gc_space_divisor>("%set-gc-space-divisor!",
+        "(n): sets the free-space divisor to N, an exact integer from 1 to 1000.");
 }
 
 }  // namespace ds::guile

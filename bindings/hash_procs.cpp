@@ -31,9 +31,9 @@ SCM scene_hash_entities(SCM entities) {
 }  // namespace
 
 void register_hash_procedures() {
-    define_procedure("%scene-hash-entities", 1, 0, 0, (Subr)scene_hash_entities,
-                     "(entities): the 64-bit FNV-1a hash of the entities' physical state "
-                     "(x y width height vx vy ay on-ground?), as an exact integer.");
+    define_procedure<1, 0, 0, scene_hash_entities>("%scene-hash-entities",
+        "(entities): the 64-bit FNV-1a hash of the entities' physical state "
+        "(x y width height vx vy ay on-ground?), as an exact integer.");
 }
 
 }  // namespace ds::guile

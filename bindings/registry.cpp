@@ -4,7 +4,7 @@
 
 namespace ds::guile {
 
-void define_procedure(const char* name, int req, int opt, int rest, Subr fn, const char* doc) {
+void detail::define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const char* doc) {
     SCM proc = scm_c_define_gsubr(name, req, opt, rest, fn);
     scm_set_procedure_property_x(proc, scm_from_utf8_symbol("documentation"), scm_from_utf8_string(doc));
     scm_c_export(name, nullptr);

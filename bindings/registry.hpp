@@ -1,14 +1,54 @@
 // Each native procedure is registered next to its definition, with its
-// docstring, into the module being initialised (downstroke native).
+// docstring, into the module being initialised (downstroke native):
+//
+//     define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", doc);
+//
+// The template checks the counts against the C++ signature when it compiles
+// (LilyPond's ly_subr_ptr idea): every parameter and the result are SCM, and
+// req + opt + rest is the parameter count, so a wrong count does not build.
 #pragma once
 #include <libguile.h>
 
+#include <type_traits>
+
 namespace ds::guile {
 
-using Subr = scm_t_subr;
+namespace detail {
 
-// Defines and exports `name` with its docstring.
-void define_procedure(const char* name, int req, int opt, int rest, Subr fn, const char* doc);
+template <class F>
+struct Signature {
+    static constexpr bool scm_only = false;
+    static constexpr int arity = -1;
+};
+template <class... A>
+struct Signature<SCM (*)(A...)> {
+    static constexpr bool scm_only = (std::is_same_v<A, SCM> && ...);
+    static constexpr int arity = sizeof...(A);
+};
+template <class... A>
+struct Signature<SCM (*)(A...) noexcept> : Signature<SCM (*)(A...)> {};
+
+template <auto Fn, class... A>
+scm_t_subr subr_of(SCM (*)(A...)) {
+    return reinterpret_cast<scm_t_subr>(Fn);
+}
+
+void define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const char* doc);
+
+}  // namespace detail
+
+// Defines and exports `name`, taking Req required, Opt optional and (Rest 1)
+// a rest argument, with its docstring.
+template <int Req, int Opt, int Rest, auto Fn>
+void define_procedure(const char* name, const char* doc) {
+    using Sig = detail::Signature<std::remove_cvref_t<decltype(Fn)>>;
+    static_assert(Sig::scm_only, "a native procedure takes SCM arguments and returns SCM");
+    static_assert(Req >= 0 && Opt >= 0 && (Rest == 0 || Rest == 1), "req, opt ≥ 0 and rest 0 or 1");
+    static_assert(Req + Opt + Rest == Sig::arity,
+                  "req + opt + rest must be the number of the C++ function's parameters");
+    static_assert(Sig::arity <= SCM_GSUBR_MAX, "Guile's subrs take at most SCM_GSUBR_MAX arguments");
+    detail::define_gsubr(name, Req, Opt, Rest, detail::subr_of<Fn>(Fn), doc);
+}
 
 // Each file of procedures has one of these; ds_init_native (registry.cpp)
 // calls them all.

@@ -493,6 +493,8 @@ SCM note_pushed_pairs(SCM on) {
     return SCM_UNSPECIFIED;
 }
 
+SCM renderer_p() { return SCM_BOOL_T; }
+
 }  // namespace
 
 void register_render_procedures() {
@@ -504,44 +506,43 @@ void register_render_procedures() {
     key_sprite = scm_permanent_object(scm_from_utf8_keyword("sprite"));
     key_flip_x = scm_permanent_object(scm_from_utf8_keyword("flip-x?"));
 
-    define_procedure("%renderer?", 0, 0, 0, (Subr) + [] { return SCM_BOOL_T; },
-                     "(): whether this build has the renderer (SDL2).");
-    define_procedure("%make-display", 2, 0, 0, (Subr)make_display,
-                     "(width height): a display: an off-screen canvas of that size, made when first drawn.");
-    define_procedure("%display-open-window!", 3, 0, 0, (Subr)open_window,
-                     "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
-    define_procedure("%display-close-window!", 1, 0, 0, (Subr)close_window, "(display): closes its window.");
-    define_procedure("%display-draw!", 7, 0, 0, (Subr)display_draw,
-                     "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
-    define_procedure("%display-stats", 1, 0, 0, (Subr)display_stats,
-                     "(display): (render drawn culled ms) for the last frame drawn.");
-    define_procedure("%display-save-png", 2, 0, 0, (Subr)display_save_png,
-                     "(display file): writes the last frame drawn as a PNG.");
-    define_procedure("%display-pixel", 3, 0, 0, (Subr)display_pixel,
-                     "(display x y): the last frame's pixel as (r g b a).");
-    define_procedure("%display-clear-commands!", 1, 0, 0, (Subr)clear_commands,
-                     "(display): forgets the draw commands of the last frame.");
-    define_procedure("%draw-rect!", 8, 0, 0, (Subr)draw_rect,
-                     "(display x y w h color fill? space): queues a rectangle.");
-    define_procedure("%draw-line!", 7, 0, 0, (Subr)draw_line,
-                     "(display x0 y0 x1 y1 color space): queues a line.");
-    define_procedure("%draw-sprite!", 5, 0, 0, (Subr)draw_sprite,
-                     "(display gid x y space): queues a tile picture by gid.");
-    define_procedure("%draw-text!", 7, 0, 0, (Subr)draw_text,
-                     "(display text x y color scale space): queues text in the built-in font.");
-    define_procedure("%display-set-input-map!", 2, 0, 0, (Subr)set_input_map,
-                     "(display map): binds keys and controller inputs to actions: ((action name …) …).");
-    define_procedure("%default-input-map", 0, 0, 0, (Subr)default_map,
-                     "(): the default ((action name …) …): arrows/WASD, Z/Space, X, Return, Backspace, Escape, pads.");
-    define_procedure("%display-poll!", 1, 0, 0, (Subr)poll_input,
-                     "(display): (held-actions quit? debug-toggles) from the window's events.");
-    define_procedure("%open-audio!", 1, 0, 0, (Subr)open_audio,
-                     "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
-    define_procedure("%load-sound", 2, 0, 0, (Subr)load_sound, "(name file): decodes a sound.");
-    define_procedure("%play-sound", 1, 0, 0, (Subr)play_sound,
-                     "(name): plays a loaded sound; #f when none has that name.");
-    define_procedure("%note-pushed-pairs!", 1, 0, 0, (Subr)note_pushed_pairs,
-                     "(on?): whether step-scene notes the pairs it pushes apart, for the overlay.");
+    define_procedure<0, 0, 0, renderer_p>("%renderer?", "(): whether this build has the renderer (SDL2).");
+    define_procedure<2, 0, 0, make_display>("%make-display",
+        "(width height): a display: an off-screen canvas of that size, made when first drawn.");
+    define_procedure<3, 0, 0, open_window>("%display-open-window!",
+        "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
+    define_procedure<1, 0, 0, close_window>("%display-close-window!", "(display): closes its window.");
+    define_procedure<7, 0, 0, display_draw>("%display-draw!",
+        "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
+    define_procedure<1, 0, 0, display_stats>("%display-stats",
+        "(display): (render drawn culled ms) for the last frame drawn.");
+    define_procedure<2, 0, 0, display_save_png>("%display-save-png",
+        "(display file): writes the last frame drawn as a PNG.");
+    define_procedure<3, 0, 0, display_pixel>("%display-pixel",
+        "(display x y): the last frame's pixel as (r g b a).");
+    define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",
+        "(display): forgets the draw commands of the last frame.");
+    define_procedure<8, 0, 0, draw_rect>("%draw-rect!",
+        "(display x y w h color fill? space): queues a rectangle.");
+    define_procedure<7, 0, 0, draw_line>("%draw-line!",
+        "(display x0 y0 x1 y1 color space): queues a line.");
+    define_procedure<5, 0, 0, draw_sprite>("%draw-sprite!",
+        "(display gid x y space): queues a tile picture by gid.");
+    define_procedure<7, 0, 0, draw_text>("%draw-text!",
+        "(display text x y color scale space): queues text in the built-in font.");
+    define_procedure<2, 0, 0, set_input_map>("%display-set-input-map!",
+        "(display map): binds keys and controller inputs to actions: ((action name …) …).");
+    define_procedure<0, 0, 0, default_map>("%default-input-map",
+        "(): the default ((action name …) …): arrows/WASD, Z/Space, X, Return, Backspace, Escape, pads.");
+    define_procedure<1, 0, 0, poll_input>("%display-poll!",
+        "(display): (held-actions quit? debug-toggles) from the window's events.");
+    define_procedure<1, 0, 0, open_audio>("%open-audio!",
+        "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
+    define_procedure<2, 0, 0, load_sound>("%load-sound", "(name file): decodes a sound.");
+    define_procedure<1, 0, 0, play_sound>("%play-sound",
+        "(name): plays a loaded sound; #f when none has that name.");
+    define_procedure<1, 0, 0, note_pushed_pairs>("%note-pushed-pairs!",
+        "(on?): whether step-scene notes the pairs it pushes apart, for the overlay.");
 }
 
 }  // namespace ds::guile

@@ -246,26 +246,26 @@ bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
 
 void register_tilemap_procedures() {
     init_tilemap_type();
-    define_procedure("%load-tilemap", 2, 0, 0, (Subr)load_tilemap,
-                     "Loads a Tiled .tmx file (and its .tsx tilesets); the list of gids is solid too.");
-    define_procedure("make-tilemap", 6, 0, 0, (Subr)make_tilemap,
-                     "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
-                     "memory; cells is a vector (or list) of gids, row-major.");
-    define_procedure("tilemap?", 1, 0, 0, (Subr)tilemap_p, "Whether obj is a tilemap.");
-    define_procedure("tilemap-width", 1, 0, 0, (Subr)tilemap_width, "Width in cells.");
-    define_procedure("tilemap-height", 1, 0, 0, (Subr)tilemap_height, "Height in cells.");
-    define_procedure("tilemap-tile-width", 1, 0, 0, (Subr)tilemap_tile_width, "Tile width in px.");
-    define_procedure("tilemap-tile-height", 1, 0, 0, (Subr)tilemap_tile_height, "Tile height in px.");
-    define_procedure("tilemap-cell-solid?", 3, 0, 0, (Subr)tilemap_cell_solid_p,
-                     "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
-    define_procedure("tilemap-solid-extent", 1, 0, 0, (Subr)tilemap_solid_extent,
-                     "(first-col first-row cols rows): the block of cells that can be solid; every "
-                     "cell outside it is empty (infinite maps may start at negative cells).");
-    define_procedure("tilemap-objects", 1, 0, 0, (Subr)tilemap_objects,
-                     "The objects of every object layer, as entity plists.");
-    define_procedure("tilemap-gid", 4, 0, 0, (Subr)tilemap_gid,
-                     "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
-                     "number layer, 0 when empty.");
+    define_procedure<2, 0, 0, load_tilemap>("%load-tilemap",
+        "Loads a Tiled .tmx file (and its .tsx tilesets); the list of gids is solid too.");
+    define_procedure<6, 0, 0, make_tilemap>("make-tilemap",
+        "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
+        "memory; cells is a vector (or list) of gids, row-major.");
+    define_procedure<1, 0, 0, tilemap_p>("tilemap?", "Whether obj is a tilemap.");
+    define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "Width in cells.");
+    define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "Height in cells.");
+    define_procedure<1, 0, 0, tilemap_tile_width>("tilemap-tile-width", "Tile width in px.");
+    define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "Tile height in px.");
+    define_procedure<3, 0, 0, tilemap_cell_solid_p>("tilemap-cell-solid?",
+        "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+    define_procedure<1, 0, 0, tilemap_solid_extent>("tilemap-solid-extent",
+        "(first-col first-row cols rows): the block of cells that can be solid; every "
+        "cell outside it is empty (infinite maps may start at negative cells).");
+    define_procedure<1, 0, 0, tilemap_objects>("tilemap-objects",
+        "The objects of every object layer, as entity plists.");
+    define_procedure<4, 0, 0, tilemap_gid>("tilemap-gid",
+        "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
+        "number layer, 0 when empty.");
 }
 
 }  // namespace ds::guile

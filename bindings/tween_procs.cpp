@@ -121,13 +121,13 @@ SCM advance_entity_tween(SCM entity, double dt, Failure& f) {
 }
 
 void register_tween_procedures() {
-    define_procedure("%register-tween-type!", 1, 0, 0, (Subr)register_tween_type,
-                     "Tell the native side which record type tweens are.");
-    define_procedure("%ease-index", 1, 0, 0, (Subr)ease_index,
-                     "The native index of an easing name such as 'quad-in-out, or #f.");
-    define_procedure("%ease", 2, 0, 0, (Subr)ease_value, "(%ease index t): a native easing at t.");
-    define_procedure("%step-tweens", 2, 0, 0, (Subr)step_tweens_1,
-                     "(entity dt): advance the entity's #:tween by dt ms.");
+    define_procedure<1, 0, 0, register_tween_type>("%register-tween-type!",
+        "Tell the native side which record type tweens are.");
+    define_procedure<1, 0, 0, ease_index>("%ease-index",
+        "The native index of an easing name such as 'quad-in-out, or #f.");
+    define_procedure<2, 0, 0, ease_value>("%ease", "(%ease index t): a native easing at t.");
+    define_procedure<2, 0, 0, step_tweens_1>("%step-tweens",
+        "(entity dt): advance the entity's #:tween by dt ms.");
 }
 
 }  // namespace ds::guile
