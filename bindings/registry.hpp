@@ -6,10 +6,20 @@
 // The template checks the counts against the C++ signature when it compiles
 // (LilyPond's ly_subr_ptr idea): every parameter and the result are SCM, and
 // req + opt + rest is the parameter count, so a wrong count does not build.
+//
+// What Guile calls is a trampoline around fn: a C++ exception that fn lets
+// escape becomes a Scheme error naming the procedure, raised once the
+// exception object is gone, so none ever unwinds into Guile's C frames
+// (which aborts the process). The procedures still run their C++ work in
+// guarded() (failure.hpp), for a message naming the public procedure and so
+// that their own cleanup (scm_dynwind_end) runs; the trampoline is the net
+// under every one of them, including any that forgets.
 #pragma once
 #include <libguile.h>
 
 #include <type_traits>
+
+#include "failure.hpp"
 
 namespace ds::guile {
 
@@ -28,10 +38,37 @@ struct Signature<SCM (*)(A...)> {
 template <class... A>
 struct Signature<SCM (*)(A...) noexcept> : Signature<SCM (*)(A...)> {};
 
+// The name each function was registered under, for the trampoline's message.
+template <auto Fn>
+inline const char* name_of = nullptr;
+
+// Called in the trampoline's catch handler: records the exception being
+// handled (its what()) as this thread's escaped failure. raise_escaped then
+// raises it, after the handler has ended: a longjmp out of a handler would
+// leave the exception object allocated and the runtime's handler count off.
+void note_escaped(const char* proc) noexcept;
+[[noreturn]] void raise_escaped();
+
+// Only SCM values (and nothing with a destructor) live in this frame, so a
+// Scheme error raised inside fn may longjmp straight over it.
+template <auto Fn, class... A>
+SCM trampoline(A... args) {
+    try {
+        return Fn(args...);
+    } catch (...) {
+        note_escaped(name_of<Fn>);
+    }
+    raise_escaped();
+}
+
 template <auto Fn, class... A>
 scm_t_subr subr_of(SCM (*)(A...)) {
-    return reinterpret_cast<scm_t_subr>(Fn);
+    return reinterpret_cast<scm_t_subr>(&trampoline<Fn, A...>);
 }
+
+// Refuses (when the extension loads) a function registered under a second
+// name: its trampoline would report the first.
+void check_one_name(const char*& registered, const char* name);
 
 void define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const char* doc);
 
@@ -47,6 +84,7 @@ void define_procedure(const char* name, const char* doc) {
     static_assert(Req + Opt + Rest == Sig::arity,
                   "req + opt + rest must be the number of the C++ function's parameters");
     static_assert(Sig::arity <= SCM_GSUBR_MAX, "Guile's subrs take at most SCM_GSUBR_MAX arguments");
+    detail::check_one_name(detail::name_of<Fn>, name);
     detail::define_gsubr(name, Req, Opt, Rest, detail::subr_of<Fn>(Fn), doc);
 }
 
