@@ -27,10 +27,10 @@ SCM step_entity(const char* proc, SCM entity, Step step) {
         Decoded d;
         if (decode_entity(entity, d, f)) {
             const Body before = d.body;
-            step(d.body);
+            guarded(f, nullptr, [&] { step(d.body); });
             Edit edits[16];
             const uint32_t changed = changed_fields(before, d.body);
-            if (check_finite(d.body, changed, f)) result = rewrite_plist(entity, edits, field_edits(changed, d.body, edits));
+            if (!f && check_finite(d.body, changed, f)) result = rewrite_plist(entity, edits, field_edits(changed, d.body, edits));
         }
     }
     if (f) raise(f);
@@ -65,7 +65,7 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
     Failure f{.proc = "detect-on-solid"};
     SCM result = e;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
-    {
+    guarded(f, nullptr, [&] {
         const TileGrid* grid = nullptr;
         Batch& scene = lease_batch();
         if (grid_from_scm(tilemap, grid, f) && decode_batch(entities, scene, f)) {
@@ -76,7 +76,7 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
                 detect_on_solid(b, scene.bodies, -1, grid);
             });
         }
-    }
+    });
     scm_dynwind_end();
     if (f) raise(f);
     return result;
@@ -87,13 +87,13 @@ SCM bulk_step(const char* proc, SCM entities) {
     Failure f{.proc = proc};
     SCM result = entities;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
-    {
+    guarded(f, nullptr, [&] {
         Batch& batch = lease_batch();
         if (decode_batch(entities, batch, f)) {
             Bulk(batch.bodies);
             result = encode_batch(entities, batch, f);
         }
-    }
+    });
     scm_dynwind_end();
     if (f) raise(f);
     return result;

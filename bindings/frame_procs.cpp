@@ -24,6 +24,8 @@ SCM step_list_tweens(SCM entities, const Batch& batch, double dt, Failure& f) {
     SCM out = SCM_EOL;
     bool changed = false;
     size_t i = 0;
+    // advance_entity_tween calls Scheme: see step_entities.
+    static_assert(survives_longjmp<decltype(out), decltype(changed), decltype(i), decltype(batch)>);
     for (SCM p = entities; scm_is_pair(p) && !f; p = SCM_CDR(p), ++i) {
         SCM e = SCM_CAR(p);
         SCM stepped = batch.has_tween[i] ? advance_entity_tween(e, dt, f) : e;
@@ -47,13 +49,17 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
     SCM result = entities;
     if (PairLog* log = pair_log()) log->clear();  // the overlay shows this frame's pairs
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
-    {
+    guarded(f, nullptr, [&] {
         FrameOptions opts;
         opts.resting_contacts = !SCM_UNBNDP(resting) && scm_is_true(resting);
         const TileGrid* grid = nullptr;
-        Batch& batch = lease_batch();
+        Batch& batch = lease_batch();  // owned by the pool, returned by the dynwind handler
         LastFrame stats;
         auto t0 = Clock::now();
+        // The tween stage calls Scheme (custom easings, on-complete): an error
+        // or escape there longjmps over this frame, these locals included.
+        static_assert(survives_longjmp<decltype(opts), decltype(grid), decltype(batch), decltype(stats),
+                                       decltype(t0)>);
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
             frame_is_noop(batch, entities, tilemap, opts)) {
@@ -94,7 +100,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                 }
             }
         }
-    }
+    });
     scm_dynwind_end();
     if (f) raise(f);
     return result;

@@ -14,7 +14,7 @@ namespace {
 SCM scene_hash_entities(SCM entities) {
     Failure f{.proc = "scene-hash"};
     uint64_t hash = 0;
-    {
+    guarded(f, nullptr, [&] {
         StateHash h;
         Decoded d;
         SCM p = entities;
@@ -23,7 +23,7 @@ SCM scene_hash_entities(SCM entities) {
         if (!f && !scm_is_null(p))
             fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");
         hash = h.value();
-    }
+    });
     if (f) raise(f);
     return scm_from_uint64(hash);
 }

@@ -138,13 +138,15 @@ bool string_arg(SCM v, const char* what, std::string& out, Failure& f) {
 SCM make_display(SCM width, SCM height) {
     Failure f{.proc = "make-display"};
     int w = 0, h = 0;
-    if (int_arg(width, "width", 1, kMaxCanvasSide, w, f) && int_arg(height, "height", 1, kMaxCanvasSide, h, f)) {
-        auto* d = new Display;
-        d->width = w;
-        d->height = h;
-        return scm_make_foreign_object_1(display_type, d);
-    }
-    raise(f);
+    Display* d = nullptr;
+    if (int_arg(width, "width", 1, kMaxCanvasSide, w, f) && int_arg(height, "height", 1, kMaxCanvasSide, h, f))
+        guarded(f, nullptr, [&] {
+            d = new Display;
+            d->width = w;
+            d->height = h;
+        });
+    if (f) raise(f);
+    return scm_make_foreign_object_1(display_type, d);
 }
 
 Canvas& canvas_of(Display& d) {
@@ -157,8 +159,9 @@ SCM open_window(SCM display, SCM title, SCM scale) {
     Display* d = display_of(display, "game-run!", f);
     std::string t;
     int s = 0;
-    if (d && string_arg(title, "title", t, f) && int_arg(scale, "scale", 0, 64, s, f))
+    if (d)
         guarded(f, nullptr, [&] {
+            if (!string_arg(title, "title", t, f) || !int_arg(scale, "scale", 0, 64, s, f)) return;
             d->window = std::make_unique<Window>(t, d->width, d->height, s);
             s = d->window->scale();
         });
@@ -168,7 +171,7 @@ SCM open_window(SCM display, SCM title, SCM scale) {
 
 SCM close_window(SCM display) {
     Failure f;
-    if (Display* d = display_of(display, "game-run!", f)) d->window.reset();
+    if (Display* d = display_of(display, "game-run!", f)) guarded(f, nullptr, [&] { d->window.reset(); });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -254,30 +257,28 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
         if (is_tilemap(tilemap)) view.map = &tilemap_handle(tilemap).map;
         else fail(f, "wrong-type-arg", scm_list_1(tilemap), "tilemap: expected a tilemap or #f, got ~S");
     }
-    if (d && !f && real_arg(cam_x, "camera x", view.camera_x, f) && real_arg(cam_y, "camera y", view.camera_y, f) &&
-        entity_views(entities, d->entities, f)) {
-        view.debug = scm_is_true(debug);
-        d->trails.clear();
-        d->pairs.clear();
-        if (view.debug) {
-            if (PairLog* log = pair_log()) d->pairs = *log;
-            std::sort(d->pairs.begin(), d->pairs.end());
-            d->pairs.erase(std::unique(d->pairs.begin(), d->pairs.end()), d->pairs.end());
-            trails_of(entities, d->entities, history, d->trails, f);
-        }
-        view.entities = d->entities;
-        view.commands = &d->commands;
-        view.pushed_pairs = d->pairs;
-        view.trails = d->trails;
-        if (!f)
-            guarded(f, nullptr, [&] {
-                const auto t0 = Clock::now();
-                d->counts = draw_scene(canvas_of(*d), d->art, view);
-                d->culled = d->entities.size() - d->counts.sprites - d->counts.boxes;
-                if (d->window) d->window->present(*d->canvas);
-                d->ms = ms_since(t0);
-            });
-    }
+    if (d && !f && real_arg(cam_x, "camera x", view.camera_x, f) && real_arg(cam_y, "camera y", view.camera_y, f))
+        guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too
+            if (!entity_views(entities, d->entities, f)) return;
+            view.debug = scm_is_true(debug);
+            d->trails.clear();
+            d->pairs.clear();
+            if (view.debug) {
+                if (PairLog* log = pair_log()) d->pairs = *log;
+                std::sort(d->pairs.begin(), d->pairs.end());
+                d->pairs.erase(std::unique(d->pairs.begin(), d->pairs.end()), d->pairs.end());
+                if (!trails_of(entities, d->entities, history, d->trails, f)) return;
+            }
+            view.entities = d->entities;
+            view.commands = &d->commands;
+            view.pushed_pairs = d->pairs;
+            view.trails = d->trails;
+            const auto t0 = Clock::now();
+            d->counts = draw_scene(canvas_of(*d), d->art, view);
+            d->culled = d->entities.size() - d->counts.sprites - d->counts.boxes;
+            if (d->window) d->window->present(*d->canvas);
+            d->ms = ms_since(t0);
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -295,8 +296,10 @@ SCM display_save_png(SCM display, SCM path) {
     Failure f;
     Display* d = display_of(display, "game-capture", f);
     std::string p;
-    if (d && string_arg(path, "file", p, f))
-        guarded(f, nullptr, [&] { canvas_of(*d).save_png(p); });
+    if (d)
+        guarded(f, nullptr, [&] {
+            if (string_arg(path, "file", p, f)) canvas_of(*d).save_png(p);
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -327,8 +330,10 @@ SCM push_command(const char* proc, SCM display, SCM color, SCM space, Fill fill)
     Failure f;
     Display* d = display_of(display, proc, f);
     DrawCommand c;
-    if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f) && fill(c, f))
-        guarded(f, nullptr, [&] { d->commands.commands.push_back(std::move(c)); });
+    if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f))
+        guarded(f, nullptr, [&] {  // fill may copy a string
+            if (fill(c, f)) d->commands.commands.push_back(std::move(c));
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -375,32 +380,35 @@ SCM set_input_map(SCM display, SCM map) {
     const long n = d ? scm_ilength(map) : 0;
     if (d && (n < 0 || n > kMaxActions))
         fail(f, "wrong-type-arg", scm_list_1(map), "input-map: expected a list of at most 64 (action name …), got ~S");
-    SCM p = map;
-    for (long i = 0; d && !f && i < n; ++i, p = SCM_CDR(p)) {
-        SCM entry = SCM_CAR(p);
-        if (scm_ilength(entry) < 1 || !scm_is_symbol(SCM_CAR(entry))) {
-            fail(f, "wrong-type-arg", scm_list_1(entry), "input-map: expected (action name …) with a symbol action, got ~S");
-            break;
-        }
-        SCM name_str = scm_symbol_to_string(SCM_CAR(entry));
-        std::string action;
-        string_arg(name_str, "action", action, f);
-        actions.push_back(action);
-        for (SCM q = SCM_CDR(entry); scm_is_pair(q) && !f; q = SCM_CDR(q)) {
-            std::string name;
-            Binding b;
-            if (!string_arg(SCM_CAR(q), "input-map key", name, f)) break;
-            if (!parse_binding(name, static_cast<uint8_t>(i), b))
-                fail(f, "wrong-type-arg", scm_list_2(SCM_CAR(q), SCM_CAR(entry)),
-                     "input-map: no key or controller input is named ~S (for ~S)");
-            else
-                bindings.push_back(b);
-        }
-    }
-    if (!f) {
-        d->actions = std::move(actions);
-        guarded(f, nullptr, [&] { d->input.set_bindings(std::move(bindings)); });
-    }
+    if (d && !f)
+        guarded(f, nullptr, [&] {
+            SCM p = map;
+            for (long i = 0; !f && i < n; ++i, p = SCM_CDR(p)) {
+                SCM entry = SCM_CAR(p);
+                if (scm_ilength(entry) < 1 || !scm_is_symbol(SCM_CAR(entry))) {
+                    fail(f, "wrong-type-arg", scm_list_1(entry),
+                         "input-map: expected (action name …) with a symbol action, got ~S");
+                    break;
+                }
+                SCM name_str = scm_symbol_to_string(SCM_CAR(entry));
+                std::string action;
+                string_arg(name_str, "action", action, f);
+                actions.push_back(action);
+                for (SCM q = SCM_CDR(entry); scm_is_pair(q) && !f; q = SCM_CDR(q)) {
+                    std::string name;
+                    Binding b;
+                    if (!string_arg(SCM_CAR(q), "input-map key", name, f)) break;
+                    if (!parse_binding(name, static_cast<uint8_t>(i), b))
+                        fail(f, "wrong-type-arg", scm_list_2(SCM_CAR(q), SCM_CAR(entry)),
+                             "input-map: no key or controller input is named ~S (for ~S)");
+                    else
+                        bindings.push_back(b);
+                }
+            }
+            if (f) return;
+            d->actions = std::move(actions);
+            d->input.set_bindings(std::move(bindings));
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -461,8 +469,9 @@ SCM load_sound(SCM name, SCM path) {
     std::string n, p;
     if (!scm_is_symbol(name))
         fail(f, "wrong-type-arg", scm_list_1(name), "name: expected a symbol, got ~S");
-    else if (string_arg(scm_symbol_to_string(name), "name", n, f) && string_arg(path, "file", p, f))
+    else
         guarded(f, nullptr, [&] {
+            if (!string_arg(scm_symbol_to_string(name), "name", n, f) || !string_arg(path, "file", p, f)) return;
             if (!bank) bank = std::make_unique<SoundBank>(false);
             bank->load(n, p);
             sound_files[n] = p;
@@ -477,8 +486,10 @@ SCM play_sound(SCM name) {
     bool known = false;
     if (!scm_is_symbol(name))
         fail(f, "wrong-type-arg", scm_list_1(name), "name: expected a symbol, got ~S");
-    else if (string_arg(scm_symbol_to_string(name), "name", n, f))
-        guarded(f, nullptr, [&] { known = bank && bank->play(n); });
+    else
+        guarded(f, nullptr, [&] {
+            if (string_arg(scm_symbol_to_string(name), "name", n, f)) known = bank && bank->play(n);
+        });
     if (f) raise(f);
     return scm_from_bool(known);
 }

@@ -94,13 +94,12 @@ SCM load_tilemap(SCM path, SCM solid_gids) {
         {
             std::vector<uint32_t> gids;
             std::unique_ptr<MapHandle> handle;
-            if (gid_list(solid_gids, gids, "solid-gids", f)) {
-                guarded(f, nullptr, [&] {
-                    handle = std::make_unique<MapHandle>();
-                    handle->map = ds::load_tilemap(cpath, gids);
-                    handle->grid = handle->map.solid_grid();
-                });
-            }
+            guarded(f, nullptr, [&] {
+                if (!gid_list(solid_gids, gids, "solid-gids", f)) return;
+                handle = std::make_unique<MapHandle>();
+                handle->map = ds::load_tilemap(cpath, gids);
+                handle->grid = handle->map.solid_grid();
+            });
             if (handle) result = wrap(std::move(handle));
         }
         free(cpath);
@@ -127,29 +126,28 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
     {
         int w = 0, h = 0, tw = 0, th = 0;
         std::vector<uint32_t> gids, solid;
-        bool ok = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
-                  positive_int(tile_w, "tile-width", tw, f) &&
-                  positive_int(tile_h, "tile-height", th, f);
-        if (ok && scm_is_vector(cells)) {
-            const size_t n = scm_c_vector_length(cells);
-            for (size_t i = 0; ok && i < n; ++i) {
-                SCM g = scm_c_vector_ref(cells, i);
-                ok = scm_is_unsigned_integer(g, 0, 0xFFFFFFFFu);
-                if (ok) gids.push_back(scm_to_uint32(g));
-                else fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(i), g), "cells: element ~S is not a gid: ~S");
-            }
-        } else if (ok) {
-            ok = gid_list(cells, gids, "cells", f);
-        }
-        ok = ok && gid_list(solid_gids, solid, "solid-gids", f);
         std::unique_ptr<MapHandle> handle;
-        if (ok) {
-            guarded(f, "make-tilemap", [&] {
+        const bool sizes = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
+                           positive_int(tile_w, "tile-width", tw, f) && positive_int(tile_h, "tile-height", th, f);
+        if (sizes)
+            guarded(f, "make-tilemap", [&] {  // the gid lists are C++ vectors
+                bool ok = true;
+                if (scm_is_vector(cells)) {
+                    const size_t n = scm_c_vector_length(cells);
+                    for (size_t i = 0; ok && i < n; ++i) {
+                        SCM g = scm_c_vector_ref(cells, i);
+                        ok = scm_is_unsigned_integer(g, 0, 0xFFFFFFFFu);
+                        if (ok) gids.push_back(scm_to_uint32(g));
+                        else fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(i), g), "cells: element ~S is not a gid: ~S");
+                    }
+                } else {
+                    ok = gid_list(cells, gids, "cells", f);
+                }
+                if (!ok || !gid_list(solid_gids, solid, "solid-gids", f)) return;
                 handle = std::make_unique<MapHandle>();
                 handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid));
                 handle->grid = handle->map.solid_grid();
             });
-        }
         if (handle) result = wrap(std::move(handle));
     }
     if (f) raise(f);

@@ -36,6 +36,8 @@ SCM with_elapsed(SCM tween, double elapsed) {
     return scm_make_struct_no_tail(tween_rtd, init);
 }
 
+// The tween's easing at t. A procedure is called as Scheme: the caller's
+// frames must survive a longjmp (advance_entity_tween asserts its own).
 double eased(SCM tween, double t, Failure& f) {
     SCM index = field(tween, kEaseIndex);
     if (scm_is_true(index)) return ease(static_cast<Ease>(scm_to_int(index)), t);
@@ -76,7 +78,8 @@ SCM step_tweens_1(SCM entity, SCM dt) {
     Failure f{.proc = "step-tweens"};
     double d = 0;
     SCM result = entity;
-    if (dt_from_scm(dt, d, f)) result = advance_entity_tween(entity, d, f);
+    static_assert(survives_longjmp<decltype(d), decltype(result)>);  // across advance_entity_tween's callbacks
+    if (dt_from_scm(dt, d, f)) guarded(f, nullptr, [&] { result = advance_entity_tween(entity, d, f); });
     if (f) raise(f);
     return result;
 }
@@ -98,6 +101,10 @@ SCM advance_entity_tween(SCM entity, double dt, Failure& f) {
     const TweenPhase phase = tween_phase(timing, elapsed);
     Edit edits[kMaxTweenProps + 1];
     size_t n = 0;
+    // A custom easing (in eased) and on-complete are Scheme code run from
+    // here: an error or escape in either longjmps over this frame.
+    static_assert(survives_longjmp<decltype(d), decltype(elapsed), decltype(timing), decltype(phase),
+                                   decltype(edits), decltype(n)>);
     if (phase.started) {
         const double e = eased(tween, phase.t, f);
         if (f) return entity;
