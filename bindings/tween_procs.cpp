@@ -1,8 +1,10 @@
 // Tweens as Scheme records (defined in (downstroke tween)) stepped natively.
 // Record fields, in order: props ((key start . end) …), duration, delay,
 // ease (symbol or procedure), ease-index (or #f), repeat, yoyo?,
-// on-complete, elapsed.
+// on-complete, elapsed. They are read by position; %register-tween-type!
+// checks the record type's field names against kTweenFieldNames.
 #include <cmath>
+#include <iterator>
 
 #include "args.hpp"
 #include "ease.hpp"
@@ -18,6 +20,10 @@ namespace ds::guile {
 namespace {
 
 enum TweenField { kProps, kDuration, kDelay, kEase, kEaseIndex, kRepeat, kYoyo, kOnComplete, kElapsed, kTweenFields };
+// The <tween> record's field names, by TweenField.
+constexpr const char* kTweenFieldNames[] = {"props",  "duration", "delay",       "ease",   "ease-index",
+                                            "repeat", "yoyo?",    "on-complete", "elapsed"};
+static_assert(std::size(kTweenFieldNames) == kTweenFields);
 
 SCM tween_rtd = SCM_BOOL_F;
 
@@ -69,7 +75,23 @@ SCM ease_value(SCM index, SCM t) {
     return scm_from_double(ease(static_cast<Ease>(scm_to_int(index)), n.v));
 }
 
+// Refuses a record type whose fields are not, by name and in order, those
+// the stepper reads by position: a field added, dropped or moved in
+// (downstroke tween) without TweenField would otherwise be read as another.
 SCM register_tween_type(SCM rtd) {
+    Failure f{.proc = "%register-tween-type!"};
+    SCM expected = SCM_EOL;
+    for (int i = kTweenFields - 1; i >= 0; --i) expected = scm_cons(scm_from_utf8_symbol(kTweenFieldNames[i]), expected);
+    if (scm_is_false(scm_call_1(scm_c_public_ref("guile", "record-type?"), rtd))) {
+        fail(f, "wrong-type-arg", scm_list_1(rtd), "expected the <tween> record type, got ~S");
+    } else {
+        SCM fields = scm_call_1(scm_c_public_ref("guile", "record-type-fields"), rtd);
+        if (scm_is_false(scm_equal_p(fields, expected)))
+            fail(f, "misc-error", scm_list_3(rtd, fields, expected),
+                 "~S has the fields ~S, but the native tween stepper (TweenField in "
+                 "bindings/tween_procs.cpp) reads ~S by position: the two must match");
+    }
+    if (f) raise(f);
     tween_rtd = scm_gc_protect_object(rtd);
     return SCM_UNSPECIFIED;
 }
@@ -129,7 +151,9 @@ SCM advance_entity_tween(SCM entity, double dt, Failure& f) {
 
 void register_tween_procedures() {
     define_procedure<1, 0, 0, register_tween_type>("%register-tween-type!",
-        "Tell the native side which record type tweens are.");
+        "Tell the native side which record type tweens are; a record type whose fields are not "
+        "(props duration delay ease ease-index repeat yoyo? on-complete elapsed), the ones it reads "
+        "by position, is refused.");
     define_procedure<1, 0, 0, ease_index>("%ease-index",
         "The native index of an easing name such as 'quad-in-out, or #f.");
     define_procedure<2, 0, 0, ease_value>("%ease", "(%ease index t): a native easing at t.");
