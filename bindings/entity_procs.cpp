@@ -5,11 +5,11 @@
 #include "args.hpp"
 #include "batch.hpp"
 #include "contacts.hpp"
+#include "convert.hpp"
 #include "groups.hpp"
 #include "keys.hpp"
 #include "plist.hpp"
 #include "registry.hpp"
-#include "scm_number.hpp"
 #include "steps.hpp"
 #include "tilemap_type.hpp"
 #include "tiles.hpp"
@@ -108,15 +108,8 @@ SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h
     Failure f{.proc = "aabb-overlap?"};
     const SCM args[8] = {x1, y1, w1, h1, x2, y2, w2, h2};
     double v[8];
-    for (int i = 0; i < 8; ++i) {
-        Num n;
-        if (num_from_scm(args[i], n) != NumCheck::Ok) {
-            fail(f, "wrong-type-arg", scm_list_2(scm_from_int(i + 1), args[i]),
-                 "argument ~S: expected a finite real number, got ~S");
-            raise(f);
-        }
-        v[i] = n.v;
-    }
+    for (int i = 0; i < 8; ++i)
+        if (!from_scm(args[i], v[i], i + 1, f)) raise(f);
     return scm_from_bool(aabb_overlap(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
 }
 

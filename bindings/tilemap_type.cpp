@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "convert.hpp"
 #include "failure.hpp"
 #include "registry.hpp"
 
@@ -42,7 +43,7 @@ bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f
         out.push_back(scm_to_uint32(g));
     }
     if (!scm_is_null(p)) {
-        fail(f, "wrong-type-arg", scm_list_1(list), "%s: expected a list of gids, got ~S", what);
+        fail_arg(f, what, list, "a list of gids");
         return false;
     }
     return true;
@@ -112,12 +113,7 @@ SCM load_tilemap(SCM path, SCM solid_gids) {
 }
 
 bool positive_int(SCM v, const char* what, int& out, Failure& f) {
-    if (scm_is_signed_integer(v, 1, 1 << 24)) {
-        out = scm_to_int(v);
-        return true;
-    }
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a positive exact integer, got ~S", what);
-    return false;
+    return from_scm(v, out, what, f, 1, 1 << 24, "a positive exact integer");
 }
 
 SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids) {
@@ -180,9 +176,13 @@ SCM tilemap_objects(SCM m) {
 
 // Cell indexes are exact integers (any, since cells outside the map are empty).
 void check_cell(SCM col, SCM row, Failure& f) {
-    for (SCM v : {col, row})
+    const struct {
+        SCM v;
+        const char* name;
+    } cell[] = {{col, "col"}, {row, "row"}};
+    for (const auto& [v, name] : cell)
         if (!scm_is_signed_integer(v, INT64_MIN, INT64_MAX)) {
-            fail(f, "wrong-type-arg", scm_list_1(v), "expected an exact integer cell index, got ~S");
+            fail_arg(f, name, v, "an exact integer cell index");
             raise(f);
         }
 }
