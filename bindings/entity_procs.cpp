@@ -116,18 +116,23 @@ SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h
 }  // namespace
 
 void register_entity_procedures() {
+    // The per-entity steps' docstrings are their wrappers' in (downstroke physics).
+    constexpr const char* physics = "(downstroke physics)";
     define_procedure<1, 0, 0, apply_acceleration_1>("%apply-acceleration",
-        "vy += ay, then ay = 0, for a #:gravity? entity.");
-    define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", "vy += *gravity* for a #:gravity? entity.");
-    define_procedure<1, 0, 0, apply_velocity_x_1>("%apply-velocity-x", "x += vx.");
-    define_procedure<1, 0, 0, apply_velocity_y_1>("%apply-velocity-y", "y += vy.");
-    define_procedure<1, 0, 0, apply_velocity_1>("%apply-velocity", "x += vx and y += vy, each axis skippable.");
+        WrapperDoc{"(entity)", "apply-acceleration", physics});
+    define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", WrapperDoc{"(entity)", "apply-gravity", physics});
+    define_procedure<1, 0, 0, apply_velocity_x_1>("%apply-velocity-x",
+        WrapperDoc{"(entity)", "apply-velocity-x", physics});
+    define_procedure<1, 0, 0, apply_velocity_y_1>("%apply-velocity-y",
+        WrapperDoc{"(entity)", "apply-velocity-y", physics});
+    define_procedure<1, 0, 0, apply_velocity_1>("%apply-velocity", WrapperDoc{"(entity)", "apply-velocity", physics});
     define_procedure<3, 0, 0, resolve_tile_x_1>("%resolve-tile-collisions-x",
-        "(entity tilemap mode): snap out of solid tiles along x.");
+        WrapperDoc{"(entity tilemap mode)", "resolve-tile-collisions-x", physics});
     define_procedure<3, 0, 0, resolve_tile_y_1>("%resolve-tile-collisions-y",
-        "(entity tilemap mode): snap out of solid tiles along y.");
+        WrapperDoc{"(entity tilemap mode)", "resolve-tile-collisions-y", physics});
     define_procedure<3, 0, 0, detect_on_solid_1>("%detect-on-solid",
-        "(entity tilemap entities): set #:on-ground? from tiles and solid entities.");
+        WrapperDoc{"(entity tilemap entities)", "detect-on-solid", physics});
+    // Exported as they are (re-exported by (downstroke physics)): documented here.
     define_procedure<1, 0, 0, resolve_entity_collisions_n>("resolve-entity-collisions",
         "Push overlapping solid entities apart: one pass over the pairs in list order.");
     define_procedure<1, 0, 0, sync_groups_n>("sync-groups",

@@ -123,12 +123,9 @@ SCM frame_stats() {
 
 void register_frame_procedures() {
     define_procedure<4, 2, 0, step_entities>("%step-entities",
-        "(entities tilemap dt mode [substeps [resting-contacts?]]): the whole "
-        "default-engine-update pass over a list of entities: tweens, then motion, "
-        "tiles, ground, push-apart and groups in SUBSTEPS sub-frames (default 1).");
+        WrapperDoc{"(entities tilemap dt mode [substeps [resting-contacts?]])", "step-scene", "(downstroke physics)"});
     define_procedure<0, 0, 0, frame_stats>("%frame-stats",
-        "The last whole frame stepped on this thread: ((step processed skipped ms) …) "
-        "for decode, each step in order, and encode.");
+        WrapperDoc{"() → ((step processed skipped ms) …)", "engine-stats", "(downstroke engine)"});
 }
 
 }  // namespace ds::guile

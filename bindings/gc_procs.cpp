@@ -41,10 +41,9 @@ void apply_gc_policy() {
 
 void register_gc_procedures() {
     define_procedure<0, 0, 0, gc_space_divisor>("%gc-space-divisor",
-        "(): the collector's free-space divisor: it collects after allocating "
-        "about twice the live heap divided by this (1 = least often).");
+        WrapperDoc{"()", "gc-space-divisor", "(downstroke engine)"});
     define_procedure<1, 0, 0, set_gc_space_divisor>("%set-gc-space-divisor!",
-        "(n): sets the free-space divisor to N, an exact integer from 1 to 1000.");
+        WrapperDoc{"(n)", "set-gc-space-divisor!", "(downstroke engine)"});
 }
 
 }  // namespace ds::guile

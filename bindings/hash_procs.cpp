@@ -32,8 +32,7 @@ SCM scene_hash_entities(SCM entities) {
 
 void register_hash_procedures() {
     define_procedure<1, 0, 0, scene_hash_entities>("%scene-hash-entities",
-        "(entities): the 64-bit FNV-1a hash of the entities' physical state "
-        "(x y width height vx vy ay on-ground?), as an exact integer.");
+        WrapperDoc{"(entities)", "scene-hash", "(downstroke hash)"});
 }
 
 }  // namespace ds::guile

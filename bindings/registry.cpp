@@ -1,5 +1,6 @@
 #include "registry.hpp"
 
+#include <cstdio>
 #include <cstring>
 #include <exception>
 
@@ -40,6 +41,13 @@ void detail::define_gsubr(const char* name, int req, int opt, int rest, scm_t_su
     SCM proc = scm_c_define_gsubr(name, req, opt, rest, fn);
     scm_set_procedure_property_x(proc, scm_from_utf8_symbol("documentation"), scm_from_utf8_string(doc));
     scm_c_export(name, nullptr);
+}
+
+void detail::define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const WrapperDoc& doc) {
+    char text[256];
+    std::snprintf(text, sizeof text, "%s: native code for %s in %s, which documents it.", doc.args, doc.name,
+                  doc.module);
+    define_gsubr(name, req, opt, rest, fn, text);
 }
 
 }  // namespace ds::guile

@@ -3,6 +3,14 @@
 //
 //     define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", doc);
 //
+// Each public procedure's docstring is in one place. A procedure exported
+// from (downstroke native) under its public name (make-tilemap, sync-groups)
+// has it here. The native code of a public Scheme procedure (apply-gravity
+// calls %apply-gravity) gets a WrapperDoc instead, which only gives the
+// native argument list and names the wrapper, whose docstring is the one.
+// The building blocks no public docstring describes (%make-display,
+// %display-poll!, …) document their own interface here.
+//
 // The template checks the counts against the C++ signature when it compiles
 // (LilyPond's ly_subr_ptr idea): every parameter and the result are SCM, and
 // req + opt + rest is the parameter count, so a wrong count does not build.
@@ -22,6 +30,14 @@
 #include "failure.hpp"
 
 namespace ds::guile {
+
+// The docstring of the native code of a public Scheme procedure:
+// "ARGS: native code for NAME in MODULE, which documents it."
+struct WrapperDoc {
+    const char* args;    // the native argument list, "(entity tilemap mode)"
+    const char* name;    // the public procedure, "resolve-tile-collisions-x"
+    const char* module;  // where it is defined, "(downstroke physics)"
+};
 
 namespace detail {
 
@@ -71,13 +87,14 @@ scm_t_subr subr_of(SCM (*)(A...)) {
 void check_one_name(const char*& registered, const char* name);
 
 void define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const char* doc);
+void define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const WrapperDoc& doc);
 
 }  // namespace detail
 
 // Defines and exports `name`, taking Req required, Opt optional and (Rest 1)
-// a rest argument, with its docstring.
-template <int Req, int Opt, int Rest, auto Fn>
-void define_procedure(const char* name, const char* doc) {
+// a rest argument, with its docstring (a string, or a WrapperDoc).
+template <int Req, int Opt, int Rest, auto Fn, class Doc>
+void define_procedure(const char* name, const Doc& doc) {
     using Sig = detail::Signature<std::remove_cvref_t<decltype(Fn)>>;
     static_assert(Sig::scm_only, "a native procedure takes SCM arguments and returns SCM");
     static_assert(Req >= 0 && Opt >= 0 && (Rest == 0 || Rest == 1), "req, opt ≥ 0 and rest 0 or 1");

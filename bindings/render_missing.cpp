@@ -38,8 +38,9 @@ SCM default_input_map() { return SCM_EOL; }
 }  // namespace
 
 void register_render_procedures() {
-    define_procedure<0, 0, 0, renderer_p>("%renderer?", "(): whether this build has the renderer (SDL2).");
-    define_procedure<0, 0, 0, default_input_map>("%default-input-map", "(): no inputs without the renderer.");
+    define_procedure<0, 0, 0, renderer_p>("%renderer?", WrapperDoc{"()", "renderer-available?", "(downstroke render)"});
+    define_procedure<0, 0, 0, default_input_map>("%default-input-map",
+        WrapperDoc{"()", "default-input-map", "(downstroke render)"});
     define_stand_ins(std::make_index_sequence<std::size(kStandIns)>());
 }
 

@@ -483,7 +483,24 @@ void register_render_procedures() {
     key_sprite = scm_permanent_object(scm_from_utf8_keyword("sprite"));
     key_flip_x = scm_permanent_object(scm_from_utf8_keyword("flip-x?"));
 
-    define_procedure<0, 0, 0, renderer_p>("%renderer?", "(): whether this build has the renderer (SDL2).");
+    // The native code of (downstroke render)'s and (downstroke engine)'s
+    // procedures, documented there; then the game loop's building blocks.
+    constexpr const char* render = "(downstroke render)";
+    constexpr const char* engine = "(downstroke engine)";
+    define_procedure<0, 0, 0, renderer_p>("%renderer?", WrapperDoc{"()", "renderer-available?", render});
+    define_procedure<0, 0, 0, default_map>("%default-input-map", WrapperDoc{"()", "default-input-map", render});
+    define_procedure<8, 0, 0, draw_rect>("%draw-rect!",
+        WrapperDoc{"(display x y w h color fill? space)", "draw-rect", render});
+    define_procedure<7, 0, 0, draw_line>("%draw-line!",
+        WrapperDoc{"(display x0 y0 x1 y1 color space)", "draw-line", render});
+    define_procedure<5, 0, 0, draw_sprite>("%draw-sprite!",
+        WrapperDoc{"(display gid x y space)", "draw-sprite", render});
+    define_procedure<7, 0, 0, draw_text>("%draw-text!",
+        WrapperDoc{"(display text x y color scale space)", "draw-text", render});
+    define_procedure<2, 0, 0, load_sound>("%load-sound", WrapperDoc{"(name file)", "load-sound", render});
+    define_procedure<1, 0, 0, display_stats>("%display-stats",
+        WrapperDoc{"(display) → (render drawn culled ms)", "engine-stats", engine});
+    define_procedure<3, 0, 0, display_pixel>("%display-pixel", WrapperDoc{"(display x y)", "game-pixel", engine});
     define_procedure<2, 0, 0, make_display>("%make-display",
         "(width height): a display: an off-screen canvas of that size, made when first drawn.");
     define_procedure<3, 0, 0, open_window>("%display-open-window!",
@@ -491,31 +508,16 @@ void register_render_procedures() {
     define_procedure<1, 0, 0, close_window>("%display-close-window!", "(display): closes its window.");
     define_procedure<7, 0, 0, display_draw>("%display-draw!",
         "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
-    define_procedure<1, 0, 0, display_stats>("%display-stats",
-        "(display): (render drawn culled ms) for the last frame drawn.");
     define_procedure<2, 0, 0, display_save_png>("%display-save-png",
         "(display file): writes the last frame drawn as a PNG.");
-    define_procedure<3, 0, 0, display_pixel>("%display-pixel",
-        "(display x y): the last frame's pixel as (r g b a).");
     define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",
         "(display): forgets the draw commands of the last frame.");
-    define_procedure<8, 0, 0, draw_rect>("%draw-rect!",
-        "(display x y w h color fill? space): queues a rectangle.");
-    define_procedure<7, 0, 0, draw_line>("%draw-line!",
-        "(display x0 y0 x1 y1 color space): queues a line.");
-    define_procedure<5, 0, 0, draw_sprite>("%draw-sprite!",
-        "(display gid x y space): queues a tile picture by gid.");
-    define_procedure<7, 0, 0, draw_text>("%draw-text!",
-        "(display text x y color scale space): queues text in the built-in font.");
     define_procedure<2, 0, 0, set_input_map>("%display-set-input-map!",
         "(display map): binds keys and controller inputs to actions: ((action name …) …).");
-    define_procedure<0, 0, 0, default_map>("%default-input-map",
-        "(): the default ((action name …) …): arrows/WASD, Z/Space, X, Return, Backspace, Escape, pads.");
     define_procedure<1, 0, 0, poll_input>("%display-poll!",
         "(display): (held-actions quit? debug-toggles) from the window's events.");
     define_procedure<1, 0, 0, open_audio>("%open-audio!",
         "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
-    define_procedure<2, 0, 0, load_sound>("%load-sound", "(name file): decodes a sound.");
     define_procedure<1, 0, 0, play_sound>("%play-sound",
         "(name): plays a loaded sound; #f when none has that name.");
     define_procedure<1, 0, 0, note_pushed_pairs>("%note-pushed-pairs!",

@@ -245,7 +245,8 @@ bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
 void register_tilemap_procedures() {
     init_tilemap_type();
     define_procedure<2, 0, 0, load_tilemap>("%load-tilemap",
-        "Loads a Tiled .tmx file (and its .tsx tilesets); the list of gids is solid too.");
+        WrapperDoc{"(path solid-gids)", "load-tilemap", "(downstroke tilemap)"});
+    // Exported as they are (re-exported by (downstroke tilemap)): documented here.
     define_procedure<6, 0, 0, make_tilemap>("make-tilemap",
         "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
         "memory; cells is a vector (or list) of gids, row-major.");

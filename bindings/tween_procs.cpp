@@ -156,9 +156,9 @@ void register_tween_procedures() {
         "by position, is refused.");
     define_procedure<1, 0, 0, ease_index>("%ease-index",
         "The native index of an easing name such as 'quad-in-out, or #f.");
-    define_procedure<2, 0, 0, ease_value>("%ease", "(%ease index t): a native easing at t.");
+    define_procedure<2, 0, 0, ease_value>("%ease", WrapperDoc{"(index t)", "ease", "(downstroke tween)"});
     define_procedure<2, 0, 0, step_tweens_1>("%step-tweens",
-        "(entity dt): advance the entity's #:tween by dt ms.");
+        WrapperDoc{"(entity dt)", "step-tweens", "(downstroke physics)"});
 }
 
 }  // namespace ds::guile
