@@ -5,8 +5,6 @@
 #include <cstdlib>
 #include <memory>
 
-#include "scm_number.hpp"
-
 namespace ds::guile {
 
 void fail_arg(Failure& f, Arg a, SCM v, const char* what, ...) {
@@ -20,16 +18,6 @@ void fail_arg(Failure& f, Arg a, SCM v, const char* what, ...) {
         fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected %s, got ~S", a.name, expected);
     else
         fail(f, "wrong-type-arg", scm_list_2(scm_from_int(a.position), v), "argument ~S: expected %s, got ~S", expected);
-}
-
-bool from_scm(SCM v, double& out, Arg a, Failure& f, const char* what) {
-    Num n;
-    if (num_from_scm(v, n) == NumCheck::Ok) {
-        out = n.v;
-        return true;
-    }
-    fail_arg(f, a, v, "%s", what);
-    return false;
 }
 
 bool from_scm(SCM v, int& out, Arg a, Failure& f, int lo, int hi, const char* what) {

@@ -21,7 +21,7 @@ namespace {
 // Decodes one entity, runs step on its body, encodes what changed.
 template <typename Step>
 SCM step_entity(const char* proc, SCM entity, Step step) {
-    Failure f{.proc = proc};
+    Failure f{proc};
     SCM result = entity;
     {
         Decoded d;
@@ -45,7 +45,7 @@ SCM apply_velocity_1(SCM e) { return step_entity("apply-velocity", e, apply_velo
 
 template <bool (*Resolve)(Body&, const TileGrid*, CollisionMode, SubStep)>
 SCM resolve_tiles(const char* proc, SCM e, SCM tilemap, SCM mode) {
-    Failure f{.proc = proc};
+    Failure f{proc};
     const TileGrid* grid = nullptr;
     CollisionMode m{};
     if (!grid_from_scm(tilemap, grid, f) || !mode_from_scm(mode, m, f)) raise(f);
@@ -62,7 +62,7 @@ SCM resolve_tile_y_1(SCM e, SCM tm, SCM mode) {
 // The scene's entities, decoded; every slot holding the entity itself (eq?)
 // is left out as a supporter, as SPEC §4 says "not eq?".
 SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
-    Failure f{.proc = "detect-on-solid"};
+    Failure f{"detect-on-solid"};
     SCM result = e;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
     guarded(f, nullptr, [&] {
@@ -84,7 +84,7 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
 
 template <void (*Bulk)(std::span<Body>)>
 SCM bulk_step(const char* proc, SCM entities) {
-    Failure f{.proc = proc};
+    Failure f{proc};
     SCM result = entities;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
     guarded(f, nullptr, [&] {
@@ -105,7 +105,7 @@ SCM resolve_entity_collisions_n(SCM entities) {
 SCM sync_groups_n(SCM entities) { return bulk_step<sync_groups>("sync-groups", entities); }
 
 SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h2) {
-    Failure f{.proc = "aabb-overlap?"};
+    Failure f{"aabb-overlap?"};
     const SCM args[8] = {x1, y1, w1, h1, x2, y2, w2, h2};
     double v[8];
     for (int i = 0; i < 8; ++i)

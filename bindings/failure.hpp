@@ -14,10 +14,14 @@ namespace ds::guile {
 struct Failure {
     const char* proc = nullptr;  // the Scheme procedure's name
     const char* key = "wrong-type-arg";  // the Scheme error key
-    char message[256] = {0};     // a format string for scm_error: ~S takes an irritant
     SCM irritants = SCM_EOL;
     bool failed = false;
+    // A format string for scm_error (~S takes an irritant), written by fail()
+    // or fail_text() before anything reads it: left uninitialised, as every
+    // native call makes a Failure and few fail.
+    char message[256];
 
+    explicit Failure(const char* proc_name = nullptr) : proc(proc_name) {}
     explicit operator bool() const { return failed; }
 };
 

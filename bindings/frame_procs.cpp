@@ -45,7 +45,7 @@ struct LastFrame {
 thread_local LastFrame last_frame;
 
 SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM resting) {
-    Failure f{.proc = "step-scene"};
+    Failure f{"step-scene"};
     SCM result = entities;
     if (PairLog* log = pair_log()) log->clear();  // the overlay shows this frame's pairs
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));

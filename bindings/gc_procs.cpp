@@ -21,7 +21,7 @@ constexpr long kMaxDivisor = 1000;  // beyond this the collector runs after ever
 SCM gc_space_divisor() { return scm_from_ulong(GC_get_free_space_divisor()); }
 
 SCM set_gc_space_divisor(SCM n) {
-    Failure f{.proc = "set-gc-space-divisor!"};
+    Failure f{"set-gc-space-divisor!"};
     if (!scm_is_exact_integer(n))
         fail(f, "wrong-type-arg", scm_list_1(n), "expected an exact integer (the free-space divisor), got ~S");
     else if (!scm_is_signed_integer(n, 1, kMaxDivisor))

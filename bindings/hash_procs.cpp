@@ -12,7 +12,7 @@ namespace {
 // exactly the state the steps see (first occurrence of a key wins, a
 // missing key is exact 0 or #f) and refuses what they refuse.
 SCM scene_hash_entities(SCM entities) {
-    Failure f{.proc = "scene-hash"};
+    Failure f{"scene-hash"};
     uint64_t hash = 0;
     guarded(f, nullptr, [&] {
         StateHash h;

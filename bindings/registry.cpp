@@ -18,7 +18,7 @@ thread_local Failure escaped;
 }  // namespace
 
 void detail::note_escaped(const char* proc) noexcept {
-    escaped = Failure{.proc = proc};
+    escaped = Failure{proc};
     try {
         throw;
     } catch (const std::exception& e) {

@@ -45,11 +45,13 @@ template <class F>
 struct Signature {
     static constexpr bool scm_only = false;
     static constexpr int arity = -1;
+    using Plain = void;
 };
 template <class... A>
 struct Signature<SCM (*)(A...)> {
     static constexpr bool scm_only = (std::is_same_v<A, SCM> && ...);
     static constexpr int arity = sizeof...(A);
+    using Plain = SCM (*)(A...);
 };
 template <class... A>
 struct Signature<SCM (*)(A...) noexcept> : Signature<SCM (*)(A...)> {};
@@ -77,8 +79,10 @@ SCM trampoline(A... args) {
     raise_escaped();
 }
 
+// The trampoline for Fn, deduced from Fn's type alone: fn's address is
+// taken nowhere else, so the compiler may inline fn into its trampoline.
 template <auto Fn, class... A>
-scm_t_subr subr_of(SCM (*)(A...)) {
+scm_t_subr subr_of(std::type_identity<SCM (*)(A...)>) {
     return reinterpret_cast<scm_t_subr>(&trampoline<Fn, A...>);
 }
 
@@ -102,7 +106,7 @@ void define_procedure(const char* name, const Doc& doc) {
                   "req + opt + rest must be the number of the C++ function's parameters");
     static_assert(Sig::arity <= SCM_GSUBR_MAX, "Guile's subrs take at most SCM_GSUBR_MAX arguments");
     detail::check_one_name(detail::name_of<Fn>, name);
-    detail::define_gsubr(name, Req, Opt, Rest, detail::subr_of<Fn>(Fn), doc);
+    detail::define_gsubr(name, Req, Opt, Rest, detail::subr_of<Fn>(std::type_identity<typename Sig::Plain>{}), doc);
 }
 
 // Each file of procedures has one of these; ds_init_native (registry.cpp)

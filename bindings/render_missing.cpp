@@ -21,7 +21,7 @@ constexpr const char* kStandIns[] = {
 // One function per name (I), as each registered function has one name.
 template <size_t I>
 SCM missing(SCM) {
-    Failure f{.proc = "downstroke"};
+    Failure f{"downstroke"};
     fail_text(f, "misc-error", nullptr,
               "this build has no renderer: install libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev and rebuild");
     raise(f);

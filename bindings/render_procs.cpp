@@ -110,7 +110,7 @@ bool symbol_arg(SCM v, const char* what, std::string& out, Failure& f) {
 // ---------------------------------------------------------------- displays
 
 SCM make_display(SCM width, SCM height) {
-    Failure f{.proc = "make-display"};
+    Failure f{"make-display"};
     int w = 0, h = 0;
     Display* d = nullptr;
     if (from_scm(width, w, "width", f, 1, kMaxCanvasSide) && from_scm(height, h, "height", f, 1, kMaxCanvasSide))
@@ -424,7 +424,7 @@ std::unique_ptr<SoundBank> bank;  // one per process: there is one audio device
 std::unordered_map<std::string, std::string> sound_files;
 
 SCM open_audio(SCM audible) {
-    Failure f{.proc = "load-sound"};
+    Failure f{"load-sound"};
     guarded(f, nullptr, [&] {
         if (!bank || (scm_is_true(audible) && !bank->audible())) {
             bank.reset();
@@ -437,7 +437,7 @@ SCM open_audio(SCM audible) {
 }
 
 SCM load_sound(SCM name, SCM path) {
-    Failure f{.proc = "load-sound"};
+    Failure f{"load-sound"};
     std::string n, p;
     guarded(f, nullptr, [&] {
         if (!symbol_arg(name, "name", n, f) || !from_scm(path, p, "file", f)) return;
@@ -450,7 +450,7 @@ SCM load_sound(SCM name, SCM path) {
 }
 
 SCM play_sound(SCM name) {
-    Failure f{.proc = "play-sound"};
+    Failure f{"play-sound"};
     std::string n;
     bool known = false;
     guarded(f, nullptr, [&] {

@@ -86,7 +86,7 @@ SCM object_plist(const MapObject& o) {
 }
 
 SCM load_tilemap(SCM path, SCM solid_gids) {
-    Failure f{.proc = "load-tilemap"};
+    Failure f{"load-tilemap"};
     SCM result = SCM_BOOL_F;
     if (!scm_is_string(path)) {
         fail(f, "wrong-type-arg", scm_list_1(path), "expected a file name, got ~S");
@@ -117,7 +117,7 @@ bool positive_int(SCM v, const char* what, int& out, Failure& f) {
 }
 
 SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids) {
-    Failure f{.proc = "make-tilemap"};
+    Failure f{"make-tilemap"};
     SCM result = SCM_BOOL_F;
     {
         int w = 0, h = 0, tw = 0, th = 0;

@@ -66,7 +66,7 @@ SCM ease_index(SCM name) {
 }
 
 SCM ease_value(SCM index, SCM t) {
-    Failure f{.proc = "ease"};
+    Failure f{"ease"};
     Num n;
     if (!scm_is_signed_integer(index, 0, static_cast<int>(Ease::Custom) - 1) || num_from_scm(t, n) != NumCheck::Ok) {
         fail(f, "wrong-type-arg", scm_list_2(index, t), "expected an easing index and a real t, got ~S ~S");
@@ -79,7 +79,7 @@ SCM ease_value(SCM index, SCM t) {
 // the stepper reads by position: a field added, dropped or moved in
 // (downstroke tween) without TweenField would otherwise be read as another.
 SCM register_tween_type(SCM rtd) {
-    Failure f{.proc = "%register-tween-type!"};
+    Failure f{"%register-tween-type!"};
     SCM expected = SCM_EOL;
     for (int i = kTweenFields - 1; i >= 0; --i) expected = scm_cons(scm_from_utf8_symbol(kTweenFieldNames[i]), expected);
     if (scm_is_false(scm_call_1(scm_c_public_ref("guile", "record-type?"), rtd))) {
@@ -97,7 +97,7 @@ SCM register_tween_type(SCM rtd) {
 }
 
 SCM step_tweens_1(SCM entity, SCM dt) {
-    Failure f{.proc = "step-tweens"};
+    Failure f{"step-tweens"};
     double d = 0;
     SCM result = entity;
     static_assert(survives_longjmp<decltype(d), decltype(result)>);  // across advance_entity_tween's callbacks
