@@ -1,4 +1,4 @@
-// Argument checks shared by several native procedures.
+// Argument checks shared by several native procedures (on convert.hpp).
 #pragma once
 #include <libguile.h>
 

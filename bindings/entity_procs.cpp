@@ -5,11 +5,11 @@
 #include "args.hpp"
 #include "batch.hpp"
 #include "contacts.hpp"
+#include "convert.hpp"
 #include "groups.hpp"
 #include "keys.hpp"
 #include "plist.hpp"
 #include "registry.hpp"
-#include "scm_number.hpp"
 #include "steps.hpp"
 #include "tilemap_type.hpp"
 #include "ground.hpp"
@@ -22,16 +22,16 @@ namespace {
 // Decodes one entity, runs step on its body, encodes what changed.
 template <typename Step>
 SCM step_entity(const char* proc, SCM entity, Step step) {
-    Failure f{.proc = proc};
+    Failure f{proc};
     SCM result = entity;
     {
         Decoded d;
         if (decode_entity(entity, d, f)) {
             const Body before = d.body;
-            step(d.body);
+            guarded(f, nullptr, [&] { step(d.body); });
             Edit edits[16];
             const uint32_t changed = changed_fields(before, d.body);
-            if (check_finite(d.body, changed, f)) result = rewrite_plist(entity, edits, field_edits(changed, d.body, edits));
+            if (!f && check_finite(d.body, changed, f)) result = rewrite_plist(entity, edits, field_edits(changed, d.body, edits));
         }
     }
     if (f) raise(f);
@@ -46,7 +46,7 @@ SCM apply_velocity_1(SCM e) { return step_entity("apply-velocity", e, apply_velo
 
 template <bool (*Resolve)(Body&, const TileGrid*, CollisionMode, SubStep)>
 SCM resolve_tiles(const char* proc, SCM e, SCM tilemap, SCM mode) {
-    Failure f{.proc = proc};
+    Failure f{proc};
     const TileGrid* grid = nullptr;
     CollisionMode m{};
     if (!grid_from_scm(tilemap, grid, f) || !mode_from_scm(mode, m, f)) raise(f);
@@ -63,10 +63,10 @@ SCM resolve_tile_y_1(SCM e, SCM tm, SCM mode) {
 // The scene's entities, decoded; every slot holding the entity itself (eq?)
 // is left out as a supporter, as semantics §4 says "not eq?".
 SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
-    Failure f{.proc = "detect-on-solid"};
+    Failure f{"detect-on-solid"};
     SCM result = e;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
-    {
+    guarded(f, nullptr, [&] {
         const TileGrid* grid = nullptr;
         Batch& scene = lease_batch();
         if (grid_from_scm(tilemap, grid, f) && decode_batch(entities, scene, f)) {
@@ -77,7 +77,7 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
                 detect_on_solid(b, scene.bodies, -1, grid);
             });
         }
-    }
+    });
     scm_dynwind_end();
     if (f) raise(f);
     return result;
@@ -85,16 +85,16 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
 
 template <void (*Bulk)(std::span<Body>)>
 SCM bulk_step(const char* proc, SCM entities) {
-    Failure f{.proc = proc};
+    Failure f{proc};
     SCM result = entities;
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
-    {
+    guarded(f, nullptr, [&] {
         Batch& batch = lease_batch();
         if (decode_batch(entities, batch, f)) {
             Bulk(batch.bodies);
             result = encode_batch(entities, batch, f);
         }
-    }
+    });
     scm_dynwind_end();
     if (f) raise(f);
     return result;
@@ -106,42 +106,40 @@ SCM resolve_entity_collisions_n(SCM entities) {
 SCM sync_groups_n(SCM entities) { return bulk_step<sync_groups>("sync-groups", entities); }
 
 SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h2) {
-    Failure f{.proc = "aabb-overlap?"};
+    Failure f{"aabb-overlap?"};
     const SCM args[8] = {x1, y1, w1, h1, x2, y2, w2, h2};
     double v[8];
-    for (int i = 0; i < 8; ++i) {
-        Num n;
-        if (num_from_scm(args[i], n) != NumCheck::Ok) {
-            fail(f, "wrong-type-arg", scm_list_2(scm_from_int(i + 1), args[i]),
-                 "argument ~S: expected a finite real number, got ~S");
-            raise(f);
-        }
-        v[i] = n.v;
-    }
+    for (int i = 0; i < 8; ++i)
+        if (!from_scm(args[i], v[i], i + 1, f)) raise(f);
     return scm_from_bool(aabb_overlap(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
 }
 
 }  // namespace
 
 void register_entity_procedures() {
-    define_procedure("%apply-acceleration", 1, 0, 0, (Subr)apply_acceleration_1,
-                     "vy += ay, then ay = 0, for a #:gravity? entity.");
-    define_procedure("%apply-gravity", 1, 0, 0, (Subr)apply_gravity_1, "vy += *gravity* for a #:gravity? entity.");
-    define_procedure("%apply-velocity-x", 1, 0, 0, (Subr)apply_velocity_x_1, "x += vx.");
-    define_procedure("%apply-velocity-y", 1, 0, 0, (Subr)apply_velocity_y_1, "y += vy.");
-    define_procedure("%apply-velocity", 1, 0, 0, (Subr)apply_velocity_1, "x += vx and y += vy, each axis skippable.");
-    define_procedure("%resolve-tile-collisions-x", 3, 0, 0, (Subr)resolve_tile_x_1,
-                     "(entity tilemap mode): snap out of solid tiles along x.");
-    define_procedure("%resolve-tile-collisions-y", 3, 0, 0, (Subr)resolve_tile_y_1,
-                     "(entity tilemap mode): snap out of solid tiles along y.");
-    define_procedure("%detect-on-solid", 3, 0, 0, (Subr)detect_on_solid_1,
-                     "(entity tilemap entities): set #:on-ground? from tiles and solid entities.");
-    define_procedure("resolve-entity-collisions", 1, 0, 0, (Subr)resolve_entity_collisions_n,
-                     "Push overlapping solid entities apart: one pass over the pairs in list order.");
-    define_procedure("sync-groups", 1, 0, 0, (Subr)sync_groups_n,
-                     "Place every group member at its origin's position plus its local offset.");
-    define_procedure("aabb-overlap?", 8, 0, 0, (Subr)aabb_overlap_p,
-                     "(aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2): strict overlap of two boxes.");
+    // The per-entity steps' docstrings are their wrappers' in (downstroke physics).
+    constexpr const char* physics = "(downstroke physics)";
+    define_procedure<1, 0, 0, apply_acceleration_1>("%apply-acceleration",
+        WrapperDoc{"(entity)", "apply-acceleration", physics});
+    define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", WrapperDoc{"(entity)", "apply-gravity", physics});
+    define_procedure<1, 0, 0, apply_velocity_x_1>("%apply-velocity-x",
+        WrapperDoc{"(entity)", "apply-velocity-x", physics});
+    define_procedure<1, 0, 0, apply_velocity_y_1>("%apply-velocity-y",
+        WrapperDoc{"(entity)", "apply-velocity-y", physics});
+    define_procedure<1, 0, 0, apply_velocity_1>("%apply-velocity", WrapperDoc{"(entity)", "apply-velocity", physics});
+    define_procedure<3, 0, 0, resolve_tile_x_1>("%resolve-tile-collisions-x",
+        WrapperDoc{"(entity tilemap mode)", "resolve-tile-collisions-x", physics});
+    define_procedure<3, 0, 0, resolve_tile_y_1>("%resolve-tile-collisions-y",
+        WrapperDoc{"(entity tilemap mode)", "resolve-tile-collisions-y", physics});
+    define_procedure<3, 0, 0, detect_on_solid_1>("%detect-on-solid",
+        WrapperDoc{"(entity tilemap entities)", "detect-on-solid", physics});
+    // Exported as they are (re-exported by (downstroke physics)): documented here.
+    define_procedure<1, 0, 0, resolve_entity_collisions_n>("resolve-entity-collisions",
+        "Push overlapping solid entities apart: one pass over the pairs in list order.");
+    define_procedure<1, 0, 0, sync_groups_n>("sync-groups",
+        "Place every group member at its origin's position plus its local offset.");
+    define_procedure<8, 0, 0, aabb_overlap_p>("aabb-overlap?",
+        "(aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2): strict overlap of two boxes.");
 }
 
 }  // namespace ds::guile

@@ -7,18 +7,33 @@
 
 #include <cstdarg>
 #include <exception>
+#include <type_traits>
 
 namespace ds::guile {
 
 struct Failure {
     const char* proc = nullptr;  // the Scheme procedure's name
     const char* key = "wrong-type-arg";  // the Scheme error key
-    char message[256] = {0};     // a format string for scm_error: ~S takes an irritant
     SCM irritants = SCM_EOL;
     bool failed = false;
+    // A format string for scm_error (~S takes an irritant), written by fail()
+    // or fail_text() before anything reads it: left uninitialised, as every
+    // native call makes a Failure and few fail.
+    char message[256];
 
+    explicit Failure(const char* proc_name = nullptr) : proc(proc_name) {}
     explicit operator bool() const { return failed; }
 };
+
+// Whether objects of these types may be alive in a C++ frame that a Guile
+// non-local exit longjmps over (an error raised by a libguile call, or by
+// Scheme code the frame calls back: a custom easing, an on-complete, and
+// what they call): only when there is no destructor for the jump to skip.
+// References own nothing and qualify.
+template <class... T>
+inline constexpr bool survives_longjmp = (std::is_trivially_destructible_v<T> && ...);
+
+static_assert(survives_longjmp<Failure>, "every native procedure keeps a Failure across Guile calls");
 
 // Records a failure; `irritants` are SCM values for the message's ~S slots
 // (up to four, SCM_UNDEFINED-terminated by the helpers below).
@@ -35,9 +50,13 @@ void fail_text(Failure& f, const char* key, const char* what, const char* text);
 [[noreturn]] void raise(const Failure& f);
 
 // Runs fn (a C++ callable that may throw) and turns any exception into a
-// Failure, so nothing escapes into Guile.
+// Failure, so nothing escapes into Guile. fn may call libguile, and Scheme,
+// whose errors longjmp out of it: its closure (captures by reference) must
+// have no destructor to skip.
 template <typename Fn>
 bool guarded(Failure& f, const char* what, Fn&& fn) noexcept {
+    static_assert(survives_longjmp<std::remove_reference_t<Fn>>,
+                  "a Guile error can longjmp out of a guarded closure: capture by reference");
     try {
         fn();
         return true;

@@ -24,6 +24,8 @@ SCM step_list_tweens(SCM entities, const Batch& batch, double dt, Failure& f) {
     SCM out = SCM_EOL;
     bool changed = false;
     size_t i = 0;
+    // advance_entity_tween calls Scheme: see step_entities.
+    static_assert(survives_longjmp<decltype(out), decltype(changed), decltype(i), decltype(batch)>);
     for (SCM p = entities; scm_is_pair(p) && !f; p = SCM_CDR(p), ++i) {
         SCM e = SCM_CAR(p);
         SCM stepped = batch.has_tween[i] ? advance_entity_tween(e, dt, f) : e;
@@ -43,17 +45,21 @@ struct LastFrame {
 thread_local LastFrame last_frame;
 
 SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM resting) {
-    Failure f{.proc = "step-scene"};
+    Failure f{"step-scene"};
     SCM result = entities;
     if (PairLog* log = pair_log()) log->clear();  // the overlay shows this frame's pairs
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
-    {
+    guarded(f, nullptr, [&] {
         FrameOptions opts;
         opts.resting_contacts = !SCM_UNBNDP(resting) && scm_is_true(resting);
         const TileGrid* grid = nullptr;
-        Batch& batch = lease_batch();
+        Batch& batch = lease_batch();  // owned by the pool, returned by the dynwind handler
         LastFrame stats;
         auto t0 = Clock::now();
+        // The tween stage calls Scheme (custom easings, on-complete): an error
+        // or escape there longjmps over this frame, these locals included.
+        static_assert(survives_longjmp<decltype(opts), decltype(grid), decltype(batch), decltype(stats),
+                                       decltype(t0)>);
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
             frame_is_noop(batch, entities, grid, opts)) {
@@ -94,7 +100,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                 }
             }
         }
-    }
+    });
     scm_dynwind_end();
     if (f) raise(f);
     return result;
@@ -116,13 +122,10 @@ SCM frame_stats() {
 }  // namespace
 
 void register_frame_procedures() {
-    define_procedure("%step-entities", 4, 2, 0, (Subr)step_entities,
-                     "(entities tilemap dt mode [substeps [resting-contacts?]]): the whole "
-                     "default-engine-update pass over a list of entities: tweens, then motion, "
-                     "tiles, ground, push-apart and groups in SUBSTEPS sub-frames (default 1).");
-    define_procedure("%frame-stats", 0, 0, 0, (Subr)frame_stats,
-                     "The last whole frame stepped on this thread: ((step processed skipped ms) …) "
-                     "for decode, each step in order, and encode.");
+    define_procedure<4, 2, 0, step_entities>("%step-entities",
+        WrapperDoc{"(entities tilemap dt mode [substeps [resting-contacts?]])", "step-scene", "(downstroke physics)"});
+    define_procedure<0, 0, 0, frame_stats>("%frame-stats",
+        WrapperDoc{"() → ((step processed skipped ms) …)", "engine-stats", "(downstroke engine)"});
 }
 
 }  // namespace ds::guile

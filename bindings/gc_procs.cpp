@@ -21,7 +21,7 @@ constexpr long kMaxDivisor = 1000;  // beyond this the collector runs after ever
 SCM gc_space_divisor() { return scm_from_ulong(GC_get_free_space_divisor()); }
 
 SCM set_gc_space_divisor(SCM n) {
-    Failure f{.proc = "set-gc-space-divisor!"};
+    Failure f{"set-gc-space-divisor!"};
     if (!scm_is_exact_integer(n))
         fail(f, "wrong-type-arg", scm_list_1(n), "expected an exact integer (the free-space divisor), got ~S");
     else if (!scm_is_signed_integer(n, 1, kMaxDivisor))
@@ -40,11 +40,10 @@ void apply_gc_policy() {
 }
 
 void register_gc_procedures() {
-    define_procedure("%gc-space-divisor", 0, 0, 0, (Subr)gc_space_divisor,
-                     "(): the collector's free-space divisor: it collects after allocating "
-                     "about twice the live heap divided by this (1 = least often).");
-    define_procedure("%set-gc-space-divisor!", 1, 0, 0, (Subr)set_gc_space_divisor,
-                     "(n): sets the free-space divisor to N, an exact integer from 1 to 1000.");
+    define_procedure<0, 0, 0, gc_space_divisor>("%gc-space-divisor",
+        WrapperDoc{"()", "gc-space-divisor", "(downstroke engine)"});
+    define_procedure<1, 0, 0, set_gc_space_divisor>("%set-gc-space-divisor!",
+        WrapperDoc{"(n)", "set-gc-space-divisor!", "(downstroke engine)"});
 }
 
 }  // namespace ds::guile

@@ -12,9 +12,9 @@ namespace {
 // exactly the state the steps see (first occurrence of a key wins, a
 // missing key is exact 0 or #f) and refuses what they refuse.
 SCM scene_hash_entities(SCM entities) {
-    Failure f{.proc = "scene-hash"};
+    Failure f{"scene-hash"};
     uint64_t hash = 0;
-    {
+    guarded(f, nullptr, [&] {
         StateHash h;
         Decoded d;
         SCM p = entities;
@@ -23,7 +23,7 @@ SCM scene_hash_entities(SCM entities) {
         if (!f && !scm_is_null(p))
             fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");
         hash = h.value();
-    }
+    });
     if (f) raise(f);
     return scm_from_uint64(hash);
 }
@@ -31,9 +31,8 @@ SCM scene_hash_entities(SCM entities) {
 }  // namespace
 
 void register_hash_procedures() {
-    define_procedure("%scene-hash-entities", 1, 0, 0, (Subr)scene_hash_entities,
-                     "(entities): the 64-bit FNV-1a hash of the entities' physical state "
-                     "(x y width height vx vy ay on-ground?), as an exact integer.");
+    define_procedure<1, 0, 0, scene_hash_entities>("%scene-hash-entities",
+        WrapperDoc{"(entities)", "scene-hash", "(downstroke hash)"});
 }
 
 }  // namespace ds::guile

@@ -1,13 +1,53 @@
 #include "registry.hpp"
 
+#include <cstdio>
+#include <cstring>
+#include <exception>
+
 #include "keys.hpp"
 
 namespace ds::guile {
 
-void define_procedure(const char* name, int req, int opt, int rest, Subr fn, const char* doc) {
+namespace {
+
+// Filled in a trampoline's catch handler, raised just after it: nothing runs
+// in between, so one per thread is enough (a nested native call, from a
+// Scheme callback, has either raised already or not begun).
+thread_local Failure escaped;
+
+}  // namespace
+
+void detail::note_escaped(const char* proc) noexcept {
+    escaped = Failure{proc};
+    try {
+        throw;
+    } catch (const std::exception& e) {
+        fail_text(escaped, "misc-error", nullptr, e.what());
+    } catch (...) {
+        fail_text(escaped, "misc-error", nullptr, "unknown C++ failure");
+    }
+}
+
+void detail::raise_escaped() { raise(escaped); }
+
+void detail::check_one_name(const char*& registered, const char* name) {
+    if (registered != nullptr && std::strcmp(registered, name) != 0)
+        scm_misc_error("ds_init_native", "one C++ function registered as both ~A and ~A",
+                       scm_list_2(scm_from_utf8_string(registered), scm_from_utf8_string(name)));
+    registered = name;
+}
+
+void detail::define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const char* doc) {
     SCM proc = scm_c_define_gsubr(name, req, opt, rest, fn);
     scm_set_procedure_property_x(proc, scm_from_utf8_symbol("documentation"), scm_from_utf8_string(doc));
     scm_c_export(name, nullptr);
+}
+
+void detail::define_gsubr(const char* name, int req, int opt, int rest, scm_t_subr fn, const WrapperDoc& doc) {
+    char text[256];
+    std::snprintf(text, sizeof text, "%s: native code for %s in %s, which documents it.", doc.args, doc.name,
+                  doc.module);
+    define_gsubr(name, req, opt, rest, fn, text);
 }
 
 }  // namespace ds::guile

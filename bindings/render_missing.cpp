@@ -1,5 +1,8 @@
 // Stands in for render_procs.cpp in a build without SDL2: the same names,
 // each refusing with a message that says what to install.
+#include <iterator>
+#include <utility>
+
 #include "failure.hpp"
 #include "registry.hpp"
 
@@ -7,31 +10,38 @@ namespace ds::guile {
 
 namespace {
 
+// render_procs.cpp's procedures; each stand-in takes any arguments.
+constexpr const char* kStandIns[] = {
+    "%make-display",      "%display-open-window!",    "%display-close-window!", "%display-draw!",
+    "%display-stats",     "%display-save-png",        "%display-pixel",         "%display-clear-commands!",
+    "%draw-rect!",        "%draw-line!",              "%draw-sprite!",          "%draw-text!",
+    "%display-set-input-map!", "%display-poll!",      "%open-audio!",           "%load-sound",
+    "%play-sound",        "%note-pushed-pairs!"};
+
+// One function per name (I), as each registered function has one name.
+template <size_t I>
 SCM missing(SCM) {
-    Failure f{.proc = "downstroke"};
+    Failure f{"downstroke"};
     fail_text(f, "misc-error", nullptr,
               "this build has no renderer: install libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev and rebuild");
     raise(f);
 }
 
+template <size_t... I>
+void define_stand_ins(std::index_sequence<I...>) {
+    (define_procedure<0, 0, 1, missing<I>>(kStandIns[I], "Not in this build: it has no renderer (SDL2)."), ...);
+}
+
+SCM renderer_p() { return SCM_BOOL_F; }
+SCM default_input_map() { return SCM_EOL; }
+
 }  // namespace
 
 void register_render_procedures() {
-    define_procedure("%renderer?", 0, 0, 0, (Subr) + [] { return SCM_BOOL_F; },
-                     "(): whether this build has the renderer (SDL2).");
-    define_procedure("%default-input-map", 0, 0, 0, (Subr) + [] { return SCM_EOL; },
-                     "(): no inputs without the renderer.");
-    const struct {
-        const char* name;
-        int req;
-    } procs[] = {{"%make-display", 2},  {"%display-open-window!", 3}, {"%display-close-window!", 1},
-                 {"%display-draw!", 7}, {"%display-stats", 1},        {"%display-save-png", 2},
-                 {"%display-pixel", 3}, {"%display-clear-commands!", 1}, {"%draw-rect!", 8},
-                 {"%draw-line!", 7},    {"%draw-sprite!", 5},         {"%draw-text!", 7},
-                 {"%display-set-input-map!", 2}, {"%display-poll!", 1}, {"%open-audio!", 1},
-                 {"%load-sound", 2},    {"%play-sound", 1},           {"%note-pushed-pairs!", 1}};
-    for (const auto& p : procs)
-        define_procedure(p.name, 0, 0, 1, (Subr)missing, "Not in this build: it has no renderer (SDL2).");
+    define_procedure<0, 0, 0, renderer_p>("%renderer?", WrapperDoc{"()", "renderer-available?", "(downstroke render)"});
+    define_procedure<0, 0, 0, default_input_map>("%default-input-map",
+        WrapperDoc{"()", "default-input-map", "(downstroke render)"});
+    define_stand_ins(std::make_index_sequence<std::size(kStandIns)>());
 }
 
 }  // namespace ds::guile

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "contacts.hpp"
+#include "convert.hpp"
 #include "failure.hpp"
 #include "keys.hpp"
 #include "plist.hpp"
@@ -67,24 +68,6 @@ Display* display_of(SCM obj, const char* proc, Failure& f) {
 
 // ---------------------------------------------------------------- arguments
 
-bool real_arg(SCM v, const char* what, double& out, Failure& f) {
-    if (scm_is_real(v)) {
-        out = scm_to_double(v);
-        if (std::isfinite(out)) return true;
-    }
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a finite real number, got ~S", what);
-    return false;
-}
-
-bool int_arg(SCM v, const char* what, int lo, int hi, int& out, Failure& f) {
-    if (scm_is_signed_integer(v, lo, hi)) {
-        out = scm_to_int(v);
-        return true;
-    }
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected an exact integer from %d to %d, got ~S", what, lo, hi);
-    return false;
-}
-
 // (r g b) or (r g b a), each an exact integer 0–255.
 bool color_arg(SCM v, Rgba& out, Failure& f) {
     uint8_t c[4] = {0, 0, 0, 255};
@@ -96,7 +79,7 @@ bool color_arg(SCM v, Rgba& out, Failure& f) {
         if (ok) c[i] = static_cast<uint8_t>(scm_to_uint(SCM_CAR(p)));
     }
     if (!ok) {
-        fail(f, "wrong-type-arg", scm_list_1(v), "color: expected (r g b) or (r g b a) of integers 0–255, got ~S");
+        fail_arg(f, "color", v, "(r g b) or (r g b a) of integers 0–255");
         return false;
     }
     out = {c[0], c[1], c[2], c[3]};
@@ -107,44 +90,37 @@ bool space_arg(SCM v, Space& out, Failure& f) {
     if (scm_is_eq(v, sym_world)) out = Space::World;
     else if (scm_is_eq(v, sym_screen)) out = Space::Screen;
     else {
-        fail(f, "wrong-type-arg", scm_list_1(v), "space: expected world or screen, got ~S");
+        fail_arg(f, "space", v, "world or screen");
         return false;
     }
     return true;
 }
 
 bool gid_arg(SCM v, const char* what, uint32_t& out, Failure& f) {
-    if (scm_is_unsigned_integer(v, 0, UINT32_MAX)) {
-        out = scm_to_uint32(v);
-        return true;
-    }
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a gid (an exact integer ≥ 0, flip bits allowed), got ~S", what);
-    return false;
+    return from_scm(v, out, what, f, "a gid (an exact integer ≥ 0, flip bits allowed)");
 }
 
-bool string_arg(SCM v, const char* what, std::string& out, Failure& f) {
-    if (scm_is_string(v)) {
-        char* s = scm_to_utf8_string(v);
-        out.assign(s);
-        free(s);
-        return true;
-    }
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a string, got ~S", what);
+// A symbol's name.
+bool symbol_arg(SCM v, const char* what, std::string& out, Failure& f) {
+    if (scm_is_symbol(v)) return from_scm(scm_symbol_to_string(v), out, what, f);
+    fail_arg(f, what, v, "a symbol");
     return false;
 }
 
 // ---------------------------------------------------------------- displays
 
 SCM make_display(SCM width, SCM height) {
-    Failure f{.proc = "make-display"};
+    Failure f{"make-display"};
     int w = 0, h = 0;
-    if (int_arg(width, "width", 1, kMaxCanvasSide, w, f) && int_arg(height, "height", 1, kMaxCanvasSide, h, f)) {
-        auto* d = new Display;
-        d->width = w;
-        d->height = h;
-        return scm_make_foreign_object_1(display_type, d);
-    }
-    raise(f);
+    Display* d = nullptr;
+    if (from_scm(width, w, "width", f, 1, kMaxCanvasSide) && from_scm(height, h, "height", f, 1, kMaxCanvasSide))
+        guarded(f, nullptr, [&] {
+            d = new Display;
+            d->width = w;
+            d->height = h;
+        });
+    if (f) raise(f);
+    return scm_make_foreign_object_1(display_type, d);
 }
 
 Canvas& canvas_of(Display& d) {
@@ -157,8 +133,9 @@ SCM open_window(SCM display, SCM title, SCM scale) {
     Display* d = display_of(display, "game-run!", f);
     std::string t;
     int s = 0;
-    if (d && string_arg(title, "title", t, f) && int_arg(scale, "scale", 0, 64, s, f))
+    if (d)
         guarded(f, nullptr, [&] {
+            if (!from_scm(title, t, "title", f) || !from_scm(scale, s, "scale", f, 0, 64)) return;
             d->window = std::make_unique<Window>(t, d->width, d->height, s);
             s = d->window->scale();
         });
@@ -168,7 +145,7 @@ SCM open_window(SCM display, SCM title, SCM scale) {
 
 SCM close_window(SCM display) {
     Failure f;
-    if (Display* d = display_of(display, "game-run!", f)) d->window.reset();
+    if (Display* d = display_of(display, "game-run!", f)) guarded(f, nullptr, [&] { d->window.reset(); });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -177,7 +154,7 @@ SCM close_window(SCM display) {
 
 bool proper_list(SCM v, const char* what, Failure& f) {
     if (scm_ilength(v) >= 0) return true;
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a proper list, got ~S", what);
+    fail_arg(f, what, v, "a proper list");
     return false;
 }
 
@@ -252,32 +229,30 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
     SceneView view;
     if (d && scm_is_true(tilemap)) {
         if (is_tilemap(tilemap)) view.map = &tilemap_handle(tilemap).map;
-        else fail(f, "wrong-type-arg", scm_list_1(tilemap), "tilemap: expected a tilemap or #f, got ~S");
+        else fail_arg(f, "tilemap", tilemap, "a tilemap or #f");
     }
-    if (d && !f && real_arg(cam_x, "camera x", view.camera_x, f) && real_arg(cam_y, "camera y", view.camera_y, f) &&
-        entity_views(entities, d->entities, f)) {
-        view.debug = scm_is_true(debug);
-        d->trails.clear();
-        d->pairs.clear();
-        if (view.debug) {
-            if (PairLog* log = pair_log()) d->pairs = *log;
-            std::sort(d->pairs.begin(), d->pairs.end());
-            d->pairs.erase(std::unique(d->pairs.begin(), d->pairs.end()), d->pairs.end());
-            trails_of(entities, d->entities, history, d->trails, f);
-        }
-        view.entities = d->entities;
-        view.commands = &d->commands;
-        view.pushed_pairs = d->pairs;
-        view.trails = d->trails;
-        if (!f)
-            guarded(f, nullptr, [&] {
-                const auto t0 = Clock::now();
-                d->counts = draw_scene(canvas_of(*d), d->art, view);
-                d->culled = d->entities.size() - d->counts.sprites - d->counts.boxes;
-                if (d->window) d->window->present(*d->canvas);
-                d->ms = ms_since(t0);
-            });
-    }
+    if (d && !f && from_scm(cam_x, view.camera_x, "camera x", f) && from_scm(cam_y, view.camera_y, "camera y", f))
+        guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too
+            if (!entity_views(entities, d->entities, f)) return;
+            view.debug = scm_is_true(debug);
+            d->trails.clear();
+            d->pairs.clear();
+            if (view.debug) {
+                if (PairLog* log = pair_log()) d->pairs = *log;
+                std::sort(d->pairs.begin(), d->pairs.end());
+                d->pairs.erase(std::unique(d->pairs.begin(), d->pairs.end()), d->pairs.end());
+                if (!trails_of(entities, d->entities, history, d->trails, f)) return;
+            }
+            view.entities = d->entities;
+            view.commands = &d->commands;
+            view.pushed_pairs = d->pairs;
+            view.trails = d->trails;
+            const auto t0 = Clock::now();
+            d->counts = draw_scene(canvas_of(*d), d->art, view);
+            d->culled = d->entities.size() - d->counts.sprites - d->counts.boxes;
+            if (d->window) d->window->present(*d->canvas);
+            d->ms = ms_since(t0);
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -295,8 +270,10 @@ SCM display_save_png(SCM display, SCM path) {
     Failure f;
     Display* d = display_of(display, "game-capture", f);
     std::string p;
-    if (d && string_arg(path, "file", p, f))
-        guarded(f, nullptr, [&] { canvas_of(*d).save_png(p); });
+    if (d)
+        guarded(f, nullptr, [&] {
+            if (from_scm(path, p, "file", f)) canvas_of(*d).save_png(p);
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -306,7 +283,7 @@ SCM display_pixel(SCM display, SCM x, SCM y) {
     Display* d = display_of(display, "game-pixel", f);
     int px = 0, py = 0;
     Rgba c;
-    if (d && int_arg(x, "x", 0, d->width - 1, px, f) && int_arg(y, "y", 0, d->height - 1, py, f))
+    if (d && from_scm(x, px, "x", f, 0, d->width - 1) && from_scm(y, py, "y", f, 0, d->height - 1))
         guarded(f, nullptr, [&] { c = canvas_of(*d).pixel(px, py); });
     if (f) raise(f);
     return scm_list_4(scm_from_uint8(c.r), scm_from_uint8(c.g), scm_from_uint8(c.b), scm_from_uint8(c.a));
@@ -327,8 +304,10 @@ SCM push_command(const char* proc, SCM display, SCM color, SCM space, Fill fill)
     Failure f;
     Display* d = display_of(display, proc, f);
     DrawCommand c;
-    if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f) && fill(c, f))
-        guarded(f, nullptr, [&] { d->commands.commands.push_back(std::move(c)); });
+    if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f))
+        guarded(f, nullptr, [&] {  // fill may copy a string
+            if (fill(c, f)) d->commands.commands.push_back(std::move(c));
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -336,31 +315,31 @@ SCM push_command(const char* proc, SCM display, SCM color, SCM space, Fill fill)
 SCM draw_rect(SCM display, SCM x, SCM y, SCM w, SCM h, SCM color, SCM filled, SCM space) {
     return push_command("draw-rect", display, color, space, [&](DrawCommand& c, Failure& f) {
         c.kind = scm_is_true(filled) ? DrawCommand::Kind::FilledRect : DrawCommand::Kind::Rect;
-        return real_arg(x, "x", c.x, f) && real_arg(y, "y", c.y, f) && real_arg(w, "width", c.x2, f) &&
-               real_arg(h, "height", c.y2, f);
+        return from_scm(x, c.x, "x", f) && from_scm(y, c.y, "y", f) && from_scm(w, c.x2, "width", f) &&
+               from_scm(h, c.y2, "height", f);
     });
 }
 
 SCM draw_line(SCM display, SCM x0, SCM y0, SCM x1, SCM y1, SCM color, SCM space) {
     return push_command("draw-line", display, color, space, [&](DrawCommand& c, Failure& f) {
         c.kind = DrawCommand::Kind::Line;
-        return real_arg(x0, "x0", c.x, f) && real_arg(y0, "y0", c.y, f) && real_arg(x1, "x1", c.x2, f) &&
-               real_arg(y1, "y1", c.y2, f);
+        return from_scm(x0, c.x, "x0", f) && from_scm(y0, c.y, "y0", f) && from_scm(x1, c.x2, "x1", f) &&
+               from_scm(y1, c.y2, "y1", f);
     });
 }
 
 SCM draw_sprite(SCM display, SCM gid, SCM x, SCM y, SCM space) {
     return push_command("draw-sprite", display, SCM_BOOL_F, space, [&](DrawCommand& c, Failure& f) {
         c.kind = DrawCommand::Kind::Sprite;
-        return gid_arg(gid, "gid", c.gid, f) && real_arg(x, "x", c.x, f) && real_arg(y, "y", c.y, f);
+        return gid_arg(gid, "gid", c.gid, f) && from_scm(x, c.x, "x", f) && from_scm(y, c.y, "y", f);
     });
 }
 
 SCM draw_text(SCM display, SCM text, SCM x, SCM y, SCM color, SCM scale, SCM space) {
     return push_command("draw-text", display, color, space, [&](DrawCommand& c, Failure& f) {
         c.kind = DrawCommand::Kind::Text;
-        return string_arg(text, "text", c.text, f) && real_arg(x, "x", c.x, f) && real_arg(y, "y", c.y, f) &&
-               int_arg(scale, "scale", 1, 64, c.scale, f);
+        return from_scm(text, c.text, "text", f) && from_scm(x, c.x, "x", f) && from_scm(y, c.y, "y", f) &&
+               from_scm(scale, c.scale, "scale", f, 1, 64);
     });
 }
 
@@ -374,33 +353,34 @@ SCM set_input_map(SCM display, SCM map) {
     std::vector<Binding> bindings;
     const long n = d ? scm_ilength(map) : 0;
     if (d && (n < 0 || n > kMaxActions))
-        fail(f, "wrong-type-arg", scm_list_1(map), "input-map: expected a list of at most 64 (action name …), got ~S");
-    SCM p = map;
-    for (long i = 0; d && !f && i < n; ++i, p = SCM_CDR(p)) {
-        SCM entry = SCM_CAR(p);
-        if (scm_ilength(entry) < 1 || !scm_is_symbol(SCM_CAR(entry))) {
-            fail(f, "wrong-type-arg", scm_list_1(entry), "input-map: expected (action name …) with a symbol action, got ~S");
-            break;
-        }
-        SCM name_str = scm_symbol_to_string(SCM_CAR(entry));
-        std::string action;
-        string_arg(name_str, "action", action, f);
-        actions.push_back(action);
-        for (SCM q = SCM_CDR(entry); scm_is_pair(q) && !f; q = SCM_CDR(q)) {
-            std::string name;
-            Binding b;
-            if (!string_arg(SCM_CAR(q), "input-map key", name, f)) break;
-            if (!parse_binding(name, static_cast<uint8_t>(i), b))
-                fail(f, "wrong-type-arg", scm_list_2(SCM_CAR(q), SCM_CAR(entry)),
-                     "input-map: no key or controller input is named ~S (for ~S)");
-            else
-                bindings.push_back(b);
-        }
-    }
-    if (!f) {
-        d->actions = std::move(actions);
-        guarded(f, nullptr, [&] { d->input.set_bindings(std::move(bindings)); });
-    }
+        fail_arg(f, "input-map", map, "a list of at most %d (action name …)", kMaxActions);
+    if (d && !f)
+        guarded(f, nullptr, [&] {
+            SCM p = map;
+            for (long i = 0; !f && i < n; ++i, p = SCM_CDR(p)) {
+                SCM entry = SCM_CAR(p);
+                if (scm_ilength(entry) < 1 || !scm_is_symbol(SCM_CAR(entry))) {
+                    fail_arg(f, "input-map", entry, "(action name …) with a symbol action");
+                    break;
+                }
+                std::string action;
+                symbol_arg(SCM_CAR(entry), "action", action, f);
+                actions.push_back(action);
+                for (SCM q = SCM_CDR(entry); scm_is_pair(q) && !f; q = SCM_CDR(q)) {
+                    std::string name;
+                    Binding b;
+                    if (!from_scm(SCM_CAR(q), name, "input-map key", f)) break;
+                    if (!parse_binding(name, static_cast<uint8_t>(i), b))
+                        fail(f, "wrong-type-arg", scm_list_2(SCM_CAR(q), SCM_CAR(entry)),
+                             "input-map: no key or controller input is named ~S (for ~S)");
+                    else
+                        bindings.push_back(b);
+                }
+            }
+            if (f) return;
+            d->actions = std::move(actions);
+            d->input.set_bindings(std::move(bindings));
+        });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
@@ -444,7 +424,7 @@ std::unique_ptr<SoundBank> bank;  // one per process: there is one audio device
 std::unordered_map<std::string, std::string> sound_files;
 
 SCM open_audio(SCM audible) {
-    Failure f{.proc = "load-sound"};
+    Failure f{"load-sound"};
     guarded(f, nullptr, [&] {
         if (!bank || (scm_is_true(audible) && !bank->audible())) {
             bank.reset();
@@ -457,28 +437,25 @@ SCM open_audio(SCM audible) {
 }
 
 SCM load_sound(SCM name, SCM path) {
-    Failure f{.proc = "load-sound"};
+    Failure f{"load-sound"};
     std::string n, p;
-    if (!scm_is_symbol(name))
-        fail(f, "wrong-type-arg", scm_list_1(name), "name: expected a symbol, got ~S");
-    else if (string_arg(scm_symbol_to_string(name), "name", n, f) && string_arg(path, "file", p, f))
-        guarded(f, nullptr, [&] {
-            if (!bank) bank = std::make_unique<SoundBank>(false);
-            bank->load(n, p);
-            sound_files[n] = p;
-        });
+    guarded(f, nullptr, [&] {
+        if (!symbol_arg(name, "name", n, f) || !from_scm(path, p, "file", f)) return;
+        if (!bank) bank = std::make_unique<SoundBank>(false);
+        bank->load(n, p);
+        sound_files[n] = p;
+    });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
 
 SCM play_sound(SCM name) {
-    Failure f{.proc = "play-sound"};
+    Failure f{"play-sound"};
     std::string n;
     bool known = false;
-    if (!scm_is_symbol(name))
-        fail(f, "wrong-type-arg", scm_list_1(name), "name: expected a symbol, got ~S");
-    else if (string_arg(scm_symbol_to_string(name), "name", n, f))
-        guarded(f, nullptr, [&] { known = bank && bank->play(n); });
+    guarded(f, nullptr, [&] {
+        if (symbol_arg(name, "name", n, f)) known = bank && bank->play(n);
+    });
     if (f) raise(f);
     return scm_from_bool(known);
 }
@@ -493,6 +470,8 @@ SCM note_pushed_pairs(SCM on) {
     return SCM_UNSPECIFIED;
 }
 
+SCM renderer_p() { return SCM_BOOL_T; }
+
 }  // namespace
 
 void register_render_procedures() {
@@ -504,44 +483,45 @@ void register_render_procedures() {
     key_sprite = scm_permanent_object(scm_from_utf8_keyword("sprite"));
     key_flip_x = scm_permanent_object(scm_from_utf8_keyword("flip-x?"));
 
-    define_procedure("%renderer?", 0, 0, 0, (Subr) + [] { return SCM_BOOL_T; },
-                     "(): whether this build has the renderer (SDL2).");
-    define_procedure("%make-display", 2, 0, 0, (Subr)make_display,
-                     "(width height): a display: an off-screen canvas of that size, made when first drawn.");
-    define_procedure("%display-open-window!", 3, 0, 0, (Subr)open_window,
-                     "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
-    define_procedure("%display-close-window!", 1, 0, 0, (Subr)close_window, "(display): closes its window.");
-    define_procedure("%display-draw!", 7, 0, 0, (Subr)display_draw,
-                     "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
-    define_procedure("%display-stats", 1, 0, 0, (Subr)display_stats,
-                     "(display): (render drawn culled ms) for the last frame drawn.");
-    define_procedure("%display-save-png", 2, 0, 0, (Subr)display_save_png,
-                     "(display file): writes the last frame drawn as a PNG.");
-    define_procedure("%display-pixel", 3, 0, 0, (Subr)display_pixel,
-                     "(display x y): the last frame's pixel as (r g b a).");
-    define_procedure("%display-clear-commands!", 1, 0, 0, (Subr)clear_commands,
-                     "(display): forgets the draw commands of the last frame.");
-    define_procedure("%draw-rect!", 8, 0, 0, (Subr)draw_rect,
-                     "(display x y w h color fill? space): queues a rectangle.");
-    define_procedure("%draw-line!", 7, 0, 0, (Subr)draw_line,
-                     "(display x0 y0 x1 y1 color space): queues a line.");
-    define_procedure("%draw-sprite!", 5, 0, 0, (Subr)draw_sprite,
-                     "(display gid x y space): queues a tile picture by gid.");
-    define_procedure("%draw-text!", 7, 0, 0, (Subr)draw_text,
-                     "(display text x y color scale space): queues text in the built-in font.");
-    define_procedure("%display-set-input-map!", 2, 0, 0, (Subr)set_input_map,
-                     "(display map): binds keys and controller inputs to actions: ((action name …) …).");
-    define_procedure("%default-input-map", 0, 0, 0, (Subr)default_map,
-                     "(): the default ((action name …) …): arrows/WASD, Z/Space, X, Return, Backspace, Escape, pads.");
-    define_procedure("%display-poll!", 1, 0, 0, (Subr)poll_input,
-                     "(display): (held-actions quit? debug-toggles) from the window's events.");
-    define_procedure("%open-audio!", 1, 0, 0, (Subr)open_audio,
-                     "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
-    define_procedure("%load-sound", 2, 0, 0, (Subr)load_sound, "(name file): decodes a sound.");
-    define_procedure("%play-sound", 1, 0, 0, (Subr)play_sound,
-                     "(name): plays a loaded sound; #f when none has that name.");
-    define_procedure("%note-pushed-pairs!", 1, 0, 0, (Subr)note_pushed_pairs,
-                     "(on?): whether step-scene notes the pairs it pushes apart, for the overlay.");
+    // The native code of (downstroke render)'s and (downstroke engine)'s
+    // procedures, documented there; then the game loop's building blocks.
+    constexpr const char* render = "(downstroke render)";
+    constexpr const char* engine = "(downstroke engine)";
+    define_procedure<0, 0, 0, renderer_p>("%renderer?", WrapperDoc{"()", "renderer-available?", render});
+    define_procedure<0, 0, 0, default_map>("%default-input-map", WrapperDoc{"()", "default-input-map", render});
+    define_procedure<8, 0, 0, draw_rect>("%draw-rect!",
+        WrapperDoc{"(display x y w h color fill? space)", "draw-rect", render});
+    define_procedure<7, 0, 0, draw_line>("%draw-line!",
+        WrapperDoc{"(display x0 y0 x1 y1 color space)", "draw-line", render});
+    define_procedure<5, 0, 0, draw_sprite>("%draw-sprite!",
+        WrapperDoc{"(display gid x y space)", "draw-sprite", render});
+    define_procedure<7, 0, 0, draw_text>("%draw-text!",
+        WrapperDoc{"(display text x y color scale space)", "draw-text", render});
+    define_procedure<2, 0, 0, load_sound>("%load-sound", WrapperDoc{"(name file)", "load-sound", render});
+    define_procedure<1, 0, 0, display_stats>("%display-stats",
+        WrapperDoc{"(display) → (render drawn culled ms)", "engine-stats", engine});
+    define_procedure<3, 0, 0, display_pixel>("%display-pixel", WrapperDoc{"(display x y)", "game-pixel", engine});
+    define_procedure<2, 0, 0, make_display>("%make-display",
+        "(width height): a display: an off-screen canvas of that size, made when first drawn.");
+    define_procedure<3, 0, 0, open_window>("%display-open-window!",
+        "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
+    define_procedure<1, 0, 0, close_window>("%display-close-window!", "(display): closes its window.");
+    define_procedure<7, 0, 0, display_draw>("%display-draw!",
+        "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
+    define_procedure<2, 0, 0, display_save_png>("%display-save-png",
+        "(display file): writes the last frame drawn as a PNG.");
+    define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",
+        "(display): forgets the draw commands of the last frame.");
+    define_procedure<2, 0, 0, set_input_map>("%display-set-input-map!",
+        "(display map): binds keys and controller inputs to actions: ((action name …) …).");
+    define_procedure<1, 0, 0, poll_input>("%display-poll!",
+        "(display): (held-actions quit? debug-toggles) from the window's events.");
+    define_procedure<1, 0, 0, open_audio>("%open-audio!",
+        "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
+    define_procedure<1, 0, 0, play_sound>("%play-sound",
+        "(name): plays a loaded sound; #f when none has that name.");
+    define_procedure<1, 0, 0, note_pushed_pairs>("%note-pushed-pairs!",
+        "(on?): whether step-scene notes the pairs it pushes apart, for the overlay.");
 }
 
 }  // namespace ds::guile

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "convert.hpp"
 #include "failure.hpp"
 #include "registry.hpp"
 
@@ -42,7 +43,7 @@ bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f
         out.push_back(scm_to_uint32(g));
     }
     if (!scm_is_null(p)) {
-        fail(f, "wrong-type-arg", scm_list_1(list), "%s: expected a list of gids, got ~S", what);
+        fail_arg(f, what, list, "a list of gids");
         return false;
     }
     return true;
@@ -85,7 +86,7 @@ SCM object_plist(const MapObject& o) {
 }
 
 SCM load_tilemap(SCM path, SCM solid_gids) {
-    Failure f{.proc = "load-tilemap"};
+    Failure f{"load-tilemap"};
     SCM result = SCM_BOOL_F;
     if (!scm_is_string(path)) {
         fail(f, "wrong-type-arg", scm_list_1(path), "expected a file name, got ~S");
@@ -94,13 +95,12 @@ SCM load_tilemap(SCM path, SCM solid_gids) {
         {
             std::vector<uint32_t> gids;
             std::unique_ptr<MapHandle> handle;
-            if (gid_list(solid_gids, gids, "solid-gids", f)) {
-                guarded(f, nullptr, [&] {
-                    handle = std::make_unique<MapHandle>();
-                    handle->map = ds::load_tilemap(cpath, gids);
-                    handle->grid = handle->map.solid_grid();
-                });
-            }
+            guarded(f, nullptr, [&] {
+                if (!gid_list(solid_gids, gids, "solid-gids", f)) return;
+                handle = std::make_unique<MapHandle>();
+                handle->map = ds::load_tilemap(cpath, gids);
+                handle->grid = handle->map.solid_grid();
+            });
             if (handle) result = wrap(std::move(handle));
         }
         free(cpath);
@@ -113,43 +113,37 @@ SCM load_tilemap(SCM path, SCM solid_gids) {
 }
 
 bool positive_int(SCM v, const char* what, int& out, Failure& f) {
-    if (scm_is_signed_integer(v, 1, 1 << 24)) {
-        out = scm_to_int(v);
-        return true;
-    }
-    fail(f, "wrong-type-arg", scm_list_1(v), "%s: expected a positive exact integer, got ~S", what);
-    return false;
+    return from_scm(v, out, what, f, 1, 1 << 24, "a positive exact integer");
 }
 
 SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids) {
-    Failure f{.proc = "make-tilemap"};
+    Failure f{"make-tilemap"};
     SCM result = SCM_BOOL_F;
     {
         int w = 0, h = 0, tw = 0, th = 0;
         std::vector<uint32_t> gids, solid;
-        bool ok = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
-                  positive_int(tile_w, "tile-width", tw, f) &&
-                  positive_int(tile_h, "tile-height", th, f);
-        if (ok && scm_is_vector(cells)) {
-            const size_t n = scm_c_vector_length(cells);
-            for (size_t i = 0; ok && i < n; ++i) {
-                SCM g = scm_c_vector_ref(cells, i);
-                ok = scm_is_unsigned_integer(g, 0, 0xFFFFFFFFu);
-                if (ok) gids.push_back(scm_to_uint32(g));
-                else fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(i), g), "cells: element ~S is not a gid: ~S");
-            }
-        } else if (ok) {
-            ok = gid_list(cells, gids, "cells", f);
-        }
-        ok = ok && gid_list(solid_gids, solid, "solid-gids", f);
         std::unique_ptr<MapHandle> handle;
-        if (ok) {
-            guarded(f, "make-tilemap", [&] {
+        const bool sizes = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
+                           positive_int(tile_w, "tile-width", tw, f) && positive_int(tile_h, "tile-height", th, f);
+        if (sizes)
+            guarded(f, "make-tilemap", [&] {  // the gid lists are C++ vectors
+                bool ok = true;
+                if (scm_is_vector(cells)) {
+                    const size_t n = scm_c_vector_length(cells);
+                    for (size_t i = 0; ok && i < n; ++i) {
+                        SCM g = scm_c_vector_ref(cells, i);
+                        ok = scm_is_unsigned_integer(g, 0, 0xFFFFFFFFu);
+                        if (ok) gids.push_back(scm_to_uint32(g));
+                        else fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(i), g), "cells: element ~S is not a gid: ~S");
+                    }
+                } else {
+                    ok = gid_list(cells, gids, "cells", f);
+                }
+                if (!ok || !gid_list(solid_gids, solid, "solid-gids", f)) return;
                 handle = std::make_unique<MapHandle>();
                 handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid));
                 handle->grid = handle->map.solid_grid();
             });
-        }
         if (handle) result = wrap(std::move(handle));
     }
     if (f) raise(f);
@@ -182,9 +176,13 @@ SCM tilemap_objects(SCM m) {
 
 // Cell indexes are exact integers (any, since cells outside the map are empty).
 void check_cell(SCM col, SCM row, Failure& f) {
-    for (SCM v : {col, row})
+    const struct {
+        SCM v;
+        const char* name;
+    } cell[] = {{col, "col"}, {row, "row"}};
+    for (const auto& [v, name] : cell)
         if (!scm_is_signed_integer(v, INT64_MIN, INT64_MAX)) {
-            fail(f, "wrong-type-arg", scm_list_1(v), "expected an exact integer cell index, got ~S");
+            fail_arg(f, name, v, "an exact integer cell index");
             raise(f);
         }
 }
@@ -246,26 +244,27 @@ bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
 
 void register_tilemap_procedures() {
     init_tilemap_type();
-    define_procedure("%load-tilemap", 2, 0, 0, (Subr)load_tilemap,
-                     "Loads a Tiled .tmx file (and its .tsx tilesets); the list of gids is solid too.");
-    define_procedure("make-tilemap", 6, 0, 0, (Subr)make_tilemap,
-                     "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
-                     "memory; cells is a vector (or list) of gids, row-major.");
-    define_procedure("tilemap?", 1, 0, 0, (Subr)tilemap_p, "Whether obj is a tilemap.");
-    define_procedure("tilemap-width", 1, 0, 0, (Subr)tilemap_width, "Width in cells.");
-    define_procedure("tilemap-height", 1, 0, 0, (Subr)tilemap_height, "Height in cells.");
-    define_procedure("tilemap-tile-width", 1, 0, 0, (Subr)tilemap_tile_width, "Tile width in px.");
-    define_procedure("tilemap-tile-height", 1, 0, 0, (Subr)tilemap_tile_height, "Tile height in px.");
-    define_procedure("tilemap-cell-solid?", 3, 0, 0, (Subr)tilemap_cell_solid_p,
-                     "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
-    define_procedure("tilemap-solid-extent", 1, 0, 0, (Subr)tilemap_solid_extent,
-                     "(first-col first-row cols rows): the block of cells that can be solid; every "
-                     "cell outside it is empty (infinite maps may start at negative cells).");
-    define_procedure("tilemap-objects", 1, 0, 0, (Subr)tilemap_objects,
-                     "The objects of every object layer, as entity plists.");
-    define_procedure("tilemap-gid", 4, 0, 0, (Subr)tilemap_gid,
-                     "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
-                     "number layer, 0 when empty.");
+    define_procedure<2, 0, 0, load_tilemap>("%load-tilemap",
+        WrapperDoc{"(path solid-gids)", "load-tilemap", "(downstroke tilemap)"});
+    // Exported as they are (re-exported by (downstroke tilemap)): documented here.
+    define_procedure<6, 0, 0, make_tilemap>("make-tilemap",
+        "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
+        "memory; cells is a vector (or list) of gids, row-major.");
+    define_procedure<1, 0, 0, tilemap_p>("tilemap?", "Whether obj is a tilemap.");
+    define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "Width in cells.");
+    define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "Height in cells.");
+    define_procedure<1, 0, 0, tilemap_tile_width>("tilemap-tile-width", "Tile width in px.");
+    define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "Tile height in px.");
+    define_procedure<3, 0, 0, tilemap_cell_solid_p>("tilemap-cell-solid?",
+        "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+    define_procedure<1, 0, 0, tilemap_solid_extent>("tilemap-solid-extent",
+        "(first-col first-row cols rows): the block of cells that can be solid; every "
+        "cell outside it is empty (infinite maps may start at negative cells).");
+    define_procedure<1, 0, 0, tilemap_objects>("tilemap-objects",
+        "The objects of every object layer, as entity plists.");
+    define_procedure<4, 0, 0, tilemap_gid>("tilemap-gid",
+        "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
+        "number layer, 0 when empty.");
 }
 
 }  // namespace ds::guile

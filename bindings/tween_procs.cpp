@@ -1,8 +1,10 @@
 // Tweens as Scheme records (defined in (downstroke tween)) stepped natively.
 // Record fields, in order: props ((key start . end) …), duration, delay,
 // ease (symbol or procedure), ease-index (or #f), repeat, yoyo?,
-// on-complete, elapsed.
+// on-complete, elapsed. They are read by position; %register-tween-type!
+// checks the record type's field names against kTweenFieldNames.
 #include <cmath>
+#include <iterator>
 
 #include "args.hpp"
 #include "ease.hpp"
@@ -18,6 +20,10 @@ namespace ds::guile {
 namespace {
 
 enum TweenField { kProps, kDuration, kDelay, kEase, kEaseIndex, kRepeat, kYoyo, kOnComplete, kElapsed, kTweenFields };
+// The <tween> record's field names, by TweenField.
+constexpr const char* kTweenFieldNames[] = {"props",  "duration", "delay",       "ease",   "ease-index",
+                                            "repeat", "yoyo?",    "on-complete", "elapsed"};
+static_assert(std::size(kTweenFieldNames) == kTweenFields);
 
 SCM tween_rtd = SCM_BOOL_F;
 
@@ -36,6 +42,8 @@ SCM with_elapsed(SCM tween, double elapsed) {
     return scm_make_struct_no_tail(tween_rtd, init);
 }
 
+// The tween's easing at t. A procedure is called as Scheme: the caller's
+// frames must survive a longjmp (advance_entity_tween asserts its own).
 double eased(SCM tween, double t, Failure& f) {
     SCM index = field(tween, kEaseIndex);
     if (scm_is_true(index)) return ease(static_cast<Ease>(scm_to_int(index)), t);
@@ -58,7 +66,7 @@ SCM ease_index(SCM name) {
 }
 
 SCM ease_value(SCM index, SCM t) {
-    Failure f{.proc = "ease"};
+    Failure f{"ease"};
     Num n;
     if (!scm_is_signed_integer(index, 0, static_cast<int>(Ease::Custom) - 1) || num_from_scm(t, n) != NumCheck::Ok) {
         fail(f, "wrong-type-arg", scm_list_2(index, t), "expected an easing index and a real t, got ~S ~S");
@@ -67,16 +75,33 @@ SCM ease_value(SCM index, SCM t) {
     return scm_from_double(ease(static_cast<Ease>(scm_to_int(index)), n.v));
 }
 
+// Refuses a record type whose fields are not, by name and in order, those
+// the stepper reads by position: a field added, dropped or moved in
+// (downstroke tween) without TweenField would otherwise be read as another.
 SCM register_tween_type(SCM rtd) {
+    Failure f{"%register-tween-type!"};
+    SCM expected = SCM_EOL;
+    for (int i = kTweenFields - 1; i >= 0; --i) expected = scm_cons(scm_from_utf8_symbol(kTweenFieldNames[i]), expected);
+    if (scm_is_false(scm_call_1(scm_c_public_ref("guile", "record-type?"), rtd))) {
+        fail(f, "wrong-type-arg", scm_list_1(rtd), "expected the <tween> record type, got ~S");
+    } else {
+        SCM fields = scm_call_1(scm_c_public_ref("guile", "record-type-fields"), rtd);
+        if (scm_is_false(scm_equal_p(fields, expected)))
+            fail(f, "misc-error", scm_list_3(rtd, fields, expected),
+                 "~S has the fields ~S, but the native tween stepper (TweenField in "
+                 "bindings/tween_procs.cpp) reads ~S by position: the two must match");
+    }
+    if (f) raise(f);
     tween_rtd = scm_gc_protect_object(rtd);
     return SCM_UNSPECIFIED;
 }
 
 SCM step_tweens_1(SCM entity, SCM dt) {
-    Failure f{.proc = "step-tweens"};
+    Failure f{"step-tweens"};
     double d = 0;
     SCM result = entity;
-    if (dt_from_scm(dt, d, f)) result = advance_entity_tween(entity, d, f);
+    static_assert(survives_longjmp<decltype(d), decltype(result)>);  // across advance_entity_tween's callbacks
+    if (dt_from_scm(dt, d, f)) guarded(f, nullptr, [&] { result = advance_entity_tween(entity, d, f); });
     if (f) raise(f);
     return result;
 }
@@ -98,6 +123,10 @@ SCM advance_entity_tween(SCM entity, double dt, Failure& f) {
     const TweenPhase phase = tween_phase(timing, elapsed);
     Edit edits[kMaxTweenProps + 1];
     size_t n = 0;
+    // A custom easing (in eased) and on-complete are Scheme code run from
+    // here: an error or escape in either longjmps over this frame.
+    static_assert(survives_longjmp<decltype(d), decltype(elapsed), decltype(timing), decltype(phase),
+                                   decltype(edits), decltype(n)>);
     if (phase.started) {
         const double e = eased(tween, phase.t, f);
         if (f) return entity;
@@ -121,13 +150,15 @@ SCM advance_entity_tween(SCM entity, double dt, Failure& f) {
 }
 
 void register_tween_procedures() {
-    define_procedure("%register-tween-type!", 1, 0, 0, (Subr)register_tween_type,
-                     "Tell the native side which record type tweens are.");
-    define_procedure("%ease-index", 1, 0, 0, (Subr)ease_index,
-                     "The native index of an easing name such as 'quad-in-out, or #f.");
-    define_procedure("%ease", 2, 0, 0, (Subr)ease_value, "(%ease index t): a native easing at t.");
-    define_procedure("%step-tweens", 2, 0, 0, (Subr)step_tweens_1,
-                     "(entity dt): advance the entity's #:tween by dt ms.");
+    define_procedure<1, 0, 0, register_tween_type>("%register-tween-type!",
+        "Tell the native side which record type tweens are; a record type whose fields are not "
+        "(props duration delay ease ease-index repeat yoyo? on-complete elapsed), the ones it reads "
+        "by position, is refused.");
+    define_procedure<1, 0, 0, ease_index>("%ease-index",
+        "The native index of an easing name such as 'quad-in-out, or #f.");
+    define_procedure<2, 0, 0, ease_value>("%ease", WrapperDoc{"(index t)", "ease", "(downstroke tween)"});
+    define_procedure<2, 0, 0, step_tweens_1>("%step-tweens",
+        WrapperDoc{"(entity dt)", "step-tweens", "(downstroke physics)"});
 }
 
 }  // namespace ds::guile

@@ -177,8 +177,9 @@ sprites, boxes and commands drawn, entities outside the view, and time
 ;;; scene, so collecting less often is faster at the price of a larger heap.
 (define (gc-space-divisor)
   "The collector's free-space divisor: it collects after allocating about
-twice the live heap divided by this. Downstroke starts it at 1 (Boehm's own
-default is 3) unless the GC_FREE_SPACE_DIVISOR environment variable is set."
+twice the live heap divided by this (1 = least often). Downstroke starts it
+at 1 (Boehm's own default is 3) unless the GC_FREE_SPACE_DIVISOR environment
+variable is set."
   (%gc-space-divisor))
 
 (define (set-gc-space-divisor! n)

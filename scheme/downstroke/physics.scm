@@ -56,11 +56,12 @@
   (%detect-on-solid entity (tilemap-of scene) (entities-of scene)))
 
 (define* (step-scene scene dt #:key (substeps 1))
-  "SCENE after one whole engine pass (the default-engine-update composition),
-done in one native call. With SUBSTEPS k > 1 (beyond the seed), everything
-after the tweens runs as k sub-frames of 1/k frame each: velocities and
-gravity advance by a k-th, in flonums, and the motion converges to the
-continuous one as k grows."
+  "SCENE after one whole engine pass (the default-engine-update composition:
+tweens, then motion, tiles, ground, push-apart and groups), done in one
+native call. With SUBSTEPS k > 1 (beyond the seed), everything after the
+tweens runs as k sub-frames of 1/k frame each: velocities and gravity
+advance by a k-th, in flonums, and the motion converges to the continuous
+one as k grows."
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
                                   substeps (resting-contacts?))))

@@ -28,7 +28,8 @@
   "The keys and controller inputs bound to each action when make-game has no
 input-map:, as ((action name …) …): arrows or WASD move, Z or Space is a,
 X is b, Return is start, Backspace is select, Escape quits; a controller's
-d-pad or left stick moves and its A, B, Start and Back buttons act."
+d-pad or left stick moves and its A, B, Start and Back buttons act. In a
+build without the renderer there are no inputs: it is ()."
   (%default-input-map))
 
 (define named-colors

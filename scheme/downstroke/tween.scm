@@ -8,7 +8,9 @@
             tween-repeat tween-yoyo? tween-on-complete tween-elapsed
             tween-with-elapsed ease easing-names))
 
-;; Field order matters: the native stepper reads the record by position.
+;; Field order matters: the native stepper reads the record by position
+;; (TweenField in bindings/tween_procs.cpp), and %register-tween-type! refuses
+;; a record whose field names and order are not the ones it reads.
 (define-record-type <tween>
   (%make-tween props duration delay ease ease-index repeat yoyo? on-complete elapsed)
   tween?

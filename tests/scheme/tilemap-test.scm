@@ -215,6 +215,9 @@
   (mentions? (error-text (lambda () (tilemap-cell-solid? 'level 0 0))) "tilemap-cell-solid?" "level"))
 (test-assert "tilemap-cell-solid? with a flonum index"
   (error-text (lambda () (tilemap-cell-solid? mv 1.5 0))))
+(test-assert "the refusal names the index, col or row"
+  (and (mentions? (error-text (lambda () (tilemap-cell-solid? mv 1.5 0))) "col: " "1.5")
+       (mentions? (error-text (lambda () (tilemap-gid mv 0 0 'r))) "tilemap-gid" "row: " "r")))
 (test-assert "tilemap-width on a non-tilemap"
   (mentions? (error-text (lambda () (tilemap-width "map"))) "tilemap-width"))
 (test-assert "tilemap-objects on a non-tilemap" (error-text (lambda () (tilemap-objects #f))))

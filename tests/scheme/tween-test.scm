@@ -1,4 +1,5 @@
-(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
+(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1) (srfi srfi-9)
+             ((downstroke native) #:select (%register-tween-type!)))
 
 (load "support.scm")
 
@@ -281,5 +282,26 @@
 (define frozen
   (make-scene entities: (list (tweened '(#:x 0 #:skip-pipelines (tweens)) props: '((#:x . 10)) duration: 10))))
 (test-eq "tweens skipped: the scene is unchanged" frozen (step-scene frozen 16))
+
+;;; ---------------------------------------------------------------- the record the native side reads
+;; The stepper reads <tween> by position, so registering a record type with
+;; other fields (or the same in another order) is refused, naming both.
+(define-record-type <swapped-tween>
+  (make-swapped-tween duration props delay ease ease-index repeat yoyo? on-complete elapsed)
+  swapped-tween?
+  (duration swapped-duration) (props swapped-props) (delay swapped-delay) (ease swapped-ease)
+  (ease-index swapped-ease-index) (repeat swapped-repeat) (yoyo? swapped-yoyo?)
+  (on-complete swapped-on-complete) (elapsed swapped-elapsed))
+(define-record-type <short-tween> (make-short-tween props elapsed) short-tween?
+  (props short-props) (elapsed short-elapsed))
+(test-assert "a record type with the fields in another order is refused"
+  (mentions? (error-text (lambda () (%register-tween-type! <swapped-tween>)))
+             "%register-tween-type!" "(duration props delay"
+             "(props duration delay ease ease-index repeat yoyo? on-complete elapsed)" "by position"))
+(test-assert "a record type with fewer fields is refused"
+  (mentions? (error-text (lambda () (%register-tween-type! <short-tween>))) "(props elapsed)"))
+(test-assert "a non-record is refused"
+  (mentions? (error-text (lambda () (%register-tween-type! 'tween))) "%register-tween-type!" "record type" "tween"))
+(test-equal "tweens still step after a refusal" '(#:x 200 #:y 5) (step-tweens e0 #f 1000))
 
 (test-end "tween")
