@@ -101,6 +101,13 @@ void note_result(Batch& batch, SCM result) {
 
 namespace {
 
+// Exact zeros decode as +0.0 (every Num member); other members as they are.
+void zero_as_decoded(Num& n) {
+    if (n.exact && n.v == 0.0) n.v = 0.0;
+}
+template <class T>
+void zero_as_decoded(T&) {}
+
 // What decoding the entity just encoded at position i would give, so the
 // next frame, handed that entity back, need not decode it. Every edited field
 // now holds a fixnum, bignum or flonum, so it is present and no longer lossy;
@@ -110,8 +117,9 @@ void remember(Batch& batch, size_t i, SCM entity) {
     if (batch.has_tween[i]) return;
     CachedEntity& c = batch.cached[i];
     Body b = batch.bodies[i];
-    for (Num* n : {&b.x, &b.y, &b.w, &b.h, &b.vx, &b.vy, &b.ay, &b.local_x, &b.local_y})
-        if (n->exact && n->v == 0.0) n->v = 0.0;
+#define DS_FIELD(Name, type, member, keyword, rule) zero_as_decoded(b.member);
+#define DS_KEY(Name, type, member, keyword, rule) zero_as_decoded(b.member);
+#include "body_fields.def"
     const uint32_t edited = batch.fields[i] | batch.writes[i].written();
     c.body = b;
     c.watched = static_cast<uint16_t>(c.watched & ~edited);

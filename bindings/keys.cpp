@@ -7,10 +7,10 @@ namespace ds::guile {
 namespace {
 
 constexpr const char* kKeyNames[kPhysKeyCount] = {
-    "x", "y", "width", "height", "vx", "vy", "ay",
-    "gravity?", "on-ground?", "solid?", "immovable?",
-    "skip-pipelines", "tween", "id", "group-id", "group-origin?", "group-local-x",
-    "group-local-y",
+#define DS_FIELD(Name, type, member, keyword, rule) keyword,
+#define DS_KEY(Name, type, member, keyword, rule) keyword,
+#include "body_fields.def"
+    "tween",
 };
 
 Keys storage;

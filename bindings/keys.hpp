@@ -7,16 +7,22 @@
 
 #include <cstdint>
 
+#include "body.hpp"
+
 namespace ds::guile {
 
-// The physics keys of an entity plist, in the order decode tests them.
+// The physics keys of an entity plist: one per row of src/body_fields.def,
+// in its order (k<Name>: kX, kVy, kLocalX, kOnGround, kGroupId, …), then the
+// keys that are not Body members. A bit index of Decoded::present.
 enum PhysKey : uint8_t {
-    kX, kY, kWidth, kHeight, kVx, kVy, kAy,
-    kGravity, kOnGround, kSolid, kImmovable,
-    kSkipPipelines, kTween, kId, kGroupId, kGroupOrigin, kGroupLocalX, kGroupLocalY,
+#define DS_FIELD(Name, type, member, keyword, rule) k##Name,
+#define DS_KEY(Name, type, member, keyword, rule) k##Name,
+#include "body_fields.def"
+    kTween,  // #:tween, kept as it is (Decoded::tween)
     kPhysKeyCount,
     kNotPhysics = 0xff,
 };
+static_assert(kPhysKeyCount <= 32, "Decoded::present holds one bit per PhysKey");
 
 struct Keys {
     SCM key[kPhysKeyCount];

@@ -12,16 +12,10 @@ namespace {
 // The body Field a physics key holds, or 0 for keys that are not fields.
 uint32_t field_of(uint8_t k) {
     switch (k) {
-        case kX: return kFieldX;
-        case kY: return kFieldY;
-        case kWidth: return kFieldWidth;
-        case kHeight: return kFieldHeight;
-        case kVx: return kFieldVx;
-        case kVy: return kFieldVy;
-        case kAy: return kFieldAy;
-        case kGroupLocalX: return kFieldLocalX;
-        case kGroupLocalY: return kFieldLocalY;
-        case kOnGround: return kFieldOnGround;
+#define DS_FIELD(Name, type, member, keyword, rule) \
+    case k##Name: return kField##Name;
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
         default: return 0;
     }
 }
@@ -58,33 +52,50 @@ bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
     return true;
 }
 
-bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
-    Body& b = d.body;
+// The rules of src/body_fields.def: how a value is read (decode) and
+// written back (encode). `field` is the value's Field bit, 0 for a DS_KEY row.
+struct Number {};
+struct Flag {};
+struct Skips {};
+struct Tag {};
+struct Id {};
+
+bool decode(Number, SCM key, SCM v, Num& out, uint32_t field, Decoded& d, Failure& f) {
     // Only numbers can be lossy; a flag such as #:on-ground? #f is not a
     // number at all, and watching it would make a frame that flips it and
     // flips it back (sub-frames) rewrite the plist for nothing.
-    const uint32_t field = field_of(k);
-    if (field != 0 && field != kFieldOnGround && !SCM_I_INUMP(v) && !SCM_REALP(v))
-        d.lossy |= static_cast<uint16_t>(field);
+    if (!SCM_I_INUMP(v) && !SCM_REALP(v)) d.lossy |= static_cast<uint16_t>(field);
+    return decode_number(key, v, out, f);
+}
+bool decode(Flag, SCM, SCM v, bool& out, uint32_t, Decoded&, Failure&) {
+    out = scm_is_true(v);
+    return true;
+}
+bool decode(Skips, SCM key, SCM v, uint16_t& out, uint32_t, Decoded&, Failure& f) {
+    return decode_skips(key, v, out, f);
+}
+bool decode(Tag, SCM, SCM v, int64_t& out, uint32_t, Decoded&, Failure&) {
+    out = identity_tag(v);
+    return true;
+}
+bool decode(Id, SCM, SCM v, int64_t& out, uint32_t, Decoded& d, Failure&) {
+    d.id = v;
+    out = identity_tag(v);
+    return true;
+}
+
+SCM encode(Num n) { return num_to_scm(n); }
+SCM encode(bool flag) { return scm_from_bool(flag); }
+
+bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
+    Body& b = d.body;
     switch (k) {
-        case kX: return decode_number(key, v, b.x, f);
-        case kY: return decode_number(key, v, b.y, f);
-        case kWidth: return decode_number(key, v, b.w, f);
-        case kHeight: return decode_number(key, v, b.h, f);
-        case kVx: return decode_number(key, v, b.vx, f);
-        case kVy: return decode_number(key, v, b.vy, f);
-        case kAy: return decode_number(key, v, b.ay, f);
-        case kGroupLocalX: return decode_number(key, v, b.local_x, f);
-        case kGroupLocalY: return decode_number(key, v, b.local_y, f);
-        case kGravity: b.gravity = scm_is_true(v); return true;
-        case kOnGround: b.on_ground = scm_is_true(v); return true;
-        case kSolid: b.solid = scm_is_true(v); return true;
-        case kImmovable: b.immovable = scm_is_true(v); return true;
-        case kGroupOrigin: b.group_origin = scm_is_true(v); return true;
-        case kSkipPipelines: return decode_skips(key, v, b.skip, f);
+#define DS_FIELD(Name, type, member, keyword, rule) \
+    case k##Name: return decode(rule{}, key, v, b.member, kField##Name, d, f);
+#define DS_KEY(Name, type, member, keyword, rule) \
+    case k##Name: return decode(rule{}, key, v, b.member, 0, d, f);
+#include "body_fields.def"
         case kTween: d.tween = v; return true;
-        case kId: d.id = v; b.id = identity_tag(v); return true;
-        case kGroupId: b.group = identity_tag(v); return true;
         default: return true;
     }
 }
@@ -178,32 +189,34 @@ namespace {
 
 // The plist key and current value of one Field (by bit index).
 Edit field_edit(int bit, const Body& b) {
-    switch (1u << bit) {
-        case kFieldX: return {keys->key[kX], num_to_scm(b.x)};
-        case kFieldY: return {keys->key[kY], num_to_scm(b.y)};
-        case kFieldWidth: return {keys->key[kWidth], num_to_scm(b.w)};
-        case kFieldHeight: return {keys->key[kHeight], num_to_scm(b.h)};
-        case kFieldVx: return {keys->key[kVx], num_to_scm(b.vx)};
-        case kFieldVy: return {keys->key[kVy], num_to_scm(b.vy)};
-        case kFieldAy: return {keys->key[kAy], num_to_scm(b.ay)};
-        case kFieldLocalX: return {keys->key[kGroupLocalX], num_to_scm(b.local_x)};
-        case kFieldLocalY: return {keys->key[kGroupLocalY], num_to_scm(b.local_y)};
-        default: return {keys->key[kOnGround], scm_from_bool(b.on_ground)};
+    switch (bit) {
+#define DS_FIELD(Name, type, member, keyword, rule) \
+    case kFieldBit##Name: return {keys->key[k##Name], encode(b.member)};
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
+        default: __builtin_unreachable();  // bit < kFieldCount
     }
 }
+
+bool finite(Num n) { return std::isfinite(n.v); }
+bool finite(bool) { return true; }
+
+bool out_of_range(SCM key, double v, Failure& f) {
+    fail(f, "out-of-range", scm_list_2(key, scm_from_double(v)),
+         "entity key ~S: the result ~S is beyond the range of a double");
+    return false;
+}
+double value_of(Num n) { return n.v; }
+double value_of(bool) { return 0; }
 
 }  // namespace
 
 bool check_finite(const Body& b, uint32_t fields, Failure& f) {
-    // In Field bit order: x y width height vx vy ay group-local-x group-local-y.
-    const Num* nums[] = {&b.x, &b.y, &b.w, &b.h, &b.vx, &b.vy, &b.ay, &b.local_x, &b.local_y};
-    static constexpr PhysKey kKeys[] = {kX, kY, kWidth, kHeight, kVx, kVy, kAy, kGroupLocalX, kGroupLocalY};
-    for (int i = 0; i < 9; ++i) {
-        if (!((fields >> i) & 1u) || std::isfinite(nums[i]->v)) continue;
-        fail(f, "out-of-range", scm_list_2(keys->key[kKeys[i]], scm_from_double(nums[i]->v)),
-             "entity key ~S: the result ~S is beyond the range of a double");
-        return false;
-    }
+    // In Field bit order, the first one that is not finite.
+#define DS_FIELD(Name, type, member, keyword, rule) \
+    if ((fields & kField##Name) != 0 && !finite(b.member)) return out_of_range(keys->key[k##Name], value_of(b.member), f);
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
     return true;
 }
 

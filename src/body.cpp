@@ -41,16 +41,10 @@ uint32_t changed_fields(const Body& before, const Body& after) {
 
 uint32_t differing_fields(const Body& before, const Body& after) {
     uint32_t mask = 0;
-    if (!same(before.x, after.x)) mask |= kFieldX;
-    if (!same(before.y, after.y)) mask |= kFieldY;
-    if (!same(before.vx, after.vx)) mask |= kFieldVx;
-    if (!same(before.vy, after.vy)) mask |= kFieldVy;
-    if (!same(before.ay, after.ay)) mask |= kFieldAy;
-    if (before.on_ground != after.on_ground) mask |= kFieldOnGround;
-    if (!same(before.w, after.w)) mask |= kFieldWidth;
-    if (!same(before.h, after.h)) mask |= kFieldHeight;
-    if (!same(before.local_x, after.local_x)) mask |= kFieldLocalX;
-    if (!same(before.local_y, after.local_y)) mask |= kFieldLocalY;
+#define DS_FIELD(Name, type, member, keyword, rule) \
+    if (!same_field(before.member, after.member)) mask |= kField##Name;
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
     return mask;
 }
 

@@ -25,42 +25,42 @@ uint16_t skip_bit(const char* name);
 // The symbol name of one skip bit (for messages and stats).
 const char* skip_name(uint16_t bit);
 
-// Fields a step may write; a frame reports the changed ones as a mask of these.
-// The bit order is the order a step writes several keys in (x y width height
-// vx vy ay group-local-x group-local-y on-ground?).
-enum Field : uint32_t {
-    kFieldX = 1u << 0,
-    kFieldY = 1u << 1,
-    kFieldWidth = 1u << 2,   // only tweens write sizes and group offsets
-    kFieldHeight = 1u << 3,
-    kFieldVx = 1u << 4,
-    kFieldVy = 1u << 5,
-    kFieldAy = 1u << 6,
-    kFieldLocalX = 1u << 7,
-    kFieldLocalY = 1u << 8,
-    kFieldOnGround = 1u << 9,
+// Fields a step may write (the DS_FIELD rows of body_fields.def); a frame
+// reports the changed ones as a mask of these. The bit order is the order a
+// step writes several keys in (x y width height vx vy ay group-local-x
+// group-local-y on-ground?).
+enum FieldBit : int {
+#define DS_FIELD(Name, type, member, keyword, rule) kFieldBit##Name,
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
+    kFieldBitCount,
 };
-constexpr int kFieldCount = 10;
+enum Field : uint32_t {
+#define DS_FIELD(Name, type, member, keyword, rule) kField##Name = 1u << kFieldBit##Name,
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
+};
+constexpr int kFieldCount = kFieldBitCount;
+static_assert(kFieldCount <= 16, "FirstWrites::watched and Decoded::lossy hold Field bits in 16 bits");
 
 struct Body {
-    Num x, y, w, h;          // top-left corner and size; the box is [x, x+w) × [y, y+h)
-    Num vx, vy, ay;          // px/frame, and the one-shot vertical acceleration
-    Num local_x, local_y;    // #:group-local-x / -y
-    bool gravity = false;    // #:gravity?
-    bool on_ground = false;  // #:on-ground?
-    bool solid = false;      // #:solid?
-    bool immovable = false;  // #:immovable?
-    bool group_origin = false;
-    uint16_t skip = 0;       // Skip bits
-    // Identity tags assigned by the caller: equal #:id (or #:group-id) values
-    // share a tag; 0 means the key is absent (or #f for the group).
-    int64_t id = 0;
-    int64_t group = 0;
+    // One member per row of body_fields.def, in its order: x y w h (Num: the
+    // box is [x, x+w) × [y, y+h)), vx vy ay, local_x local_y, the flags
+    // gravity on_ground solid immovable group_origin, skip (Skip bits), and
+    // the identity tags id and group (0: absent, or #f for the group).
+#define DS_FIELD(Name, type, member, keyword, rule) type member{};
+#define DS_KEY(Name, type, member, keyword, rule) type member{};
+#include "body_fields.def"
 
     bool skips(uint16_t bit) const { return (skip & bit) != 0; }
     // Solid and not a ghost: takes part in push-apart and can hold others up.
     bool collides() const { return solid && !skips(kSkipEntityCollisions); }
 };
+
+// Whether two values of one field are the same (the comparison
+// changed_fields makes, per member type): Num by value and exactness.
+inline bool same_field(Num a, Num b) { return same(a, b); }
+inline bool same_field(bool a, bool b) { return a == b; }
 
 // Which Fields differ between two states of one body (value or exactness).
 uint32_t changed_fields(const Body& before, const Body& after);

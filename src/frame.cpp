@@ -11,17 +11,18 @@
 
 namespace ds {
 
+namespace {
+Num* if_num(Num& n) { return &n; }
+template <class T>
+Num* if_num(T&) { return nullptr; }
+}  // namespace
+
 Num* body_field(Body& b, uint32_t key) {
     switch (key) {
-        case kKeyX: return &b.x;
-        case kKeyY: return &b.y;
-        case kKeyWidth: return &b.w;
-        case kKeyHeight: return &b.h;
-        case kKeyVx: return &b.vx;
-        case kKeyVy: return &b.vy;
-        case kKeyAy: return &b.ay;
-        case kKeyLocalX: return &b.local_x;
-        case kKeyLocalY: return &b.local_y;
+#define DS_FIELD(Name, type, member, keyword, rule) \
+    case kFieldBit##Name: return if_num(b.member);
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
         default: return nullptr;
     }
 }

@@ -20,11 +20,18 @@ namespace ds {
 
 // Property ids a tween can drive directly on a body. Ids from kFirstUserKey up
 // name properties physics does not know; their values are handed back.
+// Every Number field of body_fields.def has one, numbered as its Field bit.
 enum Key : uint32_t {
-    kKeyX, kKeyY, kKeyWidth, kKeyHeight, kKeyVx, kKeyVy, kKeyAy,
-    kKeyLocalX, kKeyLocalY,
+#define DS_KEY_ID_Number(Name) kKey##Name = kFieldBit##Name,
+#define DS_KEY_ID_Flag(Name)
+#define DS_FIELD(Name, type, member, keyword, rule) DS_KEY_ID_##rule(Name)
+#define DS_KEY(Name, type, member, keyword, rule)
+#include "body_fields.def"
+#undef DS_KEY_ID_Number
+#undef DS_KEY_ID_Flag
     kFirstUserKey = 16,
 };
+static_assert(kFieldCount <= kFirstUserKey);
 
 // The body field a physics key names, or nullptr for a user key.
 Num* body_field(Body& b, uint32_t key);
