@@ -84,7 +84,7 @@ void PairSweep::query(const CellRange& r, uint32_t after, std::span<const size_t
 }
 
 void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
-                    std::span<const uint8_t> resting) {
+                    std::span<const uint8_t> resting, PairLog* log) {
     auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
     inv_cell_ = inverse_cell_size(n, sizes_, [&](size_t m) {
@@ -113,7 +113,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
             resolve_pair(first, second, rests(a), rests(b));
-            note_pushed(members[a], members[b]);
+            note_pushed(log, members[a], members[b]);
             // Re-file b only when it changed cells (sizes never change, so
             // a small body stays small).
             if ((second.x.v != bx || second.y.v != by) && !is_big_[b]) {

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "body.hpp"
@@ -18,8 +19,10 @@ public:
     // Runs the pass over bodies[members[0]], bodies[members[1]], … (the
     // solid, non-ghost bodies in list order).
     // `resting`: empty, or per body whether it rested (see resolve_pair).
+    // `log`, when given, receives each pair resolved (contacts.hpp's PairLog).
     void run(std::span<Body> bodies, std::span<const size_t> members,
-             std::span<const uint8_t> resting = {});
+             std::span<const uint8_t> resting = {},
+             std::vector<std::pair<uint32_t, uint32_t>>* log = nullptr);
 
 private:
     struct CellRange {

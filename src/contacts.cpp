@@ -71,13 +71,6 @@ bool lands_on(const Body& upper, const Body& rester) {
 
 }  // namespace
 
-namespace {
-thread_local PairLog* installed_log = nullptr;
-}  // namespace
-
-void set_pair_log(PairLog* log) { installed_log = log; }
-PairLog* pair_log() { return installed_log; }
-
 void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     if (a.immovable && b.immovable) return;
     const double ox = overlap(a.x, a.w, b.x, b.w);
@@ -98,7 +91,7 @@ void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
 namespace {
 
 void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
-               std::span<const uint8_t> resting) {
+               std::span<const uint8_t> resting, PairLog* log) {
     auto rests = [&](size_t i) { return !resting.empty() && resting[i] != 0; };
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
@@ -106,23 +99,33 @@ void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
             Body& second = bodies[members[b]];
             if (aabb_overlap(first, second)) {
                 resolve_pair(first, second, rests(members[a]), rests(members[b]));
-                note_pushed(members[a], members[b]);
+                note_pushed(log, members[a], members[b]);
             }
         }
 }
 
 
-void run_pairs(std::span<Body> bodies, std::span<const size_t> members, PairMethod method,
-               std::span<const uint8_t> resting) {
-    thread_local PairSweep sweep;
+void run_pairs(ContactScratch& scratch, std::span<Body> bodies, std::span<const size_t> members,
+               PairMethod method, std::span<const uint8_t> resting) {
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kPairGridFrom);
-    if (grid) sweep.run(bodies, members, resting);
-    else all_pairs(bodies, members, resting);
+    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log);
+    else all_pairs(bodies, members, resting, scratch.log);
 }
 
 }  // namespace
+
+void resolve_entity_collisions(ContactScratch& scratch, std::span<Body> bodies, PairMethod method,
+                               std::span<const uint8_t> resting) {
+    // Only solid, non-ghost bodies take part; walking just those, in list
+    // order, visits the eligible pairs in exactly the all-pairs order.
+    std::vector<size_t>& members = scratch.members;
+    members.clear();
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].collides()) members.push_back(i);
+    run_pairs(scratch, bodies, members, method, resting);
+}
 
 void resolve_entity_collisions(std::span<Body> bodies) {
     resolve_entity_collisions_by(bodies, PairMethod::Auto);
@@ -130,18 +133,14 @@ void resolve_entity_collisions(std::span<Body> bodies) {
 
 void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting) {
-    // Only solid, non-ghost bodies take part; walking just those, in list
-    // order, visits the eligible pairs in exactly the all-pairs order.
-    thread_local std::vector<size_t> members;
-    members.clear();
-    for (size_t i = 0; i < bodies.size(); ++i)
-        if (bodies[i].collides()) members.push_back(i);
-    run_pairs(bodies, members, method, resting);
+    ContactScratch scratch;
+    resolve_entity_collisions(scratch, bodies, method, resting);
 }
 
-void resolve_entity_collisions_among(std::span<Body> bodies, std::span<const size_t> members,
+void resolve_entity_collisions_among(ContactScratch& scratch, std::span<Body> bodies,
+                                     std::span<const size_t> members,
                                      std::span<const uint8_t> resting) {
-    run_pairs(bodies, members, PairMethod::Auto, resting);
+    run_pairs(scratch, bodies, members, PairMethod::Auto, resting);
 }
 
 }  // namespace ds
