@@ -4,24 +4,13 @@
 #include <cmath>
 #include <vector>
 
+#include "body_axis.hpp"
 #include "constants.hpp"
 #include "broadphase.hpp"
 
 namespace ds {
 
 namespace {
-
-// One axis of a body, so both push directions share one routine.
-struct Span1 {
-    Num& pos;
-    Num& vel;
-    Num size;
-    // Twice the centre: keeps centre comparisons exact for integer boxes.
-    double centre2() const { return 2 * pos.v + size.v; }
-};
-
-Span1 along_x(Body& b) { return {b.x, b.vx, b.w}; }
-Span1 along_y(Body& b) { return {b.y, b.vy, b.h}; }
 
 double overlap(Num p1, Num s1, Num p2, Num s2) {
     return std::min(p1.v + s1.v, p2.v + s2.v) - std::max(p1.v, p2.v);
@@ -45,7 +34,7 @@ void push_off_immovable(Body& m, const Body& s, double ox, double oy) {
 
 // Two movable bodies share the overlap along one axis. `a` is the earlier in
 // list order: it moves negative on a tie and takes the larger integer half.
-void push_apart(Span1 a, Span1 b, double o) {
+void push_apart(BodyAxis a, BodyAxis b, double o) {
     const bool exact = a.pos.exact && a.size.exact && b.pos.exact && b.size.exact;
     const double a_share = exact ? std::ceil(o / 2) : o / 2;
     const double b_share = exact ? o - a_share : o / 2;
