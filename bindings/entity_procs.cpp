@@ -9,6 +9,7 @@
 #include "groups.hpp"
 #include "keys.hpp"
 #include "plist.hpp"
+#include "pushed_pairs.hpp"
 #include "registry.hpp"
 #include "steps.hpp"
 #include "tilemap_type.hpp"
@@ -100,10 +101,21 @@ SCM bulk_step(const char* proc, SCM entities) {
     return result;
 }
 
-SCM resolve_entity_collisions_n(SCM entities) {
-    return bulk_step<resolve_entity_collisions>("resolve-entity-collisions", entities);
+// Scheme's bulk push-apart has no Frame to own its scratch: it keeps one per
+// thread here in the bindings (so a warm call does not allocate), and notes
+// pairs in the overlay's log as step-scene does.
+void resolve_noting_pairs(std::span<Body> bodies) {
+    thread_local ContactScratch scratch;
+    scratch.log = pushed_pairs();
+    resolve_entity_collisions(scratch, bodies);
 }
-SCM sync_groups_n(SCM entities) { return bulk_step<sync_groups>("sync-groups", entities); }
+// Groups need scratch only when some body has an origin: a local one will do.
+void sync_groups_alone(std::span<Body> bodies) { sync_groups(bodies); }
+
+SCM resolve_entity_collisions_n(SCM entities) {
+    return bulk_step<resolve_noting_pairs>("resolve-entity-collisions", entities);
+}
+SCM sync_groups_n(SCM entities) { return bulk_step<sync_groups_alone>("sync-groups", entities); }
 
 SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h2) {
     Failure f{"aabb-overlap?"};

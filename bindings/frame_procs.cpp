@@ -5,6 +5,7 @@
 #include "contacts.hpp"
 #include "batch.hpp"
 #include "plist.hpp"
+#include "pushed_pairs.hpp"
 #include "keys.hpp"
 #include "registry.hpp"
 #include "scm_number.hpp"
@@ -44,10 +45,19 @@ struct LastFrame {
 };
 thread_local LastFrame last_frame;
 
+}  // namespace
+
+PairLog*& pushed_pairs() {
+    thread_local PairLog* log = nullptr;
+    return log;
+}
+
+namespace {
+
 SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM resting) {
     Failure f{"step-scene"};
     SCM result = entities;
-    if (PairLog* log = pair_log()) log->clear();  // the overlay shows this frame's pairs
+    if (PairLog* log = pushed_pairs()) log->clear();  // the overlay shows this frame's pairs
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
     guarded(f, nullptr, [&] {
         FrameOptions opts;
@@ -81,6 +91,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             if (!f && (!tweened || decode_batch(list, batch, f))) {
                 stats.decode.ms += ms_since(t0);
                 plan_sleep(batch, grid, opts);
+                batch.frame.note_pairs(pushed_pairs());
                 batch.frame.step_physics(batch.bodies, grid, opts,
                                          tweened ? std::span<const Body>(batch.frame_start)
                                                  : std::span<const Body>(),

@@ -1,6 +1,8 @@
 #include "plist.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <mutex>
 
 #include "cons.hpp"
 #include "scm_number.hpp"
@@ -102,13 +104,51 @@ bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
 
 }  // namespace
 
+namespace {
+
+// identity_tag's table of interned ids: value -> tag, under `lock` (any
+// thread may decode). A real Guile hash table, kept from the collector for
+// good; the mutex and counter are plain C++ and never freed either.
+struct InternedIds {
+    SCM table = SCM_BOOL_F;
+    std::mutex lock;
+    int64_t next = 1;  // the next tag is (next << 1) | 1: odd, never an SCM's raw bits
+};
+
+InternedIds& interned_ids() {
+    static InternedIds* ids = [] {
+        auto* p = new InternedIds;
+        p->table = scm_permanent_object(scm_c_make_hash_table(64));
+        return p;
+    }();
+    return *ids;
+}
+
+void unlock_ids(void* lock) { static_cast<std::mutex*>(lock)->unlock(); }
+
+}  // namespace
+
 int64_t identity_tag(SCM v) {
     if (scm_is_false(v)) return 0;
     // Immediates, symbols and keywords are equal? exactly when eq?.
     if (SCM_IMP(v) || scm_is_symbol(v) || scm_is_keyword(v))
         return static_cast<int64_t>(SCM_UNPACK(v));
-    const unsigned long h = scm_ihash(v, 1ul << 60);  // equal?-consistent
-    return static_cast<int64_t>(h | (1ull << 62));
+    InternedIds& ids = interned_ids();
+    int64_t tag = 0;
+    // equal? may run Scheme (a GOOPS equal? method) and escape: the dynwind
+    // releases the lock however the lookup ends.
+    scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
+    ids.lock.lock();
+    scm_dynwind_unwind_handler(unlock_ids, &ids.lock, SCM_F_WIND_EXPLICITLY);
+    const SCM known = scm_hash_ref(ids.table, v, SCM_BOOL_F);  // by equal?
+    if (scm_is_true(known)) {
+        tag = scm_to_int64(known);
+    } else {
+        tag = static_cast<int64_t>((static_cast<uint64_t>(ids.next++) << 1) | 1);
+        scm_hash_set_x(ids.table, v, scm_from_int64(tag));
+    }
+    scm_dynwind_end();
+    return tag;
 }
 
 bool decode_entity(SCM plist, Decoded& d, Failure& f) {

@@ -26,8 +26,19 @@ struct Decoded {
 // value, records a Failure naming the procedure, key and value.
 bool decode_entity(SCM plist, Decoded& d, Failure& f);
 
-// An identity tag for #:id / #:group-id values: equal? values get equal
-// tags; #f and absence give 0.
+// An identity tag for #:id / #:group-id values: two values get equal tags
+// exactly when they are equal?; #f and absence give 0. Tags stay valid for
+// the life of the process (the core compares them within a frame, cached
+// decodings keep them across frames).
+// Immediates (small integers, characters, booleans …), symbols and keywords
+// are equal? exactly when eq?: their tag is their raw bits, which on 64-bit
+// Guile 3 are never odd (heap pointers end in 000, fixnums in x10, other
+// immediates in 100). Any other value is interned in a process-wide equal?
+// hash table that gives each distinct value an odd tag of its own, so the
+// two kinds never meet. Memory: one table entry (and the value kept alive)
+// per distinct non-immediate, non-symbol id ever seen — strings, big or
+// inexact numbers, lists …; symbols, keywords and small integers cost
+// nothing. As with any hash-table key, an id must not be mutated once used.
 int64_t identity_tag(SCM value);
 
 struct Edit {

@@ -12,6 +12,7 @@
 #include "failure.hpp"
 #include "keys.hpp"
 #include "plist.hpp"
+#include "pushed_pairs.hpp"
 #include "registry.hpp"
 #include "stopwatch.hpp"
 #include "tilemap_type.hpp"
@@ -238,7 +239,7 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
             d->trails.clear();
             d->pairs.clear();
             if (view.debug) {
-                if (PairLog* log = pair_log()) d->pairs = *log;
+                if (PairLog* log = pushed_pairs()) d->pairs = *log;
                 std::sort(d->pairs.begin(), d->pairs.end());
                 d->pairs.erase(std::unique(d->pairs.begin(), d->pairs.end()), d->pairs.end());
                 if (!trails_of(entities, d->entities, history, d->trails, f)) return;
@@ -465,7 +466,7 @@ SCM play_sound(SCM name) {
 thread_local PairLog pushed_log;
 
 SCM note_pushed_pairs(SCM on) {
-    set_pair_log(scm_is_true(on) ? &pushed_log : nullptr);
+    pushed_pairs() = scm_is_true(on) ? &pushed_log : nullptr;
     if (scm_is_false(on)) pushed_log.clear();
     return SCM_UNSPECIFIED;
 }

@@ -10,11 +10,7 @@
 
 namespace ds {
 
-bool PairSweep::same_cells(const CellRange& a, const CellRange& b) {
-    return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
-}
-
-PairSweep::CellRange PairSweep::cells(const Body& b) const {
+CellBox PairSweep::cells(const Body& b) const {
     // The closed hull of each interval: for any widths (zero or negative too),
     // two boxes that overlap by the strict formula have intersecting hulls.
     const double xa = b.x.v, xb = b.x.v + b.w.v, ya = b.y.v, yb = b.y.v + b.h.v;
@@ -22,7 +18,7 @@ PairSweep::CellRange PairSweep::cells(const Body& b) const {
             cell_index(std::max(xa, xb), inv_cell_), cell_index(std::max(ya, yb), inv_cell_)};
 }
 
-bool PairSweep::is_big(const CellRange& r) const {
+bool PairSweep::is_big(const CellBox& r) const {
     return r.x1 - r.x0 >= kMaxFiledSpan || r.y1 - r.y0 >= kMaxFiledSpan;
 }
 
@@ -32,8 +28,8 @@ void PairSweep::file_members(std::span<const Body> bodies, std::span<const size_
     const auto n = static_cast<uint32_t>(members.size());
     int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
     for (uint32_t m = 0; m < n; ++m) {
-        const CellRange r = cells(bodies[members[m]]);
-        range_[m] = r;
+        const CellBox r = cells(bodies[members[m]]);
+        box_[m] = r;
         is_big_[m] = is_big(r);
         if (is_big_[m]) continue;
         x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
@@ -45,17 +41,17 @@ void PairSweep::file_members(std::span<const Body> bodies, std::span<const size_
     big_.clear();
     for (uint32_t m = 0; m < n; ++m) {
         if (is_big_[m]) big_.push_back(m);
-        else insert(m, range_[m]);
+        else insert(m, box_[m]);
     }
 }
 
-void PairSweep::insert(uint32_t m, const CellRange& r) {
-    range_[m] = r;
+void PairSweep::insert(uint32_t m, const CellBox& r) {
+    box_[m] = r;
     for (int64_t cy = r.y0; cy <= r.y1; ++cy)
         for (int64_t cx = r.x0; cx <= r.x1; ++cx) buckets_[bucket(cx, cy)].push_back(m);
 }
 
-void PairSweep::remove(uint32_t m, const CellRange& r) {
+void PairSweep::remove(uint32_t m, const CellBox& r) {
     for (int64_t cy = r.y0; cy <= r.y1; ++cy)
         for (int64_t cx = r.x0; cx <= r.x1; ++cx) {
             auto& b = buckets_[bucket(cx, cy)];
@@ -67,7 +63,7 @@ void PairSweep::remove(uint32_t m, const CellRange& r) {
         }
 }
 
-void PairSweep::query(const CellRange& r, uint32_t after, std::span<const size_t> members, bool all) {
+void PairSweep::query(const CellBox& r, uint32_t after, std::span<const size_t> members, bool all) {
     auto push = [&](uint32_t m) {
         if (m <= after || queued_[m] == current_ + 1) return;
         queued_[m] = current_ + 1;
@@ -84,7 +80,7 @@ void PairSweep::query(const CellRange& r, uint32_t after, std::span<const size_t
 }
 
 void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
-                    std::span<const uint8_t> resting) {
+                    std::span<const uint8_t> resting, PairLog* log) {
     auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
     inv_cell_ = inverse_cell_size(n, sizes_, [&](size_t m) {
@@ -93,7 +89,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
     });
 
     is_big_.assign(n, 0);
-    range_.resize(n);
+    box_.resize(n);
     queued_.assign(n, 0);
     file_members(bodies, members);
     for (uint32_t a = 0; a < n; ++a) {
@@ -104,7 +100,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
         size_t next = 0;
         // Where a is filed is where it is: it moved since only as someone's
         // second, and was re-filed then. (Big bodies are filed nowhere.)
-        CellRange queried = is_big_[a] ? cells(first) : range_[a];
+        CellBox queried = is_big_[a] ? cells(first) : box_[a];
         query(queried, a, members, is_big_[a] != 0);
         std::sort(queue_.begin(), queue_.end());
         while (next < queue_.size()) {
@@ -113,13 +109,13 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
             resolve_pair(first, second, rests(a), rests(b));
-            note_pushed(members[a], members[b]);
+            note_pushed(log, members[a], members[b]);
             // Re-file b only when it changed cells (sizes never change, so
             // a small body stays small).
             if ((second.x.v != bx || second.y.v != by) && !is_big_[b]) {
-                const CellRange moved = cells(second);
-                if (!same_cells(moved, range_[b])) {
-                    remove(b, range_[b]);
+                const CellBox moved = cells(second);
+                if (moved != box_[b]) {
+                    remove(b, box_[b]);
                     insert(b, moved);
                 }
             }
@@ -128,8 +124,8 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             // has passed the rest. (Within the same cells, they are all
             // queued already.)
             if ((first.x.v != ax || first.y.v != ay) && !is_big_[a]) {
-                const CellRange now = cells(first);
-                if (!same_cells(now, queried)) {
+                const CellBox now = cells(first);
+                if (now != queried) {
                     const size_t had = queue_.size();
                     query(now, b, members, false);
                     queried = now;

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "body.hpp"
@@ -18,22 +19,20 @@ public:
     // Runs the pass over bodies[members[0]], bodies[members[1]], … (the
     // solid, non-ghost bodies in list order).
     // `resting`: empty, or per body whether it rested (see resolve_pair).
+    // `log`, when given, receives each pair resolved (contacts.hpp's PairLog).
     void run(std::span<Body> bodies, std::span<const size_t> members,
-             std::span<const uint8_t> resting = {});
+             std::span<const uint8_t> resting = {},
+             std::vector<std::pair<uint32_t, uint32_t>>* log = nullptr);
 
 private:
-    struct CellRange {
-        int64_t x0, y0, x1, y1;
-    };
-    CellRange cells(const Body& b) const;
-    static bool same_cells(const CellRange& a, const CellRange& b);
-    bool is_big(const CellRange& r) const;
+    CellBox cells(const Body& b) const;
+    bool is_big(const CellBox& r) const;
     size_t bucket(int64_t cx, int64_t cy) const;
-    void insert(uint32_t m, const CellRange& r);
-    void remove(uint32_t m, const CellRange& r);
+    void insert(uint32_t m, const CellBox& r);
+    void remove(uint32_t m, const CellBox& r);
     // Queues the members after `after` that share a bucket with box r (or
     // are big) and are not queued yet for the current body.
-    void query(const CellRange& r, uint32_t after, std::span<const size_t> members, bool all);
+    void query(const CellBox& r, uint32_t after, std::span<const size_t> members, bool all);
 
     // Fills the grid, choosing the bucket layout from where the members are.
     void file_members(std::span<const Body> bodies, std::span<const size_t> members);
@@ -43,7 +42,7 @@ private:
     std::vector<std::vector<uint32_t>> buckets_;
     std::vector<uint32_t> big_;        // members spanning too many cells: everyone's candidates
     std::vector<uint8_t> is_big_;      // by member
-    std::vector<CellRange> range_;     // by member: where it is registered
+    std::vector<CellBox> box_;         // by member: where it is registered
     std::vector<uint32_t> queued_;     // by member: the body (+1) it was last queued for
     // Candidates of the current body; sorted from `next` on, taken in order.
     std::vector<uint32_t> queue_;

@@ -12,6 +12,14 @@
 
 namespace ds {
 
+// A box of grid cells [x0, x1] × [y0, y1], both ends included: what a box,
+// or a supporter's top edge, covers in one of the hashed grids. (A run of
+// cells along one axis of a tile map is tile_grid.hpp's CellRange.)
+struct CellBox {
+    int64_t x0, y0, x1, y1;
+    bool operator==(const CellBox&) const = default;
+};
+
 // ⌊v / cell⌋ given 1/cell. Monotone in v (a product with a positive constant
 // rounds monotonely), so overlapping intervals always share a cell; huge
 // coordinates are clamped (they only make extra candidates).

@@ -4,24 +4,13 @@
 #include <cmath>
 #include <vector>
 
+#include "body_axis.hpp"
 #include "constants.hpp"
 #include "broadphase.hpp"
 
 namespace ds {
 
 namespace {
-
-// One axis of a body, so both push directions share one routine.
-struct Span1 {
-    Num& pos;
-    Num& vel;
-    Num size;
-    // Twice the centre: keeps centre comparisons exact for integer boxes.
-    double centre2() const { return 2 * pos.v + size.v; }
-};
-
-Span1 along_x(Body& b) { return {b.x, b.vx, b.w}; }
-Span1 along_y(Body& b) { return {b.y, b.vy, b.h}; }
 
 double overlap(Num p1, Num s1, Num p2, Num s2) {
     return std::min(p1.v + s1.v, p2.v + s2.v) - std::max(p1.v, p2.v);
@@ -45,7 +34,7 @@ void push_off_immovable(Body& m, const Body& s, double ox, double oy) {
 
 // Two movable bodies share the overlap along one axis. `a` is the earlier in
 // list order: it moves negative on a tie and takes the larger integer half.
-void push_apart(Span1 a, Span1 b, double o) {
+void push_apart(BodyAxis a, BodyAxis b, double o) {
     const bool exact = a.pos.exact && a.size.exact && b.pos.exact && b.size.exact;
     const double a_share = exact ? std::ceil(o / 2) : o / 2;
     const double b_share = exact ? o - a_share : o / 2;
@@ -71,13 +60,6 @@ bool lands_on(const Body& upper, const Body& rester) {
 
 }  // namespace
 
-namespace {
-thread_local PairLog* installed_log = nullptr;
-}  // namespace
-
-void set_pair_log(PairLog* log) { installed_log = log; }
-PairLog* pair_log() { return installed_log; }
-
 void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     if (a.immovable && b.immovable) return;
     const double ox = overlap(a.x, a.w, b.x, b.w);
@@ -98,7 +80,7 @@ void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
 namespace {
 
 void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
-               std::span<const uint8_t> resting) {
+               std::span<const uint8_t> resting, PairLog* log) {
     auto rests = [&](size_t i) { return !resting.empty() && resting[i] != 0; };
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
@@ -106,23 +88,33 @@ void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
             Body& second = bodies[members[b]];
             if (aabb_overlap(first, second)) {
                 resolve_pair(first, second, rests(members[a]), rests(members[b]));
-                note_pushed(members[a], members[b]);
+                note_pushed(log, members[a], members[b]);
             }
         }
 }
 
 
-void run_pairs(std::span<Body> bodies, std::span<const size_t> members, PairMethod method,
-               std::span<const uint8_t> resting) {
-    thread_local PairSweep sweep;
+void run_pairs(ContactScratch& scratch, std::span<Body> bodies, std::span<const size_t> members,
+               PairMethod method, std::span<const uint8_t> resting) {
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kPairGridFrom);
-    if (grid) sweep.run(bodies, members, resting);
-    else all_pairs(bodies, members, resting);
+    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log);
+    else all_pairs(bodies, members, resting, scratch.log);
 }
 
 }  // namespace
+
+void resolve_entity_collisions(ContactScratch& scratch, std::span<Body> bodies, PairMethod method,
+                               std::span<const uint8_t> resting) {
+    // Only solid, non-ghost bodies take part; walking just those, in list
+    // order, visits the eligible pairs in exactly the all-pairs order.
+    std::vector<size_t>& members = scratch.members;
+    members.clear();
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].collides()) members.push_back(i);
+    run_pairs(scratch, bodies, members, method, resting);
+}
 
 void resolve_entity_collisions(std::span<Body> bodies) {
     resolve_entity_collisions_by(bodies, PairMethod::Auto);
@@ -130,18 +122,14 @@ void resolve_entity_collisions(std::span<Body> bodies) {
 
 void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting) {
-    // Only solid, non-ghost bodies take part; walking just those, in list
-    // order, visits the eligible pairs in exactly the all-pairs order.
-    thread_local std::vector<size_t> members;
-    members.clear();
-    for (size_t i = 0; i < bodies.size(); ++i)
-        if (bodies[i].collides()) members.push_back(i);
-    run_pairs(bodies, members, method, resting);
+    ContactScratch scratch;
+    resolve_entity_collisions(scratch, bodies, method, resting);
 }
 
-void resolve_entity_collisions_among(std::span<Body> bodies, std::span<const size_t> members,
+void resolve_entity_collisions_among(ContactScratch& scratch, std::span<Body> bodies,
+                                     std::span<const size_t> members,
                                      std::span<const uint8_t> resting) {
-    run_pairs(bodies, members, PairMethod::Auto, resting);
+    run_pairs(scratch, bodies, members, PairMethod::Auto, resting);
 }
 
 }  // namespace ds

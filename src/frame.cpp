@@ -253,13 +253,15 @@ void Frame::run_physics(std::span<Body> bodies, const TileGrid* grid, const Fram
         auto t0 = Clock::now();
         if (members_.size() >= 2)
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, [&](std::span<Body> bs) {
-                resolve_entity_collisions_among(bs, members_, resting_);
+                resolve_entity_collisions_among(contacts_, bs, members_, resting_);
             });
         const auto solid = static_cast<uint64_t>(supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
         push = {push.processed + solid, push.skipped + bodies.size() - solid, push.ms + ms_since(t0)};
         t0 = Clock::now();
-        if (grouped_ != 0) logged_bulk(bodies, writes, kFieldX | kFieldY, sync_groups);
+        if (grouped_ != 0)
+            logged_bulk(bodies, writes, kFieldX | kFieldY,
+                        [&](std::span<Body> bs) { sync_groups(groups_, bs); });
         StepStats& groups = stats_.step[kStepGroups];
         groups = {groups.processed + grouped_, groups.skipped + bodies.size() - grouped_,
                   groups.ms + ms_since(t0)};

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "body.hpp"
+#include "contacts.hpp"
 #include "frame_options.hpp"
+#include "groups.hpp"
 #include "settle.hpp"
 #include "stopwatch.hpp"
 #include "tile_grid.hpp"
@@ -92,6 +94,10 @@ public:
     // The cost of each step in the last frame (tweens: only when step() ran
     // them; callers running tweens themselves may record theirs here).
     const FrameStats& stats() const { return stats_; }
+
+    // Where push-apart notes the pairs it resolves (the debug overlay), or
+    // nullptr for nowhere, from the next frame on.
+    void note_pairs(PairLog* log) { contacts_.log = log; }
     FrameStats& stats() { return stats_; }
 
     // Everything after step-tweens, for callers that run tweens themselves.
@@ -151,6 +157,8 @@ private:
     std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
     SupportIndex support_index_;     // over supporters_, when there are many
+    ContactScratch contacts_;        // push-apart's grid (and the overlay's pair log)
+    GroupScratch groups_;            // sync_groups's origins
     FrameReport report_;
     FrameStats stats_;
     SettleTracker settling_;  // which bodies step() may leave asleep (World path)

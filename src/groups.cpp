@@ -7,8 +7,13 @@
 namespace ds {
 
 void sync_groups(std::span<Body> bodies) {
+    GroupScratch scratch;
+    sync_groups(scratch, bodies);
+}
+
+void sync_groups(GroupScratch& scratch, std::span<Body> bodies) {
     // (group tag, origin index), sorted by tag; the first origin of a tag wins.
-    thread_local std::vector<std::pair<int64_t, size_t>> origins;
+    auto& origins = scratch.origins;
     origins.clear();
     for (size_t i = 0; i < bodies.size(); ++i)
         if (bodies[i].group != 0 && bodies[i].group_origin) origins.emplace_back(bodies[i].group, i);

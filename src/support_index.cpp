@@ -11,13 +11,13 @@
 
 namespace ds {
 
-SupportIndex::Cells SupportIndex::top_cells(const Supporter& o) const {
+CellBox SupportIndex::top_cells(const Supporter& o) const {
     const double xa = o.x, xb = o.x + o.w;
     const int64_t row = cell_index(o.y, inv_ch_);
     return {cell_index(std::min(xa, xb), inv_cw_), row, cell_index(std::max(xa, xb), inv_cw_), row};
 }
 
-SupportIndex::Cells SupportIndex::query_cells(const Body& b) const {
+CellBox SupportIndex::query_cells(const Body& b) const {
     // Supporters' tops within the tolerance of the feet. A top qualifies when
     // the rounded |feet − top| ≤ tolerance, so the exact one exceeds it by at
     // most half an ulp of the tolerance (2⁻⁵¹); the slack covers that and the
@@ -39,7 +39,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
     tops_.clear();
     for (const Supporter& o : bodies) {
-        const Cells r = tops_.emplace_back(top_cells(o));
+        const CellBox r = tops_.emplace_back(top_cells(o));
         if (r.x1 - r.x0 >= kMaxFiledSpan) continue;
         x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0);
         x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
@@ -50,11 +50,11 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     seen_.assign(n, 0);
     stamp_ = 0;
     // Counting sort by bucket: count, prefix-sum, place.
-    auto each_cell = [&](const Cells& r, auto&& f) {
+    auto each_cell = [&](const CellBox& r, auto&& f) {
         for (int64_t cx = r.x0; cx <= r.x1; ++cx) f(bucket(cx, r.y0));
     };
     for (uint32_t k = 0; k < n; ++k) {
-        const Cells& r = tops_[k];
+        const CellBox& r = tops_[k];
         if (r.x1 - r.x0 >= kMaxFiledSpan) big_.push_back(k);
         else each_cell(r, [&](size_t h) { ++start_[h + 1]; });
     }
@@ -62,7 +62,7 @@ void SupportIndex::build(std::span<const Supporter> bodies) {
     items_.resize(start_[buckets]);
     cursor_.assign(start_.begin(), start_.end() - 1);
     for (uint32_t k = 0; k < n; ++k) {
-        const Cells& r = tops_[k];
+        const CellBox& r = tops_[k];
         if (r.x1 - r.x0 >= kMaxFiledSpan) continue;
         each_cell(r, [&](size_t h) { items_[cursor_[h]++] = k; });
     }

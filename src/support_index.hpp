@@ -27,7 +27,7 @@ public:
         ++stamp_;
         for (uint32_t k : big_)
             if (visit(k) && accept(k)) return true;
-        const Cells r = query_cells(b);
+        const CellBox r = query_cells(b);
         if (r.x1 - r.x0 > kMaxQuerySpan) {  // a very wide body: everyone is near
             for (uint32_t k = 0; k < seen_.size(); ++k)
                 if (visit(k) && accept(k)) return true;
@@ -43,11 +43,8 @@ public:
     }
 
 private:
-    struct Cells {
-        int64_t x0, y0, x1, y1;
-    };
-    Cells top_cells(const Supporter& o) const;
-    Cells query_cells(const Body& b) const;
+    CellBox top_cells(const Supporter& o) const;
+    CellBox query_cells(const Body& b) const;
     size_t bucket(int64_t cx, int64_t cy) const;
     bool visit(uint32_t k) {
         if (seen_[k] == stamp_) return false;
@@ -59,7 +56,7 @@ private:
     std::vector<uint32_t> start_;  // bucket h holds items_[start_[h] .. start_[h+1])
     std::vector<uint32_t> items_;
     std::vector<uint32_t> cursor_;  // build scratch
-    std::vector<Cells> tops_;       // build scratch: each supporter's top cells
+    std::vector<CellBox> tops_;     // build scratch: each supporter's top cells
     std::vector<uint32_t> big_;    // spanning many columns: always candidates
     std::vector<uint32_t> seen_;
     std::vector<double> widths_;

@@ -15,7 +15,9 @@
 
 namespace ds {
 
-// A half-open run of cell indices [first, last]; empty when last < first.
+// A run of cell indices along one axis, [first, last] with both ends
+// included; empty when last < first. (A 2-D box of cells is cell_hash.hpp's
+// CellBox.)
 struct CellRange {
     int64_t first = 0;
     int64_t last = -1;

@@ -3,40 +3,42 @@
 #include <algorithm>
 #include <cmath>
 
+#include "body_axis.hpp"
 #include "steps.hpp"
 
 namespace ds {
 
 namespace {
 
-// One axis of a body, so x and y share a single resolution routine.
-struct Axis {
-    Num& pos;
-    Num& vel;
+// One axis of a body as a tile step sees it, so x and y share a single
+// resolution routine: the body's axis plus this step's move and cell size.
+struct TileAxis {
+    BodyAxis body;
     Num move;  // this (sub-)frame's displacement: vel, or vel·h
-    Num size;
     int tile;
 };
 
 // The cells to test along the moving axis. Discrete: the box as it is now.
 // Swept: the box plus every cell its leading edge crossed this frame, which
 // equals the box whenever |v| ≤ size.
-CellRange candidates(const Axis& a, CollisionMode mode) {
-    if (mode == CollisionMode::Discrete || !(a.size.v > 0)) return cells_of(a.pos, a.size, a.tile);
-    const Num start = a.pos - a.move;  // where the box began the move
+CellRange candidates(const TileAxis& t, CollisionMode mode) {
+    const BodyAxis& a = t.body;
+    if (mode == CollisionMode::Discrete || !(a.size.v > 0)) return cells_of(a.pos, a.size, t.tile);
+    const Num start = a.pos - t.move;  // where the box began the move
     if (a.vel.v > 0) {
         const Num lead_start = start + a.size;  // the right (bottom) edge before the move
         const Num lo = lead_start.v < a.pos.v ? lead_start : a.pos;
-        return cells_of(lo, (a.pos + a.size) - lo, a.tile);
+        return cells_of(lo, (a.pos + a.size) - lo, t.tile);
     }
     const Num hi = start.v > a.pos.v + a.size.v ? start : a.pos + a.size;
-    return cells_of(a.pos, hi - a.pos, a.tile);
+    return cells_of(a.pos, hi - a.pos, t.tile);
 }
 
 // Walks candidate cells from the side the body moves from, so the first
 // solid cell met is the one it reaches first.
 template <typename Solid>
-void resolve_axis(Axis a, CellRange along, CellRange across, Solid solid) {
+void resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid solid) {
+    const BodyAxis& a = t.body;
     if (along.empty() || across.empty()) return;
     const bool forward = a.vel.v > 0;
     for (int64_t i = 0, n = along.last - along.first + 1; i < n; ++i) {
@@ -44,7 +46,7 @@ void resolve_axis(Axis a, CellRange along, CellRange across, Solid solid) {
         for (int64_t k = across.first; k <= across.last; ++k) {
             if (!solid(c, k)) continue;
             const bool exact = a.pos.exact && a.size.exact;
-            const double edge = static_cast<double>(forward ? c : c + 1) * a.tile;
+            const double edge = static_cast<double>(forward ? c : c + 1) * t.tile;
             a.pos = forward ? Num{edge - a.size.v, exact} : Num{edge, exact};
             a.vel = Num::integer(0);
             return;
@@ -56,7 +58,7 @@ void resolve_axis(Axis a, CellRange along, CellRange across, Solid solid) {
 
 bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
     if (!grid || b.vx.v == 0 || b.skips(kSkipTileX)) return false;
-    Axis a{b.x, b.vx, s.share(b.vx), b.w, grid->tile_width()};
+    const TileAxis a{along_x(b), s.share(b.vx), grid->tile_width()};
     const CellRange cols = grid->clip_cols(candidates(a, mode));
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
     resolve_axis(a, cols, rows,
@@ -66,7 +68,7 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
 
 bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
     if (!grid || b.vy.v == 0 || b.skips(kSkipTileY)) return false;
-    Axis a{b.y, b.vy, s.share(b.vy), b.h, grid->tile_height()};
+    const TileAxis a{along_y(b), s.share(b.vy), grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
     resolve_axis(a, rows, cols,

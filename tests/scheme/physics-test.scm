@@ -425,6 +425,27 @@
                                                                          #:height 4 #:solid? #t))) 16)
               #:on-ground?))
 
+;; Ids are one entity exactly when equal?: 2^70 and 2^70.0 hash alike but are
+;; not equal?, so the lower one holds the upper one up; two distinct strings
+;; "a" are equal?, so the lower one is the upper one itself and holds nothing.
+(define (stacked upper-id lower-id)
+  (list (list #:id upper-id #:x 0 #:y 0 #:width 8 #:height 16 #:gravity? #t)
+        (list #:id lower-id #:x 0 #:y 16 #:width 8 #:height 16 #:solid? #t #:immovable? #t)))
+(define (upper-on-ground/detect pair)
+  (entity-ref (detect-on-solid (car pair) (make-scene entities: pair) 16) #:on-ground?))
+(define (upper-on-ground/step pair)
+  (entity-ref (car (scene-entities (step-scene (make-scene entities: pair) 16))) #:on-ground?))
+(let ((big (stacked (expt 2 70) (exact->inexact (expt 2 70)))))
+  (test-equal "ids 2^70 and 2^70.0 are two entities (detect-on-solid)" #t (upper-on-ground/detect big))
+  (test-equal "ids 2^70 and 2^70.0 are two entities (step-scene)" #t (upper-on-ground/step big)))
+(let ((same (stacked (string-copy "a") (string-copy "a"))))
+  (test-equal "ids \"a\" and \"a\" (two strings) are one entity (detect-on-solid)" #f
+    (upper-on-ground/detect same))
+  (test-equal "ids \"a\" and \"a\" (two strings) are one entity (step-scene)" #f
+    (upper-on-ground/step same)))
+(test-equal "a fixnum id and a heap id are two entities" #t
+  (upper-on-ground/step (stacked 1 (string-copy "1"))))
+
 ;;; ---------------------------------------------------------------- resolve-entity-collisions
 (define (box x y w h . more) (append (list #:x x #:y y #:width w #:height h #:solid? #t) more))
 ;; ox = min(10, 17) − max(0, 7) = 3 < oy = 10 → x. A's centre 5 < B's 12:
@@ -524,6 +545,17 @@
                                    '(#:x 7 #:y 0 #:hp 9 #:width 10 #:height 10 #:solid? #t))))
 
 ;;; ---------------------------------------------------------------- sync-groups
+;; Group ids too are one group exactly when equal?: 2^70 and 2^70.0 are two.
+(test-equal "group ids 2^70 and 2^70.0 are two groups: the member stays put" '(0 0)
+  (let ((r (sync-groups (list (list #:group-id (expt 2 70) #:group-origin? #t #:x 100 #:y 50)
+                              (list #:group-id (exact->inexact (expt 2 70)) #:group-local-x 10
+                                    #:group-local-y -5 #:x 0 #:y 0)))))
+    (list (entity-ref (cadr r) #:x) (entity-ref (cadr r) #:y))))
+(test-equal "group ids \"g\" and \"g\" (two strings) are one group" '(110 45)
+  (let ((r (sync-groups (list (list #:group-id (string-copy "g") #:group-origin? #t #:x 100 #:y 50)
+                              (list #:group-id (string-copy "g") #:group-local-x 10
+                                    #:group-local-y -5 #:x 0 #:y 0)))))
+    (list (entity-ref (cadr r) #:x) (entity-ref (cadr r) #:y))))
 (define origin '(#:id o #:group-id g #:group-origin? #t #:x 100 #:y 50))
 (test-equal "member placed at origin + local"
   (list origin '(#:group-id g #:group-local-x 10 #:group-local-y -5 #:x 110 #:y 45))
