@@ -55,27 +55,15 @@
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-;;; Both records are bounded (see (downstroke history)), so that a game left
-;;; running (a soak test, a REPL session) stays in constant memory: a ring of
-;;; the last 1000 frames, and between 500 and 1000 of the newest events.
-(define trace? (main-script? "platformer.scm"))
-(define events (make-bounded-log))      ; of (frame . what), newest first; 500 kept
-(define history (make-frame-ring 1000)) ; each frame's player
+(define demo-script "platformer.scm")
+(include "bookkeeping.scm")
 
-(define (note! game what)
-  (set! events (bounded-log-push events (cons (game-frame game) what) 500))
-  (when trace? (format #t "frame ~3d: ~a~%" (game-frame game) what)))
-
-(define (remember! frame player) (frame-ring-set! history frame player))
-
-(define (event-frames what)
-  "The frames WHAT happened in, oldest first."
-  (filter-map (lambda (e) (and (eq? (cdr e) what) (car e))) (reverse (bounded-log-items events))))
+(define (note! game what) (note-at! (game-frame game) what))
 
 (define (player-at frame)
   "The player as it was at the end of FRAME, or #f when FRAME is not one of
 the last 1000."
-  (frame-ring-ref history frame))
+  (entities-at frame))
 
 ;;; ------------------------------------------------------------ the game
 (define was-on-ground? #f)

@@ -55,23 +55,10 @@
   (map (lambda (o) (append (object->entity o) (list #:sprite coin-picture))) (objects-of-type 'coin)))
 
 ;;; ------------------------------------------------------------ bookkeeping
-;;; Both records are bounded (see (downstroke history)), so that a game left
-;;; running (a soak test, a REPL session) stays in constant memory: a ring of
-;;; the last 1000 frames, and between 500 and 1000 of the newest events.
-(define trace? (main-script? "topdown.scm"))
-(define events (make-bounded-log))      ; of (frame . what), newest first; 500 kept
-(define history (make-frame-ring 1000)) ; each frame's entities
+(define demo-script "topdown.scm")
+(include "bookkeeping.scm")
 
-(define (note! game what)
-  (set! events (bounded-log-push events (cons (game-frame game) what) 500))
-  (when trace? (format #t "frame ~3d: ~a~%" (game-frame game) what)))
-
-(define (remember! frame entities) (frame-ring-set! history frame entities))
-
-(define (entities-at frame)
-  "The entities as they were at the end of FRAME, or #f when FRAME is not
-one of the last 1000."
-  (frame-ring-ref history frame))
+(define (note! game what) (note-at! (game-frame game) what))
 
 (define (player-at frame)
   (let ((entities (entities-at frame))) (and entities (car entities))))

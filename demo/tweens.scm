@@ -51,29 +51,12 @@
   (load-sound 'hit (string-append demo-dir "/sounds/hit.wav")))
 
 ;;; ------------------------------------------------------------ bookkeeping
-;;; Both records are bounded (see (downstroke history)), so that a game left
-;;; running (a soak test, a REPL session) stays in constant memory: a ring of
-;;; the last 1000 frames, and between 500 and 1000 of the newest events.
-(define trace? (main-script? "tweens.scm"))
-(define events (make-bounded-log))      ; of (frame . what), newest first; 500 kept
-(define history (make-frame-ring 1000)) ; each frame's entities
+(define demo-script "tweens.scm")
+(include "bookkeeping.scm")
 
 (define (note! what)
   ;; `game' is defined below; on-complete procedures run inside it.
-  (let ((frame (game-frame game)))
-    (set! events (bounded-log-push events (cons frame what) 500))
-    (when trace? (format #t "frame ~3d: ~a~%" frame what))))
-
-(define (remember! frame entities) (frame-ring-set! history frame entities))
-
-(define (entities-at frame)
-  "The entities as they were at the end of FRAME, or #f when FRAME is not
-one of the last 1000."
-  (frame-ring-ref history frame))
-
-(define (entity-at frame id)
-  (let ((entities (entities-at frame)))
-    (and entities (find (lambda (e) (eq? (entity-ref e #:id) id)) entities))))
+  (note-at! (game-frame game) what))
 
 ;;; ------------------------------------------------------------ entities
 (define (tweened entity . args)
