@@ -6,19 +6,16 @@
 ;;; quits; headless it runs its 90 frames.
 (use-modules (ice-9 format))
 
-(define here (dirname (current-filename)))
-(define level (load-tilemap (string-append here "/maps/level1.tmx")))
+(define demo-dir (dirname (current-filename)))
+(define level (load-tilemap (string-append demo-dir "/maps/level1.tmx")))
 
-;;; The map's tilesets: tiles.tsx from gid 1, sprites.tsx from gid 5.
-(define (sprite local-id) (+ 5 local-id))
+(include "looks.scm")
 (define player-standing (sprite 0))
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
 (define crate-picture (sprite 9))
 
-;;; The sound update plays; headless runs only record it.
-(when (renderer-available?)
-  (load-sound 'jump (string-append here "/sounds/jump.wav")))
+(load-demo-sounds! 'jump)
 
 (define (crate id x y)
   (list #:id id #:x x #:y y #:width 12 #:height 12 #:gravity? #t #:solid? #t #:sprite crate-picture))

@@ -27,19 +27,13 @@
 (define level (load-tilemap (string-append demo-dir "/maps/platformer.tmx")))
 
 ;;; ------------------------------------------------------------ looks and sounds
-;;; The map's tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
-(define (sprite local-id) (+ 5 local-id))
+(include "looks.scm")
 (define player-standing (sprite 0))
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
 (define goal-flag (sprite 11))
 
-;;; The sounds update plays. Headless runs only record play-sound's calls
-;;; (game-sounds); a build without the renderer has no sounds to load.
-(when (renderer-available?)
-  (for-each (lambda (name)
-              (load-sound name (string-append demo-dir "/sounds/" (symbol->string name) ".wav")))
-            '(jump goal)))
+(load-demo-sounds! 'jump 'goal)
 
 (define (map-object name)
   (or (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects level))

@@ -30,8 +30,7 @@
 (define arena (load-tilemap (string-append demo-dir "/maps/sandbox.tmx")))
 
 ;;; ------------------------------------------------------------ looks
-;;; The map's tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
-(define (sprite local-id) (+ 5 local-id))
+(include "looks.scm")
 (define walker-picture (sprite 3))
 (define walker-step-picture (sprite 4))
 (define crate-picture (sprite 9))

@@ -29,20 +29,14 @@
 ;;; ------------------------------------------------------------ looks and sounds
 ;;; No solid tile, no camera-target: the map changes nothing but what gids mean.
 (define backdrop (load-tilemap (string-append demo-dir "/maps/shmup.tmx")))
-;;; Its tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
-(define (sprite local-id) (+ 5 local-id))
+(include "looks.scm")
 (define ship-picture (sprite 5))
 (define enemy-picture (sprite 6))
 (define enemy-flap-picture (sprite 7))
 (define bullet-picture (sprite 8))
 (define explosion-picture (sprite 15))
 
-;;; The sounds update plays. Headless runs only record play-sound's calls
-;;; (game-sounds); a build without the renderer has no sounds to load.
-(when (renderer-available?)
-  (for-each (lambda (name)
-              (load-sound name (string-append demo-dir "/sounds/" (symbol->string name) ".wav")))
-            '(shot boom)))
+(load-demo-sounds! 'shot 'boom)
 
 (define screen-width 320)
 (define screen-height 240)

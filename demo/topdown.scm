@@ -24,16 +24,12 @@
 (define room (load-tilemap (string-append demo-dir "/maps/topdown.tmx")))
 
 ;;; ------------------------------------------------------------ looks and sounds
-;;; The map's tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
-(define (sprite local-id) (+ 5 local-id))
+(include "looks.scm")
 (define player-standing (sprite 0))
 (define player-walking (sprite 1))
 (define coin-picture (sprite 10))
 
-;;; The sound update plays. Headless runs only record play-sound's calls
-;;; (game-sounds); a build without the renderer has no sounds to load.
-(when (renderer-available?)
-  (load-sound 'coin (string-append demo-dir "/sounds/coin.wav")))
+(load-demo-sounds! 'coin)
 
 ;;; Map objects → entities. Object ids are Tiled's numbers; the game names
 ;;; entities by symbols instead.

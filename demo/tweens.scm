@@ -36,8 +36,7 @@
 
 ;;; ------------------------------------------------------------ looks and sounds
 (define backdrop (load-tilemap (string-append demo-dir "/maps/tweens.tmx")))
-;;; Its tilesets: demo-tiles.tsx from gid 1, sprites.tsx from gid 5.
-(define (sprite local-id) (+ 5 local-id))
+(include "looks.scm")
 (define walker-picture (sprite 3))
 (define walker-step-picture (sprite 4))
 (define coin-picture (sprite 10))
@@ -45,10 +44,7 @@
 (define spikes-picture (sprite 14))
 (define burst-picture (sprite 15))
 
-;;; The sound update plays. Headless runs only record play-sound's calls
-;;; (game-sounds); a build without the renderer has no sounds to load.
-(when (renderer-available?)
-  (load-sound 'hit (string-append demo-dir "/sounds/hit.wav")))
+(load-demo-sounds! 'hit)
 
 ;;; ------------------------------------------------------------ bookkeeping
 (define demo-script "tweens.scm")
