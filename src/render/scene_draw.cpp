@@ -63,8 +63,8 @@ bool off_canvas(const Canvas& c, const Box& b, int margin) {
            b.top - margin > c.height();
 }
 
-size_t draw_entities(Canvas& c, TileArt& art, const SceneView& v, int64_t cx, int64_t cy,
-                     DrawCounts& n) {
+void draw_entities(Canvas& c, TileArt& art, const SceneView& v, int64_t cx, int64_t cy,
+                   DrawCounts& n) {
     for (const EntityView& e : v.entities) {
         const Box b = screen_box(e, cx, cy);
         if (off_canvas(c, b, 256)) continue;
@@ -77,7 +77,6 @@ size_t draw_entities(Canvas& c, TileArt& art, const SceneView& v, int64_t cx, in
             ++n.boxes;
         }
     }
-    return n.sprites + n.boxes;
 }
 
 void draw_command(Canvas& c, TileArt& art, const DrawCommand& d, int64_t cx, int64_t cy) {
