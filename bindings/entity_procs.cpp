@@ -5,6 +5,7 @@
 #include "args.hpp"
 #include "batch.hpp"
 #include "contacts.hpp"
+#include "detail/contact_scratch.hpp"
 #include "convert.hpp"
 #include "groups.hpp"
 #include "keys.hpp"

@@ -9,7 +9,7 @@
 #include "keys.hpp"
 #include "registry.hpp"
 #include "scm_number.hpp"
-#include "stopwatch.hpp"
+#include "detail/stopwatch.hpp"
 #include "tilemap_type.hpp"
 #include "tween_step.hpp"
 

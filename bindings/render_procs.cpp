@@ -14,7 +14,7 @@
 #include "plist.hpp"
 #include "pushed_pairs.hpp"
 #include "registry.hpp"
-#include "stopwatch.hpp"
+#include "detail/stopwatch.hpp"
 #include "tilemap_type.hpp"
 
 #include "audio.hpp"

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "body_axis.hpp"
+#include "detail/body_axis.hpp"
 #include "constants.hpp"
-#include "broadphase.hpp"
+#include "detail/contact_scratch.hpp"
 
 namespace ds {
 

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "body.hpp"
-#include "broadphase.hpp"
 
 namespace ds {
 
@@ -32,7 +31,7 @@ void resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
 
 // The pairs push-apart resolved, as body indices (the earlier first), in the
 // order resolved: what the debug overlay draws. Nothing is noted unless the
-// caller's ContactScratch carries a log, so a frame pays one test per pair.
+// Frame is given a log (Frame::note_pairs), so a frame pays one test per pair.
 using PairLog = std::vector<std::pair<uint32_t, uint32_t>>;
 inline void note_pushed(PairLog* log, size_t a, size_t b) {
     if (log) log->emplace_back(static_cast<uint32_t>(a), static_cast<uint32_t>(b));
@@ -42,30 +41,12 @@ inline void note_pushed(PairLog* log, size_t a, size_t b) {
 // Auto uses the grid from a few dozen solid bodies on.
 enum class PairMethod { Auto, AllPairs, Grid };
 
-// What push-apart keeps between calls so that a warm caller does not
-// allocate: the colliding bodies' indices and the grid pass. A Frame owns
-// one; `log`, when set, receives every pair resolved (the debug overlay).
-struct ContactScratch {
-    std::vector<size_t> members;
-    PairSweep sweep;
-    PairLog* log = nullptr;
-};
-
 // One pass over the pairs (i, j), i < j, in list order; each pair sees what
-// earlier pairs produced.
-// `resting` (empty, or one flag per body) marks the bodies that rested.
-void resolve_entity_collisions(ContactScratch& scratch, std::span<Body> bodies,
-                               PairMethod method = PairMethod::Auto,
-                               std::span<const uint8_t> resting = {});
-// The same with scratch of its own (allocates per call; notes no pairs):
-// for callers without a ContactScratch, such as tests.
+// earlier pairs produced. `resting` (empty, or one flag per body) marks the
+// bodies that rested. Allocates its scratch per call and notes no pairs; a
+// Frame keeps its own scratch (detail/contact_scratch.hpp).
 void resolve_entity_collisions(std::span<Body> bodies);
 void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting = {});
-// The same for a caller that already knows which bodies collide (Body::collides),
-// in list order: no sweep over the others (scratch.members is not used).
-void resolve_entity_collisions_among(ContactScratch& scratch, std::span<Body> bodies,
-                                     std::span<const size_t> members,
-                                     std::span<const uint8_t> resting);
 
 }  // namespace ds

@@ -3,11 +3,10 @@
 #include <algorithm>
 
 #include "constants.hpp"
-#include "contacts.hpp"
-#include "ground.hpp"
-#include "groups.hpp"
+#include "detail/frame_impl.hpp"
+#include "detail/ground_index.hpp"
 #include "steps.hpp"
-#include "stopwatch.hpp"
+#include "tiles.hpp"
 
 namespace ds {
 
@@ -27,7 +26,7 @@ Num* body_field(Body& b, uint32_t key) {
     }
 }
 
-void Frame::step_tweens(World& world, double dt) {
+void Frame::Impl::step_tweens(World& world, double dt) {
     const auto t0 = Clock::now();
     const size_t tracks = world.tweens.size();
     auto done = [&](TweenTrack& track) {
@@ -74,7 +73,7 @@ const char* step_name(StepId id) {
 }
 
 template <class MayWrite, class Step>
-Clock::time_point Frame::pass(StepId id, std::span<const uint32_t> block, std::span<Body> bodies,
+Clock::time_point Frame::Impl::pass(StepId id, std::span<const uint32_t> block, std::span<Body> bodies,
                               std::span<FirstWrites> writes, Clock::time_point t0,
                               MayWrite&& may_write, Step&& step) {
     uint64_t ran = 0;
@@ -90,7 +89,7 @@ Clock::time_point Frame::pass(StepId id, std::span<const uint32_t> block, std::s
     return t1;
 }
 
-bool Frame::rests(const Body& b, size_t i, const TileGrid* grid, bool indexed) {
+bool Frame::Impl::rests(const Body& b, size_t i, const TileGrid* grid, bool indexed) {
     if (b.vy.v != 0) return false;
     if (grid && rests_on_tile(b, *grid)) return true;
     auto on = [&](size_t k) {
@@ -103,7 +102,7 @@ bool Frame::rests(const Body& b, size_t i, const TileGrid* grid, bool indexed) {
     return false;
 }
 
-void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         int round, std::span<FirstWrites> writes) {
     // Step by step over a block of bodies, block after block: the same
     // result as step by step over all of them (each per-entity step reads
@@ -168,7 +167,7 @@ void Frame::step_bodies(std::span<Body> bodies, const TileGrid* grid, const Fram
 }
 
 template <class Bulk>
-void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
+void Frame::Impl::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
                         Bulk&& bulk) {
     const bool log = std::any_of(writes.begin(), writes.end(),
                                  [&](const FirstWrites& w) { return (w.watched & may_write) != 0; });
@@ -180,7 +179,7 @@ void Frame::logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, u
             writes[i].note(changed_fields(bulk_before_[i], bodies[i]) & may_write);
 }
 
-void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> asleep, bool take) {
+void Frame::Impl::census(std::span<const Body> bodies, std::span<const uint8_t> asleep, bool take) {
     active_.clear();
     begin_census(bodies.size(), take);
     for (size_t i = 0; i < bodies.size(); ++i) {
@@ -190,14 +189,14 @@ void Frame::census(std::span<const Body> bodies, std::span<const uint8_t> asleep
     end_census();
 }
 
-void Frame::begin_census(size_t n, bool take) {
+void Frame::Impl::begin_census(size_t n, bool take) {
     members_.clear();
     grouped_ = 0;
     supporters_taken_ = take;
     if (take) clear_supporters(n);
 }
 
-void Frame::enlist(const Body& b, size_t i) {
+void Frame::Impl::enlist(const Body& b, size_t i) {
     if (b.collides()) {
         members_.push_back(i);
         if (supporters_taken_) add_supporter(b, i);
@@ -205,12 +204,12 @@ void Frame::enlist(const Body& b, size_t i) {
     grouped_ += b.group != 0;
 }
 
-void Frame::end_census() {
+void Frame::Impl::end_census() {
     colliders_ = !members_.empty();
     if (supporters_taken_) slotted_.assign(members_.begin(), members_.end());
 }
 
-void Frame::clear_supporters(size_t n) {
+void Frame::Impl::clear_supporters(size_t n) {
     // Only the slots handed out last time need clearing.
     if (support_slot_.size() != n) support_slot_.assign(n, -1);
     else
@@ -218,25 +217,25 @@ void Frame::clear_supporters(size_t n) {
     supporters_.clear();
 }
 
-void Frame::add_supporter(const Body& b, size_t i) {
+void Frame::Impl::add_supporter(const Body& b, size_t i) {
     support_slot_[i] = std::ssize(supporters_);
     supporters_.push_back(Supporter::of(b));
 }
 
-void Frame::take_supporters(std::span<const Body> scene) {
+void Frame::Impl::take_supporters(std::span<const Body> scene) {
     clear_supporters(scene.size());
     for (const size_t i : members_) add_supporter(scene[i], i);
     slotted_.assign(members_.begin(), members_.end());
 }
 
-void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+void Frame::Impl::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                          std::span<const Body> scene, std::span<FirstWrites> writes,
                          std::span<const uint8_t> asleep) {
     census(bodies, asleep, false);
     run_physics(bodies, grid, opts, scene, writes);
 }
 
-void Frame::run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         std::span<const Body> scene, std::span<FirstWrites> writes) {
     for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
         stats_.step[id] = {};
@@ -268,7 +267,7 @@ void Frame::run_physics(std::span<Body> bodies, const TileGrid* grid, const Fram
     }
 }
 
-void Frame::plan_sleep(const World& world, const FrameOptions& opts) {
+void Frame::Impl::plan_sleep(const World& world, const FrameOptions& opts) {
     const size_t n = world.bodies.size();
     settling_.begin(n, SettleConditions::of(world.grid, opts));
     for (const TweenTrack& t : world.tweens) settling_.mark_tween(t.body);
@@ -285,13 +284,13 @@ void Frame::plan_sleep(const World& world, const FrameOptions& opts) {
         if (!settling_.confirm(i, colliders_)) active_.push_back(static_cast<uint32_t>(i));
 }
 
-void Frame::note_settled(const World& world) {
+void Frame::Impl::note_settled(const World& world) {
     // Asleep bodies stay settled and as they were: only the stepped ones can
     // change their standing.
     for (const uint32_t i : active_) settling_.settle(i, world.bodies[i], colliders_);
 }
 
-const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
+const FrameReport& Frame::Impl::step(World& world, const FrameOptions& opts) {
     report_.user_writes.clear();
     report_.completed.clear();
     // Asleep bodies (settle.hpp) are left alone. Tracking them costs a copy
@@ -319,5 +318,22 @@ const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
     settling_.end_frame(world.bodies.size());
     return report_;
 }
+
+Frame::Frame() : impl_(std::make_unique<Impl>()) {}
+Frame::~Frame() = default;
+Frame::Frame(Frame&&) noexcept = default;
+Frame& Frame::operator=(Frame&&) noexcept = default;
+
+const FrameReport& Frame::step(World& world, const FrameOptions& opts) {
+    return impl_->step(world, opts);
+}
+void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                         std::span<const Body> scene, std::span<FirstWrites> writes,
+                         std::span<const uint8_t> asleep) {
+    impl_->step_physics(bodies, grid, opts, scene, writes, asleep);
+}
+const FrameStats& Frame::stats() const { return impl_->stats_; }
+FrameStats& Frame::stats() { return impl_->stats_; }
+void Frame::note_pairs(PairLog* log) { impl_->contacts_.log = log; }
 
 }  // namespace ds

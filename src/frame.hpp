@@ -3,19 +3,14 @@
 // then entity push-apart; then groups.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "body.hpp"
 #include "contacts.hpp"
 #include "frame_options.hpp"
-#include "groups.hpp"
-#include "settle.hpp"
-#include "stopwatch.hpp"
 #include "tile_grid.hpp"
-#include "support_index.hpp"
-#include "supporter.hpp"
-#include "tiles.hpp"
 #include "tween.hpp"
 
 namespace ds {
@@ -88,17 +83,22 @@ struct FrameReport {
 // not allocate.
 class Frame {
 public:
+    Frame();
+    ~Frame();
+    Frame(Frame&&) noexcept;
+    Frame& operator=(Frame&&) noexcept;
+
     // The whole pass over a world.
     const FrameReport& step(World& world, const FrameOptions& opts);
 
     // The cost of each step in the last frame (tweens: only when step() ran
     // them; callers running tweens themselves may record theirs here).
-    const FrameStats& stats() const { return stats_; }
+    const FrameStats& stats() const;
 
     // Where push-apart notes the pairs it resolves (the debug overlay), or
     // nullptr for nowhere, from the next frame on.
-    void note_pairs(PairLog* log) { contacts_.log = log; }
-    FrameStats& stats() { return stats_; }
+    void note_pairs(PairLog* log);
+    FrameStats& stats();
 
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the
@@ -111,58 +111,10 @@ public:
                       std::span<const uint8_t> asleep = {});
 
 private:
-    void step_tweens(World& world, double dt);
-    void plan_sleep(const World& world, const FrameOptions& opts);
-    void note_settled(const World& world);
-    void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                     int round, std::span<FirstWrites> writes);
-    // The census finds each body's roles; with `take`, in the same sweep it
-    // copies out the supporters, which the bodies then must be the
-    // frame-start scene for (a large scene is read once instead of twice).
-    void census(std::span<const Body> bodies, std::span<const uint8_t> asleep, bool take);
-    void begin_census(size_t n, bool take);
-    void enlist(const Body& b, size_t i);  // the census's count of one body's roles
-    void end_census();
-    void clear_supporters(size_t n);
-    void add_supporter(const Body& b, size_t i);
-    void run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                     std::span<const Body> scene, std::span<FirstWrites> writes);
-    void take_supporters(std::span<const Body> scene);
-    bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
-    // One step over a block of active_; adds to the step's processed count
-    // and, from t0 to its return value (now), to its time.
-    template <class MayWrite, class Step>
-    Clock::time_point pass(StepId id, std::span<const uint32_t> block, std::span<Body> bodies,
-                           std::span<FirstWrites> writes, Clock::time_point t0, MayWrite&& may_write,
-                           Step&& step);
-    template <class Bulk>
-    void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
-                     Bulk&& bulk);
-
-
-    std::vector<Body> start_;  // the frame-start scene (before tweens)
-    // The frame-start bodies that can hold another up (solid, not ghosts),
-    // and each body's slot among them (-1 when it is not one): ground
-    // detection scans only these.
-    std::vector<Supporter> supporters_;
-    std::vector<std::ptrdiff_t> support_slot_;
-    // This call's bodies by role, found in one sweep (a frame changes no
-    // flag): those the per-entity steps visit (awake), those that
-    // collide, in list order, and how many follow a group.
-    std::vector<uint32_t> active_;
-    std::vector<size_t> members_;
-    std::vector<size_t> slotted_;  // the bodies support_slot_ gave a slot to
-    uint64_t grouped_ = 0;
-    bool supporters_taken_ = false;  // by the census, for the first sub-frame
-    std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
-    std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
-    SupportIndex support_index_;     // over supporters_, when there are many
-    ContactScratch contacts_;        // push-apart's grid (and the overlay's pair log)
-    GroupScratch groups_;            // sync_groups's origins
-    FrameReport report_;
-    FrameStats stats_;
-    SettleTracker settling_;  // which bodies step() may leave asleep (World path)
-    bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
+    // The scratch and the passes (detail/frame_impl.hpp): the core's own
+    // machinery, so this header needs none of its headers.
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace ds

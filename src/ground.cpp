@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "detail/ground_index.hpp"
+
 namespace ds {
 
 bool tile_supports(const Body& b, const TileGrid& grid) {

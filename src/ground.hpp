@@ -7,8 +7,6 @@
 
 #include "body.hpp"
 #include "steps.hpp"
-#include "support_index.hpp"
-#include "supporter.hpp"
 #include "tile_grid.hpp"
 
 namespace ds {
@@ -19,23 +17,12 @@ bool tile_supports(const Body& b, const TileGrid& grid);
 // its top within the tolerance of b's feet and moving at nearly b's speed.
 // (Identity — "other is not b itself" — is the caller's business.)
 bool entity_supports(const Body& b, const Body& other);
-// The same for a supporter (which collides by construction).
-bool entity_supports(const Body& b, const Supporter& other);
 
 // Resting contact (beyond the seed; FrameOptions::resting_contacts): a still
 // body (vy = 0) whose feet are exactly on the top of a solid tile, or on the
 // top of a still solid body overlapping it horizontally. Such a body skips
 // gravity, so a stack at rest stays exactly where it is.
 bool rests_on_tile(const Body& b, const TileGrid& grid);
-bool rests_on(const Body& b, const Supporter& other);
-
-// Whether candidate k of a scene or supporter list, in which b's own slot is
-// self_slot (or -1), is b itself or shares b's nonzero id: such a candidate
-// neither holds b up nor gives it a resting contact.
-template <class Other>
-bool is_self(const Body& b, const Other& other, std::ptrdiff_t k, std::ptrdiff_t self_slot) {
-    return k == self_slot || (b.id != 0 && other.id == b.id);
-}
 
 // detect_on_solid returns whether it applied (false: no #:gravity?, or it
 // skips 'on-solid), as the tile steps return whether they looked at the map.
@@ -44,11 +31,5 @@ bool is_self(const Body& b, const Other& other, std::ptrdiff_t k, std::ptrdiff_t
 // Needs #:gravity?; skipped by 'on-solid.
 bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid);
-// The same against the frame's supporters (self_slot: b's own slot there).
-bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::ptrdiff_t self_slot,
-                          const TileGrid* grid);
-// The same, finding the candidates through an index built on `supporters`.
-bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
-                          std::ptrdiff_t self_slot, const TileGrid* grid);
 
 }  // namespace ds

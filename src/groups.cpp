@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "detail/group_scratch.hpp"
+
 namespace ds {
 
 void sync_groups(std::span<Body> bodies) {

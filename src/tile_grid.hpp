@@ -16,7 +16,7 @@
 namespace ds {
 
 // A run of cell indices along one axis, [first, last] with both ends
-// included; empty when last < first. (A 2-D box of cells is cell_hash.hpp's
+// included; empty when last < first. (A 2-D box of cells is detail/cell_hash.hpp's
 // CellBox.)
 struct CellRange {
     int64_t first = 0;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "body_axis.hpp"
+#include "detail/body_axis.hpp"
 #include "steps.hpp"
 
 namespace ds {

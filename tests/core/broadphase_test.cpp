@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "contacts.hpp"
-#include "support_index.hpp"
+#include "detail/ground_index.hpp"
 #include "ground.hpp"
 #include "tiles.hpp"
 #include "support.hpp"

@@ -1,0 +1,35 @@
+// Push-apart with scratch the caller keeps (a Frame, the Scheme bindings):
+// the core's machinery behind resolve_entity_collisions (contacts.hpp).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "../contacts.hpp"
+#include "broadphase.hpp"
+
+namespace ds {
+
+// What push-apart keeps between calls so that a warm caller does not
+// allocate: the colliding bodies' indices and the grid pass. A Frame owns
+// one; `log`, when set, receives every pair resolved (the debug overlay).
+struct ContactScratch {
+    std::vector<size_t> members;
+    PairSweep sweep;
+    PairLog* log = nullptr;
+};
+
+// One pass over the pairs (i, j), i < j, in list order; each pair sees what
+// earlier pairs produced.
+// `resting` (empty, or one flag per body) marks the bodies that rested.
+void resolve_entity_collisions(ContactScratch& scratch, std::span<Body> bodies,
+                               PairMethod method = PairMethod::Auto,
+                               std::span<const uint8_t> resting = {});
+// The same for a caller that already knows which bodies collide (Body::collides),
+// in list order: no sweep over the others (scratch.members is not used).
+void resolve_entity_collisions_among(ContactScratch& scratch, std::span<Body> bodies,
+                                     std::span<const size_t> members,
+                                     std::span<const uint8_t> resting);
+
+}  // namespace ds

@@ -1,0 +1,78 @@
+// What a Frame keeps between frames and the passes that use it: the
+// frame-start scene, the supporters and their index, the census of roles,
+// push-apart's and the groups' scratch, settling. Private to the core.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "../frame.hpp"
+#include "../settle.hpp"
+#include "contact_scratch.hpp"
+#include "group_scratch.hpp"
+#include "stopwatch.hpp"
+#include "support_index.hpp"
+#include "supporter.hpp"
+
+namespace ds {
+
+struct Frame::Impl {
+    const FrameReport& step(World& world, const FrameOptions& opts);
+    void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                      std::span<const Body> scene, std::span<FirstWrites> writes,
+                      std::span<const uint8_t> asleep);
+    void step_tweens(World& world, double dt);
+    void plan_sleep(const World& world, const FrameOptions& opts);
+    void note_settled(const World& world);
+    void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                     int round, std::span<FirstWrites> writes);
+    // The census finds each body's roles; with `take`, in the same sweep it
+    // copies out the supporters, which the bodies then must be the
+    // frame-start scene for (a large scene is read once instead of twice).
+    void census(std::span<const Body> bodies, std::span<const uint8_t> asleep, bool take);
+    void begin_census(size_t n, bool take);
+    void enlist(const Body& b, size_t i);  // the census's count of one body's roles
+    void end_census();
+    void clear_supporters(size_t n);
+    void add_supporter(const Body& b, size_t i);
+    void run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                     std::span<const Body> scene, std::span<FirstWrites> writes);
+    void take_supporters(std::span<const Body> scene);
+    bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
+    // One step over a block of active_; adds to the step's processed count
+    // and, from t0 to its return value (now), to its time.
+    template <class MayWrite, class Step>
+    Clock::time_point pass(StepId id, std::span<const uint32_t> block, std::span<Body> bodies,
+                           std::span<FirstWrites> writes, Clock::time_point t0, MayWrite&& may_write,
+                           Step&& step);
+    template <class Bulk>
+    void logged_bulk(std::span<Body> bodies, std::span<FirstWrites> writes, uint32_t may_write,
+                     Bulk&& bulk);
+
+    std::vector<Body> start_;  // the frame-start scene (before tweens)
+    // The frame-start bodies that can hold another up (solid, not ghosts),
+    // and each body's slot among them (-1 when it is not one): ground
+    // detection scans only these.
+    std::vector<Supporter> supporters_;
+    std::vector<std::ptrdiff_t> support_slot_;
+    // This call's bodies by role, found in one sweep (a frame changes no
+    // flag): those the per-entity steps visit (awake), those that
+    // collide, in list order, and how many follow a group.
+    std::vector<uint32_t> active_;
+    std::vector<size_t> members_;
+    std::vector<size_t> slotted_;  // the bodies support_slot_ gave a slot to
+    uint64_t grouped_ = 0;
+    bool supporters_taken_ = false;  // by the census, for the first sub-frame
+    std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
+    std::vector<Body> bulk_before_;  // for logging what a bulk step wrote
+    SupportIndex support_index_;     // over supporters_, when there are many
+    ContactScratch contacts_;        // push-apart's grid (and the overlay's pair log)
+    GroupScratch groups_;            // sync_groups's origins
+    FrameReport report_;
+    FrameStats stats_;
+    SettleTracker settling_;  // which bodies step() may leave asleep (World path)
+    bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
+};
+
+}  // namespace ds
