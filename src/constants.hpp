@@ -45,6 +45,12 @@ constexpr int64_t kMaxQuerySpan = 64;
 // all of them while sparing a selection over 100 000 sizes every frame.
 constexpr size_t kCellSizeSamples = 1024;
 
+// A pair query (query.hpp) files a box under each grid cell it covers; one
+// covering more than this many (a level-wide trigger among bullets) is tried
+// against every box of the other set instead: filing it would cost more
+// cells than the comparisons it saves.
+constexpr uint64_t kQueryMaxCellsPerBox = 64;
+
 // Cell indices are clamped to ±this: doubles beyond int64 lie outside any
 // grid anyway, and the clamp keeps the conversion defined.
 constexpr double kCellIndexLimit = 4.0e18;
