@@ -62,6 +62,7 @@ extern "C" void ds_init_native() {
     register_frame_procedures();
     register_hash_procedures();
     register_gc_procedures();
+    register_query_procedures();
     register_constants();
     register_render_procedures();
     apply_gc_policy();

@@ -117,6 +117,7 @@ void register_tween_procedures();
 void register_frame_procedures();
 void register_hash_procedures();
 void register_gc_procedures();
+void register_query_procedures();  // spatial and tile queries
 void register_constants();  // the rules' numbers: %gravity, %jump-force, …
 void register_render_procedures();  // render_procs.cpp, or render_missing.cpp without SDL2
 
