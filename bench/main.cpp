@@ -8,6 +8,7 @@
 //   downstroke-bench soak [--frames N] [--org FILE]
 //   downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]
 //   downstroke-bench draw [--frames F] [--warmup W] [--rounds R] [--org FILE]
+//   downstroke-bench query [--frames F] [--org FILE]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -16,6 +17,7 @@
 
 #include "accuracy/accuracy.hpp"
 #include "draw/draw.hpp"
+#include "query/queries.hpp"
 #include "soak/soak.hpp"
 #include "speed/isolate.hpp"
 #include "speed/options.hpp"
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
     try {
         if (argc > 1 && std::string(argv[1]) == "child") return bench::child_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "accuracy") return bench::accuracy_main(argc, argv);
+        if (argc > 1 && std::string(argv[1]) == "query") return bench::query_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "draw") {
 #if DS_BENCH_HAVE_RENDER
             return bench::draw_main(argc, argv);
@@ -40,7 +43,7 @@ int main(int argc, char** argv) {
         }
         if (opts.mode == "soak") return bench::soak(opts);
         if (opts.mode != "speed") {
-            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw)\n", opts.mode.c_str());
+            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw query)\n", opts.mode.c_str());
             return 2;
         }
         return bench::speed(opts);
