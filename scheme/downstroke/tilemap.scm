@@ -11,6 +11,6 @@
   "Load a Tiled .tmx map (and its .tsx tilesets). SOLID-GIDS marks more gids
 solid, for maps whose tilesets carry no collision metadata. MAX-CELLS bounds
 the cells of all its tile layers together (default 67108864, 64 M), MAX-BYTES
-the bytes read for the map and its tilesets together (default 536870912,
-512 MiB); #f keeps the default. Only regular files are read."
+the bytes read for the map and its tilesets together (default 67108864,
+64 MiB); #f keeps the default. Only regular files are read."
   (%load-tilemap path solid-gids max-cells max-bytes))

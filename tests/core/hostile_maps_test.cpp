@@ -221,6 +221,11 @@ TEST_CASE("max_bytes bounds the map and its tilesets together") {
     CHECK(failure_of(map, {.max_bytes = 10}).what ==
           map + ": cannot open map: is " + std::to_string(text.size()) +
               " bytes, more than the 10 bytes max-bytes allows");
+    // A 1 GiB (sparse) file: refused from its size, nothing read.
+    const std::string big = dir.write("big.tmx", "");
+    std::filesystem::resize_file(big, std::uintmax_t{1} << 30);
+    CHECK(failure_of(big).what ==
+          big + ": cannot open map: is 1073741824 bytes, more than the 67108864 bytes max-bytes allows");
 }
 
 TEST_CASE("a long CSV is read no further than one value past the layer") {
