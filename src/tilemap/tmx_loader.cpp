@@ -1,6 +1,10 @@
 // load_tilemap: a TMX map and its TSX tilesets read with tinyxml2 (semantics §7).
 // Every failure is a MapError naming the file and, where there is one, the
 // line of the offending element; unknown elements and attributes are skipped.
+// A file is hostile until shown otherwise: only regular files are read,
+// within MapLimits' bytes, and the cells of every tile layer are counted
+// from the attributes against MapLimits' cells before any is decoded
+// (docs/limits.org, "Maps and tilesets").
 #include <tinyxml2.h>
 
 #include <algorithm>
