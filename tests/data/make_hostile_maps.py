@@ -12,7 +12,9 @@ Each map keeps make_maps.small_map's layout unless its comment says
 otherwise, so the tests can assert line numbers: the <map> on line 2, the
 <tileset> on 3, the <layer> on 4, its <data> on 5.
 """
+import gzip
 import os
+import zlib
 
 from make_maps import H, TILESET_LINE, b64, b64_data, le_bytes, small_map, zstd
 
@@ -68,8 +70,11 @@ def maps():
     two_tilesets = TILESET_LINE + "\n " + TILESET_LINE.replace('name="t"', 'name="u"')
     return {
         "zstd_bomb.tmx": zstd_bomb(),
-        # A 2x2 layer whose zstd stream holds 64 MB: decoding stops at 16 bytes.
+        # 2x2 layers whose streams hold 64 MB (zstd) and 8 MB (deflate, which
+        # packs zeros 1000:1 at best): decoding stops past 16 bytes.
         "zstd_overlong.tmx": small_map(b64_data(None, "zstd", b64(zstd(bytes(64 << 20))))),
+        "zlib_overlong.tmx": small_map(b64_data(None, "zlib", b64(zlib.compress(bytes(8 << 20), 9)))),
+        "gzip_overlong.tmx": small_map(b64_data(None, "gzip", b64(gzip.compress(bytes(8 << 20), 9, mtime=0)))),
         "zstd_short.tmx": small_map(b64_data(None, "zstd", b64(zstd(four[:12])))),
         # Tilesets that are not files.
         "tileset_urandom.tmx": small_map(ok, tileset='<tileset firstgid="1" source="/dev/urandom"/>'),
