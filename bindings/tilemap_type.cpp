@@ -85,8 +85,23 @@ SCM object_plist(const MapObject& o) {
     return scm_append(scm_list_2(head, props));
 }
 
-SCM load_tilemap(SCM path, SCM solid_gids) {
+// A MapLimits field from a keyword: #f keeps the default.
+bool limit_arg(SCM v, const char* name, int64_t& out, Failure& f) {
+    if (scm_is_false(v)) return true;
+    if (scm_is_signed_integer(v, 1, INT64_MAX)) {
+        out = scm_to_int64(v);
+        return true;
+    }
+    fail_arg(f, name, v, "a positive exact integer or #f");
+    return false;
+}
+
+SCM load_tilemap(SCM path, SCM solid_gids, SCM max_cells, SCM max_bytes) {
     Failure f{"load-tilemap"};
+    MapLimits limits;
+    if (!limit_arg(max_cells, "max-cells", limits.max_cells, f) ||
+        !limit_arg(max_bytes, "max-bytes", limits.max_bytes, f))
+        raise(f);  // a wrong-type-arg; nothing is allocated yet
     SCM result = SCM_BOOL_F;
     if (!scm_is_string(path)) {
         fail(f, "wrong-type-arg", scm_list_1(path), "expected a file name, got ~S");
@@ -98,7 +113,7 @@ SCM load_tilemap(SCM path, SCM solid_gids) {
             guarded(f, nullptr, [&] {
                 if (!gid_list(solid_gids, gids, "solid-gids", f)) return;
                 handle = std::make_unique<MapHandle>();
-                handle->map = ds::load_tilemap(cpath, gids);
+                handle->map = ds::load_tilemap(cpath, gids, limits);
                 handle->grid = handle->map.solid_grid();
             });
             if (handle) result = wrap(std::move(handle));
@@ -113,6 +128,7 @@ SCM load_tilemap(SCM path, SCM solid_gids) {
 }
 
 bool positive_int(SCM v, const char* what, int& out, Failure& f) {
+    // The range an int holds safely; map_size_problem then applies the map limits.
     return from_scm(v, out, what, f, 1, 1 << 24, "a positive exact integer");
 }
 
@@ -127,6 +143,11 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
                            positive_int(tile_w, "tile-width", tw, f) && positive_int(tile_h, "tile-height", th, f);
         if (sizes)
             guarded(f, "make-tilemap", [&] {  // the gid lists are C++ vectors
+                // Refused before a cell is converted, as a loaded map's size is.
+                if (const std::string p = map_size_problem(w, h, tw, th, kMaxMapCells); !p.empty()) {
+                    fail_text(f, "out-of-range", nullptr, p.c_str());
+                    return;
+                }
                 bool ok = true;
                 if (scm_is_vector(cells)) {
                     const size_t n = scm_c_vector_length(cells);
@@ -244,8 +265,8 @@ bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
 
 void register_tilemap_procedures() {
     init_tilemap_type();
-    define_procedure<2, 0, 0, load_tilemap>("%load-tilemap",
-        WrapperDoc{"(path solid-gids)", "load-tilemap", "(downstroke tilemap)"});
+    define_procedure<4, 0, 0, load_tilemap>("%load-tilemap",
+        WrapperDoc{"(path solid-gids max-cells max-bytes)", "load-tilemap", "(downstroke tilemap)"});
     // Exported as they are (re-exported by (downstroke tilemap)): documented here.
     define_procedure<6, 0, 0, make_tilemap>("make-tilemap",
         "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "

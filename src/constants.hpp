@@ -18,6 +18,42 @@ constexpr double kOnSolidTolerance = 4.0;  // *on-solid-tolerance*, px and px/fr
 // hang the caller.
 constexpr int kMaxSubsteps = 1024;
 
+// ---- bounds on maps (load_tilemap, make_tilemap): each is the default of
+// a MapLimits field or a fixed bound of the format, so a hostile file ends
+// in an error naming it instead of exhausting memory.
+
+// Tile-layer cells across the whole map (every layer, chunks included) and
+// its solid grid's bounding box: 64 M cells. The largest Tiled maps people
+// ship are a few layers of some thousand cells a side; 64 layers of 1024²,
+// or one layer of 8192², fit. At 4 B per gid that is 256 MB of layers,
+// about what a desktop game can spare, while a forged header asking for
+// 64 layers of 4096² (4 GB) is refused before anything is allocated.
+constexpr int64_t kMaxMapCells = int64_t{1} << 26;
+
+// Bytes read for one map: the .tmx and every .tsx it names, together.
+// tinyxml2 keeps about 20 bytes of DOM per byte of element-dense XML
+// (measured: an 8.5 MB layer of <tile/> elements took 166 MB), so 64 MiB
+// keeps a load near 1.3 GB at worst. Real maps are far smaller: the largest
+// the cell bound admits fits when compressed (Tiled's zlib or zstd), and in
+// CSV (about 5 B a cell) 64 MiB still holds 12 M cells.
+constexpr int64_t kMaxMapBytes = int64_t{64} << 20;
+
+// Tile width or height in px (map, tileset, make-tilemap). Cell edges are
+// col × tile: with 2^24 px tiles even a map 2^26 cells wide ends within
+// 2^50 px, well inside the 2^53 where doubles stop being exact. No art
+// comes near it; make-tilemap has always refused more.
+constexpr int64_t kMaxTileSize = int64_t{1} << 24;
+
+// A tileset image's declared width or height, and its spacing and margin,
+// in px: 65536, past every GPU's largest texture (16384–32768) and the SDL
+// surfaces the renderer cuts tiles from. Keeps its int arithmetic
+// (margin + col × (tile + spacing)) far from overflow.
+constexpr int64_t kMaxImageSide = int64_t{1} << 16;
+
+// Nested <group> layers: Tiled users nest a handful; the bound keeps the
+// loader's recursion shallow whatever tinyxml2's own depth limit is.
+constexpr int kMaxGroupDepth = 32;
+
 // ---- speed: each changes only how fast an answer comes, never the answer
 // Bodies per block of the per-entity steps: 1024 × 168 B (172 KB) stays in
 // L2 while all seven steps pass over it.

@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <climits>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -163,10 +164,12 @@ std::vector<uint32_t> gids_from_bytes(std::span<const uint8_t> bytes) {
     return gids;
 }
 
-std::vector<uint32_t> parse_csv(std::string_view text) {
+std::vector<uint32_t> parse_csv(std::string_view text) { return parse_csv(text, SIZE_MAX); }
+
+std::vector<uint32_t> parse_csv(std::string_view text, size_t max_values) {
     std::vector<uint32_t> gids;
     size_t pos = 0;
-    while (pos <= text.size()) {
+    while (pos <= text.size() && gids.size() < max_values) {
         size_t comma = text.find(',', pos);
         if (comma == std::string_view::npos) comma = text.size();
         std::string_view tok = text.substr(pos, comma - pos);

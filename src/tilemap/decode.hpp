@@ -32,5 +32,8 @@ std::vector<uint32_t> gids_from_bytes(std::span<const uint8_t> bytes);
 // Comma-separated decimal gids, whitespace around each ignored; one trailing
 // comma is allowed (Tiled ends every row but the last with one).
 std::vector<uint32_t> parse_csv(std::string_view text);
+// The same, stopping after max_values: the caller knows how many cells to
+// expect, and one more already tells that the data is too long.
+std::vector<uint32_t> parse_csv(std::string_view text, size_t max_values);
 
 }  // namespace ds::tmx

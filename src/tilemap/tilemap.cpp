@@ -134,9 +134,9 @@ MapError::MapError(const std::string& file, int line, const std::string& message
     : std::runtime_error(where(file, line) + ": " + message), file_(file), line_(line) {}
 
 Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
-                     std::vector<uint32_t> solid_gids) {
-    if (width <= 0 || height <= 0 || tile_w <= 0 || tile_h <= 0)
-        throw std::invalid_argument("make_tilemap: sizes must be positive");
+                     std::vector<uint32_t> solid_gids, int64_t max_cells) {
+    if (const std::string p = map_size_problem(width, height, tile_w, tile_h, max_cells); !p.empty())
+        throw std::invalid_argument("make_tilemap: " + p);
     if (gids.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
         throw std::invalid_argument("make_tilemap: " + std::to_string(gids.size()) +
                                     " gids for a " + std::to_string(width) + "x" +

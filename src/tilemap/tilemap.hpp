@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../tile_grid.hpp"
+#include "map_bounds.hpp"
 
 namespace ds {
 
@@ -133,13 +134,25 @@ private:
 };
 
 // Reads a .tmx file and the external .tsx tilesets it names (paths relative
-// to the map). Throws MapError.
-Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {});
+// to the map). Only regular files are read (a tileset naming /dev/zero or a
+// FIFO is an error), the map and its tilesets at most limits.max_bytes
+// together, and the tile layers (chunks included) at most limits.max_cells
+// cells together, checked from the attributes before anything is decoded.
+// Throws MapError.
+Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {},
+                     const MapLimits& limits = {});
+
+// The same for a map already in memory (`text`, counted against max_bytes):
+// `path` names it in messages and is where its .tsx paths are relative to.
+// For fuzzing and for maps that do not come from a file.
+Tilemap parse_tilemap(std::string_view text, const std::string& path,
+                      std::vector<uint32_t> solid_gids = {}, const MapLimits& limits = {});
 
 // A map made in memory: width × height cells of tile_w × tile_h px, gids
 // row-major (width*height of them), solid exactly where a gid is listed in
-// solid_gids. Throws std::invalid_argument on a size mismatch.
+// solid_gids. Sizes are checked as a loaded map's (map_size_problem, with
+// max_cells). Throws std::invalid_argument on a bad size or a size mismatch.
 Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
-                     std::vector<uint32_t> solid_gids);
+                     std::vector<uint32_t> solid_gids, int64_t max_cells = kMaxMapCells);
 
 }  // namespace ds

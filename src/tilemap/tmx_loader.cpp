@@ -1,25 +1,31 @@
 // load_tilemap: a TMX map and its TSX tilesets read with tinyxml2 (semantics §7).
 // Every failure is a MapError naming the file and, where there is one, the
 // line of the offending element; unknown elements and attributes are skipped.
+// A file is hostile until shown otherwise: only regular files are read,
+// within MapLimits' bytes, and the cells of every tile layer are counted
+// from the attributes against MapLimits' cells before any is decoded
+// (docs/limits.org, "Maps and tilesets").
 #include <tinyxml2.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <climits>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
 #include "decode.hpp"
+#include "map_bounds.hpp"
+#include "read_file.hpp"
 #include "tilemap.hpp"
 
 namespace ds {
@@ -28,23 +34,24 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-// The most cells one layer or a whole map may span: 8192×8192. Dense layers
-// are allocated over their bounding box, so without a bound two far-apart
-// chunks of an infinite map could demand terabytes.
-constexpr int64_t kMaxCells = int64_t{1} << 26;
-
-// Each side checked first so the product cannot overflow.
-bool too_many_cells(int64_t w, int64_t h) {
-    return w > kMaxCells || h > kMaxCells || w * h > kMaxCells;
-}
+// What one load may still use: the caller's limits, the bytes left to read
+// (the map and its tilesets share them) and the tile-layer cells.
+struct LoadState {
+    explicit LoadState(const MapLimits& l) : limits(l), bytes_left(l.max_bytes), cells(l.max_cells) {}
+    MapLimits limits;
+    int64_t bytes_left;
+    CellBudget cells;
+};
 
 // One XML file being read. `note` is appended to every message so that an
 // error inside a .tsx also says which map used it.
 struct XmlFile {
-    XmlFile(std::string p, std::string n) : path(std::move(p)), note(std::move(n)) {}
+    XmlFile(std::string p, std::string n, LoadState& s)
+        : path(std::move(p)), note(std::move(n)), state(&s) {}
 
     std::string path;
     std::string note;
+    LoadState* state;  // shared by the map and its tilesets
     tinyxml2::XMLDocument doc;
 
     [[noreturn]] void fail(const XMLElement* at, const std::string& message) const {
@@ -54,20 +61,16 @@ struct XmlFile {
 
 std::string tag(const XMLElement* e) { return std::string("<") + e->Name() + ">"; }
 
-// Whole file contents, or nullopt with `error` set to the system's reason.
-std::optional<std::string> read_text(const std::string& path, std::string& error) {
-    // A directory opens fine on Linux and then reads as nothing at all.
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        error = "is a directory";
-        return std::nullopt;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = std::strerror(errno);
-        return std::nullopt;
-    }
-    return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+std::string size_text(int64_t w, int64_t h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+// A regular file's contents, drawn from the load's byte budget; nullopt with
+// `error` set to why not.
+std::optional<std::string> read_counted(LoadState& s, const std::string& path,
+                                        std::string& error) {
+    const char* limit = s.bytes_left < s.limits.max_bytes ? "max-bytes leaves" : "max-bytes allows";
+    auto text = tmx::read_regular_file(path, s.bytes_left, limit, error);
+    if (text) s.bytes_left -= static_cast<int64_t>(text->size());
+    return text;
 }
 
 // tinyxml2's ErrorStr repeats the id and line; keep only its detail.
@@ -80,7 +83,7 @@ std::string xml_error(const tinyxml2::XMLDocument& doc) {
     return message;
 }
 
-void parse_xml(XmlFile& f, const std::string& text) {
+void parse_xml(XmlFile& f, std::string_view text) {
     if (f.doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
         throw MapError(f.path, f.doc.ErrorLineNum(), xml_error(f.doc) + f.note);
 }
@@ -180,6 +183,20 @@ Properties read_properties(const XMLElement* owner) {
 
 // --- tilesets ---------------------------------------------------------------
 
+// A size attribute of at most `max` px: image sides, spacing, margin.
+int bounded_attr(const XmlFile& f, const XMLElement* e, const char* name, int64_t max) {
+    const int v = size_attr(f, e, name, 0);
+    if (v > max)
+        f.fail(e, tag(e) + " attribute " + name + "='" + str_attr(e, name) +
+                      "' is larger than the limit of " + std::to_string(max) + " px");
+    return v;
+}
+
+void read_image_size(const XmlFile& f, const XMLElement* img, int& w, int& h) {
+    w = bounded_attr(f, img, "width", kMaxImageSide);
+    h = bounded_attr(f, img, "height", kMaxImageSide);
+}
+
 TileInfo read_tile(const XmlFile& f, const XMLElement* e) {
     TileInfo t;
     t.id = uint_attr(f, e, "id", std::nullopt);
@@ -190,44 +207,61 @@ TileInfo read_tile(const XmlFile& f, const XMLElement* e) {
     t.has_collision_shapes = shapes && shapes->FirstChildElement("object");
     if (const XMLElement* img = e->FirstChildElement("image")) {
         t.image = str_attr(img, "source");
-        t.image_width = size_attr(f, img, "width", 0);
-        t.image_height = size_attr(f, img, "height", 0);
+        read_image_size(f, img, t.image_width, t.image_height);
     }
     return t;
+}
+
+// Tile sizes as the map's; a tileset may leave them out (0).
+void read_tile_size(const XmlFile& f, const XMLElement* e, Tileset& ts) {
+    ts.tile_width = size_attr(f, e, "tilewidth", 0);
+    ts.tile_height = size_attr(f, e, "tileheight", 0);
+    if (ts.tile_width > kMaxTileSize || ts.tile_height > kMaxTileSize)
+        f.fail(e, "tileset '" + ts.name + "' " + tile_size_problem(ts.tile_width, ts.tile_height));
 }
 
 // The attributes and children a <tileset> has whether embedded or in a .tsx.
 void read_tileset_body(const XmlFile& f, const XMLElement* e, Tileset& ts) {
     ts.name = str_attr(e, "name");
-    ts.tile_width = size_attr(f, e, "tilewidth", 0);
-    ts.tile_height = size_attr(f, e, "tileheight", 0);
+    read_tile_size(f, e, ts);
     ts.tile_count = size_attr(f, e, "tilecount", 0);
-    ts.columns = size_attr(f, e, "columns", 0);
-    ts.spacing = size_attr(f, e, "spacing", 0);
-    ts.margin = size_attr(f, e, "margin", 0);
+    ts.columns = bounded_attr(f, e, "columns", kMaxImageSide);
+    ts.spacing = bounded_attr(f, e, "spacing", kMaxImageSide);
+    ts.margin = bounded_attr(f, e, "margin", kMaxImageSide);
     if (const XMLElement* img = e->FirstChildElement("image")) {
         ts.image = str_attr(img, "source");
-        ts.image_width = size_attr(f, img, "width", 0);
-        ts.image_height = size_attr(f, img, "height", 0);
+        read_image_size(f, img, ts.image_width, ts.image_height);
     }
     each_child(e, "tile", [&](const XMLElement* t) { ts.tiles.push_back(read_tile(f, t)); });
     std::stable_sort(ts.tiles.begin(), ts.tiles.end(),
                      [](const TileInfo& a, const TileInfo& b) { return a.id < b.id; });
 }
 
+// A .tsx is read as a tileset body only: a `source` inside it is not
+// followed, so tilesets cannot nest or refer to one another in a cycle.
 void read_external_tileset(const XmlFile& map_file, const XMLElement* e, Tileset& ts) {
     const std::string tsx =
         (std::filesystem::path(map_file.path).parent_path() / ts.source).string();
     std::string error;
-    const auto text = read_text(tsx, error);
+    const auto text = read_counted(*map_file.state, tsx, error);
     if (!text) map_file.fail(e, "cannot open tileset '" + tsx + "': " + error);
-    XmlFile f{tsx, " (tileset of " + map_file.path + ":" + std::to_string(e->GetLineNum()) + ")"};
+    XmlFile f{tsx, " (tileset of " + map_file.path + ":" + std::to_string(e->GetLineNum()) + ")",
+              *map_file.state};
     parse_xml(f, *text);
     const XMLElement* root = f.doc.RootElement();
     if (!root || std::strcmp(root->Name(), "tileset") != 0)
         f.fail(root, "expected a <tileset> root element");
     read_tileset_body(f, root, ts);
     ts.image_dir = std::filesystem::path(tsx).parent_path().string();
+}
+
+// Its gids, firstgid … firstgid+tilecount−1, must all be gids.
+void check_gid_range(const XmlFile& f, const XMLElement* e, const Tileset& ts) {
+    if (ts.tile_count == 0 || static_cast<uint32_t>(ts.tile_count - 1) <= kGidMask - ts.firstgid)
+        return;
+    f.fail(e, "tileset '" + ts.name + "' firstgid=" + std::to_string(ts.firstgid) +
+                  " with tilecount=" + std::to_string(ts.tile_count) + " runs past the largest gid " +
+                  std::to_string(kGidMask));
 }
 
 Tileset read_tileset(const XmlFile& f, const XMLElement* e) {
@@ -242,7 +276,29 @@ Tileset read_tileset(const XmlFile& f, const XMLElement* e) {
     }
     else
         read_external_tileset(f, e, ts);
+    check_gid_range(f, e, ts);
     return ts;
+}
+
+// Every <tileset> of the map, sorted by firstgid; two with one firstgid
+// would make its gids ambiguous.
+void read_tilesets(const XmlFile& f, const XMLElement* root, Tilemap& map) {
+    std::vector<std::pair<Tileset, int>> found;  // with the line of its element
+    each_child(root, "tileset",
+               [&](const XMLElement* t) { found.emplace_back(read_tileset(f, t), t->GetLineNum()); });
+    std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+        return a.first.firstgid < b.first.firstgid;
+    });
+    for (size_t i = 1; i < found.size(); ++i)
+        if (found[i].first.firstgid == found[i - 1].first.firstgid) {
+            const int first = std::min(found[i].second, found[i - 1].second),
+                      second = std::max(found[i].second, found[i - 1].second);
+            throw MapError(f.path, second,
+                           "<tileset> firstgid='" + std::to_string(found[i].first.firstgid) +
+                               "' is also the firstgid of the tileset on line " +
+                               std::to_string(first) + f.note);
+        }
+    for (auto& [ts, line] : found) map.tilesets.push_back(std::move(ts));
 }
 
 // --- layer data -------------------------------------------------------------
@@ -276,23 +332,28 @@ Encoding read_encoding(const XmlFile& f, const XMLElement* data) {
     return enc;
 }
 
-std::vector<uint32_t> xml_tiles(const XmlFile& f, const XMLElement* el) {
+// At most max gids: past that the layer is wrong whatever follows.
+std::vector<uint32_t> xml_tiles(const XmlFile& f, const XMLElement* el, size_t max) {
     std::vector<uint32_t> gids;
-    each_child(el, "tile",
-               [&](const XMLElement* t) { gids.push_back(uint_attr(f, t, "gid", 0u)); });
+    for (const XMLElement* t = el->FirstChildElement("tile"); t && gids.size() < max;
+         t = t->NextSiblingElement("tile"))
+        gids.push_back(uint_attr(f, t, "gid", 0u));
     return gids;
 }
 
+// The gids of `el`: `expected` of them when the data is right, and never
+// more than expected + 1 from text (CSV, XML) or expected from compressed
+// data, however large the file says it is.
 std::vector<uint32_t> decode_gids(const XmlFile& f, const XMLElement* el, Encoding enc,
-                                  size_t expected) {
+                                  size_t expected, const std::string& what) {
     const char* text = el->GetText();
     const std::string_view body = text ? text : "";
     try {
         switch (enc.kind) {
             case Encoding::Kind::Xml:
-                return xml_tiles(f, el);
+                return xml_tiles(f, el, expected + 1);
             case Encoding::Kind::Csv:
-                return tmx::parse_csv(body);
+                return tmx::parse_csv(body, expected + 1);
             case Encoding::Kind::Base64:
                 break;
         }
@@ -300,23 +361,28 @@ std::vector<uint32_t> decode_gids(const XmlFile& f, const XMLElement* el, Encodi
         if (enc.compression == tmx::Compression::None) return tmx::gids_from_bytes(bytes);
         return tmx::gids_from_bytes(tmx::decompress(enc.compression, bytes, expected * 4));
     } catch (const tmx::DecodeError& err) {
-        f.fail(el, err.what());
+        f.fail(el, what + ": " + err.what());
     }
+}
+
+std::string over_cell_limit(const XmlFile& f) {
+    return "more than the loader's limit of " + std::to_string(f.state->limits.max_cells) +
+           " cells (max-cells)";
 }
 
 // The w×h gids of a <data> or <chunk> element; `what` names it in messages.
 std::vector<uint32_t> decode_cells(const XmlFile& f, const XMLElement* el, Encoding enc, int w,
                                    int h, const std::string& what) {
+    if (exceeds(w, h, f.state->limits.max_cells))
+        f.fail(el, what + " is " + size_text(w, h) + " cells, " + over_cell_limit(f));
     const int64_t expected = int64_t{w} * h;
-    if (too_many_cells(w, h))
-        f.fail(el, what + " is " + std::to_string(w) + "x" + std::to_string(h) +
-                       " cells, more than the loader's limit of " + std::to_string(kMaxCells));
-    std::vector<uint32_t> gids = decode_gids(f, el, enc, static_cast<size_t>(expected));
-    if (static_cast<int64_t>(gids.size()) != expected)
-        f.fail(el, what + " has " + std::to_string(gids.size()) + " cells, expected " +
-                       std::to_string(w) + "x" + std::to_string(h) + " = " +
-                       std::to_string(expected));
-    return gids;
+    std::vector<uint32_t> gids = decode_gids(f, el, enc, static_cast<size_t>(expected), what);
+    if (static_cast<int64_t>(gids.size()) == expected) return gids;
+    // Text stops being read one past the expected count.
+    const bool cut = enc.kind != Encoding::Kind::Base64 && static_cast<int64_t>(gids.size()) > expected;
+    const std::string count = cut ? "more than " + std::to_string(expected) : std::to_string(gids.size());
+    f.fail(el, what + " has " + count + " cells, expected " + size_text(w, h) + " = " +
+                   std::to_string(expected));
 }
 
 // Every non-empty gid must fall inside a tileset's range, so that lookups
@@ -344,56 +410,93 @@ void check_gids(const XmlFile& f, const XMLElement* el, const Tilemap& map,
     }
 }
 
-struct Chunk {
-    int64_t x = 0, y = 0;
-    int w = 0, h = 0;
-    std::vector<uint32_t> cells;
+// A <chunk>'s place and size, read before any chunk is decoded.
+struct ChunkHead {
+    const XMLElement* el;
+    int64_t x, y;
+    int w, h;
 };
 
-Chunk read_chunk(const XmlFile& f, const XMLElement* c, Encoding enc, const Tilemap& map,
-                 const std::string& layer) {
-    Chunk ch;
-    ch.x = int_attr(f, c, "x", std::nullopt);
-    ch.y = int_attr(f, c, "y", std::nullopt);
-    ch.w = size_attr(f, c, "width", std::nullopt);
-    ch.h = size_attr(f, c, "height", std::nullopt);
-    const std::string what = "chunk (" + std::to_string(ch.x) + ", " + std::to_string(ch.y) +
-                             ") of layer '" + layer + "'";
-    ch.cells = decode_cells(f, c, enc, ch.w, ch.h, what);
-    check_gids(f, c, map, ch.cells, ch.w, ch.x, ch.y, layer);
-    return ch;
+// An infinite layer's chunks: their bounding box and the cells they hold.
+struct ChunkSpan {
+    std::vector<ChunkHead> heads;
+    int64_t c0 = 0, r0 = 0, c1 = 0, r1 = 0;
+    int64_t cells = 0;  // summed over the chunks (overlaps count twice)
+
+    int64_t area() const { return (c1 - c0) * (r1 - r0); }
+    void add(const ChunkHead& h) {
+        const bool first = c0 == c1;
+        c0 = first ? h.x : std::min(c0, h.x);
+        r0 = first ? h.y : std::min(r0, h.y);
+        c1 = first ? h.x + h.w : std::max(c1, h.x + h.w);
+        r1 = first ? h.y + h.h : std::max(r1, h.y + h.h);
+    }
+};
+
+std::string chunk_name(int64_t x, int64_t y, const std::string& layer) {
+    return "chunk (" + std::to_string(x) + ", " + std::to_string(y) + ") of layer '" + layer + "'";
+}
+
+ChunkHead read_chunk_head(const XmlFile& f, const XMLElement* c) {
+    return {c, int_attr(f, c, "x", std::nullopt), int_attr(f, c, "y", std::nullopt),
+            size_attr(f, c, "width", std::nullopt), size_attr(f, c, "height", std::nullopt)};
+}
+
+// From attributes alone: no chunk is decoded until the whole layer is known
+// to fit the cell limit and the coordinate range.
+ChunkSpan chunk_span(const XmlFile& f, const XMLElement* data, const Tilemap& map,
+                     const std::string& layer) {
+    const int64_t max = f.state->limits.max_cells;
+    ChunkSpan s;
+    each_child(data, "chunk", [&](const XMLElement* c) {
+        const ChunkHead h = read_chunk_head(f, c);
+        if (exceeds(h.w, h.h, max - s.cells))
+            f.fail(c, chunk_name(h.x, h.y, layer) + " (" + size_text(h.w, h.h) +
+                          ") brings the layer's chunks to " + over_cell_limit(f));
+        s.cells += int64_t{h.w} * h.h;
+        if (h.w > 0 && h.h > 0) s.add(h);
+        s.heads.push_back(h);
+    });
+    const int64_t w = s.c1 - s.c0, h = s.r1 - s.r0;
+    if (exceeds(w, h, max) || w > INT_MAX || h > INT_MAX)
+        f.fail(data, "the chunks of layer '" + layer + "' span " + size_text(w, h) + " cells, " +
+                         over_cell_limit(f));
+    for (const std::string& p : {extent_problem(s.c0, w, map.tile_width, "column"),
+                                 extent_problem(s.r0, h, map.tile_height, "row")})
+        if (!p.empty()) f.fail(data, "layer '" + layer + "': " + p);
+    return s;
 }
 
 // An infinite layer: its chunks pasted into one dense block over their
-// bounding box, whose corner becomes the layer's origin.
+// bounding box, whose corner becomes the layer's origin. One chunk is
+// decoded at a time.
 void read_chunks(const XmlFile& f, const XMLElement* data, Encoding enc, const Tilemap& map,
                  TileLayer& l) {
-    std::vector<Chunk> chunks;
-    each_child(data, "chunk",
-               [&](const XMLElement* c) { chunks.push_back(read_chunk(f, c, enc, map, l.name)); });
-    int64_t c0 = 0, r0 = 0, c1 = 0, r1 = 0;
-    bool any = false;
-    for (const Chunk& ch : chunks) {
-        if (ch.w == 0 || ch.h == 0) continue;
-        c0 = any ? std::min(c0, ch.x) : ch.x;
-        r0 = any ? std::min(r0, ch.y) : ch.y;
-        c1 = any ? std::max(c1, ch.x + ch.w) : ch.x + ch.w;
-        r1 = any ? std::max(r1, ch.y + ch.h) : ch.y + ch.h;
-        any = true;
-    }
-    if (too_many_cells(c1 - c0, r1 - r0))
-        f.fail(data, "the chunks of layer '" + l.name + "' span " + std::to_string(c1 - c0) + "x" +
-                         std::to_string(r1 - r0) + " cells, more than the loader's limit of " +
-                         std::to_string(kMaxCells));
-    l.origin_col = c0;
-    l.origin_row = r0;
-    l.width = static_cast<int>(c1 - c0);
-    l.height = static_cast<int>(r1 - r0);
-    l.cells.assign(static_cast<size_t>(l.width) * static_cast<size_t>(l.height), 0);
-    for (const Chunk& ch : chunks)
+    const ChunkSpan s = chunk_span(f, data, map, l.name);
+    l.origin_col = s.c0;
+    l.origin_row = s.r0;
+    l.width = static_cast<int>(s.c1 - s.c0);
+    l.height = static_cast<int>(s.r1 - s.r0);
+    l.cells.assign(static_cast<size_t>(s.area()), 0);
+    for (const ChunkHead& ch : s.heads) {
+        const std::vector<uint32_t> cells =
+            decode_cells(f, ch.el, enc, ch.w, ch.h, chunk_name(ch.x, ch.y, l.name));
+        check_gids(f, ch.el, map, cells, ch.w, ch.x, ch.y, l.name);
         for (int r = 0; r < ch.h; ++r)
-            std::copy_n(ch.cells.begin() + static_cast<ptrdiff_t>(r) * ch.w, ch.w,
-                        l.cells.begin() + (ch.y - r0 + r) * l.width + (ch.x - c0));
+            std::copy_n(cells.begin() + static_cast<ptrdiff_t>(r) * ch.w, ch.w,
+                        l.cells.begin() + (ch.y - s.r0 + r) * l.width + (ch.x - s.c0));
+    }
+}
+
+// A finite map's layer covers exactly the map (Tiled: "always the same as
+// the map width"): cells outside the map would be solid yet unseen.
+std::pair<int, int> finite_layer_size(const XmlFile& f, const XMLElement* e, const Tilemap& map,
+                                      const std::string& name) {
+    const int w = size_attr(f, e, "width", map.width), h = size_attr(f, e, "height", map.height);
+    if (w != map.width || h != map.height)
+        f.fail(e, "layer '" + name + "' is " + size_text(w, h) + " cells but the map is " +
+                      size_text(map.width, map.height));
+    return {w, h};
 }
 
 // --- layers -----------------------------------------------------------------
@@ -424,8 +527,7 @@ void read_tile_layer(const XmlFile& f, const XMLElement* e, GroupState g, Tilema
     if (map.infinite) {
         read_chunks(f, data, enc, map, l);
     } else {
-        l.width = size_attr(f, e, "width", map.width);
-        l.height = size_attr(f, e, "height", map.height);
+        std::tie(l.width, l.height) = finite_layer_size(f, e, map, l.name);
         l.cells = decode_cells(f, data, enc, l.width, l.height, "layer '" + l.name + "'");
         check_gids(f, data, map, l.cells, l.width, 0, 0, l.name);
     }
@@ -456,6 +558,45 @@ void read_object_layer(const XmlFile& f, const XMLElement* e, Tilemap& map) {
     map.object_layers.push_back(std::move(l));
 }
 
+// Each child of `parent` with fn(child, depth), descending into groups
+// (fn sees them too) at most kMaxGroupDepth deep.
+template <class Fn>
+void walk_layers(const XmlFile& f, const XMLElement* parent, int depth, Fn&& fn) {
+    for (const XMLElement* c = parent->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        fn(c);
+        if (std::string_view(c->Name()) != "group") continue;
+        if (depth >= kMaxGroupDepth)
+            f.fail(c, "<group> nested more than " + std::to_string(kMaxGroupDepth) + " deep");
+        walk_layers(f, c, depth + 1, fn);
+    }
+}
+
+// The cells a tile layer will hold, from its attributes alone.
+int64_t layer_cells(const XmlFile& f, const XMLElement* e, const Tilemap& map) {
+    const std::string name = str_attr(e, "name");
+    const XMLElement* data = e->FirstChildElement("data");
+    if (!data) f.fail(e, "layer '" + name + "' has no <data>");
+    if (map.infinite) {
+        const ChunkSpan s = chunk_span(f, data, map, name);
+        return std::max(s.area(), s.cells);  // the dense block, and what is decoded
+    }
+    const auto [w, h] = finite_layer_size(f, e, map, name);
+    return int64_t{w} * h;
+}
+
+// The whole map's tile-layer cells against max-cells, before any layer is
+// decoded or allocated.
+void check_cell_total(const XmlFile& f, const XMLElement* root, const Tilemap& map) {
+    CellBudget& budget = f.state->cells;
+    walk_layers(f, root, 0, [&](const XMLElement* c) {
+        if (std::string_view(c->Name()) != "layer") return;
+        const int64_t cells = layer_cells(f, c, map);
+        if (!budget.take(cells))
+            f.fail(c, "layer '" + str_attr(c, "name") + "' (" + std::to_string(cells) +
+                          " cells) brings the map's tile layers to " + over_cell_limit(f));
+    });
+}
+
 // Tile and object layers in file order, descending into groups.
 void read_layers(const XmlFile& f, const XMLElement* parent, GroupState g, Tilemap& map) {
     for (const XMLElement* c = parent->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -467,7 +608,7 @@ void read_layers(const XmlFile& f, const XMLElement* parent, GroupState g, Tilem
         } else if (name == "group") {
             const GroupState inner{g.visible && flag_attr(f, c, "visible", true),
                                    g.opacity * double_attr(f, c, "opacity", 1.0)};
-            read_layers(f, c, inner, map);
+            read_layers(f, c, inner, map);  // check_cell_total bounded the depth
         }
     }
 }
@@ -482,13 +623,16 @@ void read_map_header(const XmlFile& f, const XMLElement* root, Tilemap& map) {
     map.height = size_attr(f, root, "height", std::nullopt);
     map.tile_width = int_attr(f, root, "tilewidth", std::nullopt);
     map.tile_height = int_attr(f, root, "tileheight", std::nullopt);
-    if (map.tile_width <= 0 || map.tile_height <= 0)
-        f.fail(root, "tile size " + std::to_string(map.tile_width) + "x" +
-                         std::to_string(map.tile_height) + " is not positive");
+    if (std::string p = tile_size_problem(map.tile_width, map.tile_height); !p.empty())
+        f.fail(root, p);
     map.infinite = flag_attr(f, root, "infinite", false);
-    if (!map.infinite && too_many_cells(map.width, map.height))
-        f.fail(root, "map is " + std::to_string(map.width) + "x" + std::to_string(map.height) +
-                         " cells, more than the loader's limit of " + std::to_string(kMaxCells));
+    // An infinite map's width and height bound nothing: Tiled lets its
+    // chunks grow in every direction, so only the cell limit applies.
+    if (!map.infinite)
+        if (std::string p = map_size_problem(map.width, map.height, map.tile_width,
+                                             map.tile_height, f.state->limits.max_cells);
+            !p.empty())
+            f.fail(root, p);
     map.properties = read_properties(root);
 }
 
@@ -504,22 +648,25 @@ void fit_infinite_bounds(const XmlFile& f, const XMLElement* root, Tilemap& map)
         r1 = any ? std::max(r1, l.origin_row + l.height) : l.origin_row + l.height;
         any = true;
     }
-    if (too_many_cells(c1 - c0, r1 - r0))
-        f.fail(root, "the map's chunks span " + std::to_string(c1 - c0) + "x" +
-                         std::to_string(r1 - r0) + " cells, more than the loader's limit of " +
-                         std::to_string(kMaxCells));
-    map.width = static_cast<int>(c1 - c0);
-    map.height = static_cast<int>(r1 - r0);
+    const int64_t w = c1 - c0, h = r1 - r0;
+    // The solid grid is allocated over this box.
+    if (exceeds(w, h, f.state->limits.max_cells) || w > INT_MAX || h > INT_MAX)
+        f.fail(root, "the map's chunks span " + size_text(w, h) + " cells, " + over_cell_limit(f));
+    map.width = static_cast<int>(w);
+    map.height = static_cast<int>(h);
 }
 
-}  // namespace
+void check_limits(const std::string& path, const MapLimits& limits) {
+    if (limits.max_cells <= 0)
+        throw MapError(path, 0, "max-cells " + std::to_string(limits.max_cells) + " is not positive");
+    if (limits.max_bytes <= 0)
+        throw MapError(path, 0, "max-bytes " + std::to_string(limits.max_bytes) + " is not positive");
+}
 
-Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids) {
-    std::string error;
-    const auto text = read_text(path, error);
-    if (!text) throw MapError(path, 0, "cannot open map: " + error);
-    XmlFile f{path, ""};
-    parse_xml(f, *text);
+Tilemap parse_map(const std::string_view text, const std::string& path,
+                  std::vector<uint32_t> solid_gids, LoadState& state) {
+    XmlFile f{path, "", state};
+    parse_xml(f, text);
     const XMLElement* root = f.doc.RootElement();
     if (!root || std::strcmp(root->Name(), "map") != 0)
         f.fail(root,
@@ -529,14 +676,35 @@ Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids) 
     map.path = path;
     map.extra_solid_gids = std::move(solid_gids);
     read_map_header(f, root, map);
+    check_cell_total(f, root, map);
     // Tilesets first, wherever they sit, so layers can check their gids.
-    each_child(root, "tileset",
-               [&](const XMLElement* t) { map.tilesets.push_back(read_tileset(f, t)); });
-    std::stable_sort(map.tilesets.begin(), map.tilesets.end(),
-                     [](const Tileset& a, const Tileset& b) { return a.firstgid < b.firstgid; });
+    read_tilesets(f, root, map);
     read_layers(f, root, {}, map);
     if (map.infinite) fit_infinite_bounds(f, root, map);
     return map;
+}
+
+}  // namespace
+
+Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids,
+                     const MapLimits& limits) {
+    check_limits(path, limits);
+    LoadState state(limits);
+    std::string error;
+    const auto text = read_counted(state, path, error);
+    if (!text) throw MapError(path, 0, "cannot open map: " + error);
+    return parse_map(*text, path, std::move(solid_gids), state);
+}
+
+Tilemap parse_tilemap(std::string_view text, const std::string& path,
+                      std::vector<uint32_t> solid_gids, const MapLimits& limits) {
+    check_limits(path, limits);
+    LoadState state(limits);
+    if (static_cast<int64_t>(text.size()) > limits.max_bytes)
+        throw MapError(path, 0, "map is " + std::to_string(text.size()) + " bytes, more than the " +
+                                    std::to_string(limits.max_bytes) + " bytes max-bytes allows");
+    state.bytes_left -= static_cast<int64_t>(text.size());
+    return parse_map(text, path, std::move(solid_gids), state);
 }
 
 }  // namespace ds

@@ -1,0 +1,280 @@
+// Maps built to exhaust, hang or confuse the loader (issue 19): each ends in
+// a MapError naming the file, the line and the value, in bounded time and
+// memory (the suite finishing shows the bound). The maps live in
+// tests/data/maps/hostile and are written by tests/data/make_hostile_maps.py;
+// FIFOs and large inputs are made here, in a temporary directory.
+#include <doctest/doctest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tilemap/decode.hpp"
+#include "tilemap/tilemap.hpp"
+
+namespace {
+
+using namespace ds;
+
+std::string hostile(const std::string& name) {
+    return std::string(DS_TEST_DATA) + "/maps/hostile/" + name;
+}
+std::string map_path(const std::string& rel) { return std::string(DS_TEST_DATA) + "/maps/" + rel; }
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+struct Failure {
+    std::string what, file;
+    int line = -1;
+};
+
+Failure failure_of(const std::string& path, const MapLimits& limits = {}) {
+    try {
+        load_tilemap(path, {}, limits);
+    } catch (const MapError& e) {
+        return {e.what(), e.file(), e.line()};
+    }
+    return {"(loaded without error)", "", -1};
+}
+
+// A directory of its own under the system's temporary one, removed at the end.
+struct TempDir {
+    std::filesystem::path path;
+    TempDir() {
+        std::string templ = (std::filesystem::temp_directory_path() / "ds-hostile-XXXXXX").string();
+        REQUIRE(mkdtemp(templ.data()) != nullptr);
+        path = templ;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+    }
+    std::string write(const std::string& name, const std::string& text) const {
+        const std::string p = (path / name).string();
+        std::ofstream(p, std::ios::binary) << text;
+        return p;
+    }
+};
+
+// make_maps.py's small_map: the tileset on line 3, the layer on 4, its data on 5.
+std::string small_map(const std::string& data, const std::string& tileset) {
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<map version=\"1.10\" orientation=\"orthogonal\" width=\"2\" height=\"2\" "
+           "tilewidth=\"16\" tileheight=\"16\">\n " +
+           tileset + "\n <layer id=\"1\" name=\"ground\" width=\"2\" height=\"2\">\n  " + data +
+           "\n </layer>\n</map>\n";
+}
+
+const std::string kCsv = "<data encoding=\"csv\">1,2,3,4</data>";
+const std::string kTileset =
+    "<tileset firstgid=\"1\" name=\"t\" tilewidth=\"16\" tileheight=\"16\" tilecount=\"8\" "
+    "columns=\"4\"/>";
+const std::string kTsx =
+    "<?xml version=\"1.0\"?>\n<tileset name=\"t\" tilewidth=\"16\" tileheight=\"16\" "
+    "tilecount=\"8\" columns=\"4\"/>\n";
+
+}  // namespace
+
+TEST_SUITE("hostile-maps") {
+
+TEST_CASE("each hostile map is refused, naming the file, the line and the value") {
+    struct Case {
+        const char* file;
+        int line;
+        std::string message;  // all of what() after "<file>:<line>: "
+    };
+    const std::string limit = "more than the loader's limit of 67108864 cells (max-cells)";
+    const std::vector<Case> cases = {
+        // 64 layers of 4096² zstd (4 GB decoded): the fifth is refused from
+        // its attributes, before any layer is decoded.
+        {"zstd_bomb.tmx", 16, "layer 'layer4' (16777216 cells) brings the map's tile layers to " + limit},
+        {"zstd_overlong.tmx", 5,
+         "layer 'ground': decompressed zstd data is larger than the 16 bytes the layer size allows"},
+        {"zlib_overlong.tmx", 5,
+         "layer 'ground': decompressed zlib data is larger than the 16 bytes the layer size allows"},
+        {"gzip_overlong.tmx", 5,
+         "layer 'ground': decompressed gzip data is larger than the 16 bytes the layer size allows"},
+        {"zstd_short.tmx", 5, "layer 'ground' has 3 cells, expected 2x2 = 4"},
+        {"tileset_urandom.tmx", 3,
+         "cannot open tileset '/dev/urandom': is not a regular file (a character device)"},
+        {"tileset_zero.tmx", 3,
+         "cannot open tileset '/dev/zero': is not a regular file (a character device)"},
+        {"zero_size.tmx", 2, "map size 0x0 is not positive"},
+        {"layer_wider.tmx", 4, "layer 'ground' is 6x2 cells but the map is 2x2"},
+        {"huge_tilewidth.tmx", 2, "tile size 2147483647x16 is larger than the limit of 16777216 px"},
+        {"far_chunk.tmx", 5,
+         "layer 'ground': column cells 2000000000 to 2000000000 of 16777216 px reach beyond 2^53 "
+         "px, where coordinates stop being exact"},
+        {"negative_firstgid.tmx", 3,
+         "<tileset> attribute firstgid='-1' is not a non-negative integer"},
+        {"huge_firstgid.tmx", 3, "<tileset> firstgid='4294967295' is out of range"},
+        {"firstgid_past_gids.tmx", 3,
+         "tileset 't' firstgid=268435450 with tilecount=8 runs past the largest gid 268435455"},
+        {"duplicate_firstgid.tmx", 4,
+         "<tileset> firstgid='1' is also the firstgid of the tileset on line 3"},
+        {"flip_bits_gid.tmx", 5,
+         "gid 268435455 (raw 0xFFFFFFFF) at cell (0, 0) of layer 'ground' is beyond every tileset"},
+        {"gid_past_tilecount.tmx", 5,
+         "gid 9 (raw 0x80000009) at cell (0, 0) of layer 'ground' is beyond every tileset"},
+        {"base64_three_chars.tmx", 5,
+         "layer 'ground': layer data is 2 bytes, not a whole number of 4-byte gids"},
+        {"base64_junk.tmx", 5, "layer 'ground': invalid base64 character '%'"},
+        {"csv_long.tmx", 5, "layer 'ground' has more than 4 cells, expected 2x2 = 4"},
+        {"csv_short.tmx", 5, "layer 'ground' has 2 cells, expected 2x2 = 4"},
+        {"csv_junk.tmx", 5, "layer 'ground': invalid CSV value '4;'"},
+        {"xml_long.tmx", 5, "layer 'ground' has more than 4 cells, expected 2x2 = 4"},
+        {"deep_groups.tmx", 35, "<group> nested more than 32 deep"},
+        {"deeper_than_xml.tmx", 100,
+         "malformed XML (XML_ELEMENT_DEPTH_EXCEEDED): Element nesting is too deep."},
+        {"tileset_huge_image.tmx", 3,
+         "<image> attribute width='2147483647' is larger than the limit of 65536 px"},
+        {"tile_huge_image.tmx", 3,
+         "<image> attribute height='99999999' is larger than the limit of 65536 px"},
+        {"tileset_huge_spacing.tmx", 3,
+         "<tileset> attribute spacing='2147483647' is larger than the limit of 65536 px"},
+        {"tileset_huge_tile.tmx", 3,
+         "tileset 't' tile size 2147483647x16 is larger than the limit of 16777216 px"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.file);
+        const Failure f = failure_of(hostile(c.file));
+        CHECK(f.file == hostile(c.file));
+        CHECK(f.line == c.line);
+        CHECK(f.what == hostile(c.file) + ":" + std::to_string(c.line) + ": " + c.message);
+    }
+}
+
+TEST_CASE("what the hostile maps leave legal still loads") {
+    // A layer without width and height covers the map.
+    const Tilemap sized = load_tilemap(hostile("layer_default_size.tmx"));
+    CHECK(sized.layers.at(0).width == 3);
+    CHECK(sized.layers.at(0).height == 2);
+    // A .tsx naming itself as its source: the source is not followed.
+    const Tilemap self = load_tilemap(hostile("tileset_self.tmx"));
+    REQUIRE(self.tilesets.size() == 1);
+    CHECK(self.tilesets[0].name == "self");
+    CHECK(self.tilesets[0].tile_count == 8);
+    // Overlapping chunks: the later wins, as the file lists them.
+    const Tilemap chunks = load_tilemap(hostile("overlapping_chunks.tmx"));
+    CHECK(chunks.layers.at(0).width == 16);
+    CHECK(chunks.layers.at(0).cells.size() == 256u);
+}
+
+TEST_CASE("max_cells bounds the tile layers of a whole map, chunks included") {
+    // layers.tmx: four 4x3 layers (48 cells); the fourth, 'hidden', is on line 46.
+    CHECK(load_tilemap(map_path("layers.tmx"), {}, {.max_cells = 48}).layers.size() == 4);
+    const Failure layers = failure_of(map_path("layers.tmx"), {.max_cells = 47});
+    CHECK(layers.what == map_path("layers.tmx") +
+                             ":46: layer 'hidden' (12 cells) brings the map's tile layers to more "
+                             "than the loader's limit of 47 cells (max-cells)");
+    // The header alone: a 6x4 map cannot hold 24 cells under 23.
+    CHECK(failure_of(map_path("level_csv.tmx"), {.max_cells = 23}).what ==
+          map_path("level_csv.tmx") + ":2: map size 6x4 is more than the max-cells limit of 23 cells");
+    // infinite.tmx: ground's chunks span 8x4, overhang's 4x2: 40 cells, and
+    // the solid grid over both 12x6, which the limit bounds too.
+    CHECK(load_tilemap(map_path("infinite.tmx"), {}, {.max_cells = 72}).width == 12);
+    CHECK(failure_of(map_path("infinite.tmx"), {.max_cells = 71}).what ==
+          map_path("infinite.tmx") +
+              ":2: the map's chunks span 12x6 cells, more than the loader's limit of 71 cells "
+              "(max-cells)");
+    CHECK(contains(failure_of(map_path("infinite.tmx"), {.max_cells = 39}).what,
+                   "infinite.tmx:16: layer 'overhang' (8 cells) brings the map's tile layers to "
+                   "more than the loader's limit of 39 cells (max-cells)"));
+    // Three overlapping 16x16 chunks decode 768 cells for a 256-cell layer:
+    // what is decoded counts, not only the block it lands in.
+    CHECK(failure_of(hostile("overlapping_chunks.tmx"), {.max_cells = 600}).what ==
+          hostile("overlapping_chunks.tmx") +
+              ":5: chunk (0, 0) of layer 'ground' (16x16) brings the layer's chunks to more than "
+              "the loader's limit of 600 cells (max-cells)");
+}
+
+TEST_CASE("only regular files are read: FIFOs, devices, directories") {
+    const TempDir dir;
+    const std::string fifo = (dir.path / "pipe.tsx").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string map =
+        dir.write("m.tmx", small_map(kCsv, "<tileset firstgid=\"1\" source=\"pipe.tsx\"/>"));
+    CHECK(failure_of(map).what ==
+          map + ":3: cannot open tileset '" + fifo + "': is not a regular file (a FIFO)");
+    CHECK(failure_of(fifo).what == fifo + ": cannot open map: is not a regular file (a FIFO)");
+    CHECK(failure_of("/dev/zero").what ==
+          "/dev/zero: cannot open map: is not a regular file (a character device)");
+    CHECK(failure_of(dir.path.string()).what == dir.path.string() + ": cannot open map: is a directory");
+}
+
+TEST_CASE("max_bytes bounds the map and its tilesets together") {
+    const TempDir dir;
+    dir.write("t.tsx", kTsx);
+    const std::string three_refs =
+        "<tileset firstgid=\"1\" source=\"t.tsx\"/> <tileset firstgid=\"9\" source=\"t.tsx\"/> "
+        "<tileset firstgid=\"17\" source=\"t.tsx\"/>";
+    const std::string text = small_map(kCsv, three_refs);
+    const std::string map = dir.write("m.tmx", text);
+    const int64_t all = static_cast<int64_t>(text.size() + 3 * kTsx.size());
+    CHECK(load_tilemap(map, {}, {.max_bytes = all}).tilesets.size() == 3);
+    const Failure third = failure_of(map, {.max_bytes = all - 1});
+    CHECK(third.what == map + ":3: cannot open tileset '" + (dir.path / "t.tsx").string() + "': is " +
+                            std::to_string(kTsx.size()) + " bytes, more than the " +
+                            std::to_string(kTsx.size() - 1) + " bytes max-bytes leaves");
+    CHECK(failure_of(map, {.max_bytes = 10}).what ==
+          map + ": cannot open map: is " + std::to_string(text.size()) +
+              " bytes, more than the 10 bytes max-bytes allows");
+    // A 1 GiB (sparse) file: refused from its size, nothing read.
+    const std::string big = dir.write("big.tmx", "");
+    std::filesystem::resize_file(big, std::uintmax_t{1} << 30);
+    CHECK(failure_of(big).what ==
+          big + ": cannot open map: is 1073741824 bytes, more than the 67108864 bytes max-bytes allows");
+}
+
+TEST_CASE("a long CSV is read no further than one value past the layer") {
+    const TempDir dir;
+    std::string csv;
+    csv.reserve(10'000'000);
+    while (csv.size() < 10'000'000) csv += "1,";
+    const std::string map = dir.write("m.tmx", small_map("<data encoding=\"csv\">" + csv + "</data>", kTileset));
+    CHECK(failure_of(map).what == map + ":5: layer 'ground' has more than 4 cells, expected 2x2 = 4");
+    CHECK(tmx::parse_csv("1,2,3,x", 3) == std::vector<uint32_t>{1, 2, 3});
+}
+
+TEST_CASE("parse_tilemap reads a map from memory, as load_tilemap would") {
+    const std::string text = small_map(kCsv, kTileset);
+    const Tilemap m = parse_tilemap(text, "mem.tmx");
+    CHECK(m.path == "mem.tmx");
+    CHECK(m.layers.at(0).cells == std::vector<uint32_t>{1, 2, 3, 4});
+    try {
+        parse_tilemap(small_map("<data encoding=\"csv\">1,2</data>", kTileset), "mem.tmx");
+        FAIL("loaded");
+    } catch (const MapError& e) {
+        CHECK(std::string(e.what()) == "mem.tmx:5: layer 'ground' has 2 cells, expected 2x2 = 4");
+    }
+    CHECK_THROWS_WITH_AS(parse_tilemap(text, "mem.tmx", {}, {.max_bytes = 10}),
+                         ("mem.tmx: map is " + std::to_string(text.size()) +
+                          " bytes, more than the 10 bytes max-bytes allows")
+                             .c_str(),
+                         MapError);
+    CHECK_THROWS_WITH_AS(parse_tilemap(text, "mem.tmx", {}, {.max_cells = 0}),
+                         "mem.tmx: max-cells 0 is not positive", MapError);
+}
+
+TEST_CASE("make_tilemap keeps the loader's sizes") {
+    CHECK_THROWS_WITH_AS(make_tilemap(1, 1, 2147483647, 16, {0}, {}),
+                         "make_tilemap: tile size 2147483647x16 is larger than the limit of 16777216 px",
+                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(make_tilemap(3, 2, 16, 16, {0, 0, 0, 0, 0, 0}, {}, 5),
+                         "make_tilemap: map size 3x2 is more than the max-cells limit of 5 cells",
+                         std::invalid_argument);
+    CHECK(make_tilemap(3, 2, 16, 16, {0, 0, 0, 0, 0, 0}, {}, 6).width == 3);
+    // 2^24 columns of 2^24 px end at 2^48 px: inside the exact range.
+    CHECK(map_size_problem(1 << 24, 1, 1 << 24, 1, int64_t{1} << 40).empty());
+    CHECK(extent_problem(-(int64_t{1} << 30), 1, 1 << 24, "column") ==
+          "column cells -1073741824 to -1073741824 of 16777216 px reach beyond 2^53 px, where "
+          "coordinates stop being exact");
+}
+
+}  // TEST_SUITE
