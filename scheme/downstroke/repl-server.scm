@@ -48,7 +48,7 @@
 ;;; ---------------------------------------------------------------- sockets
 
 (define (refuse fmt . args)
-  (scm-error 'misc-error "--repl-server" fmt args #f))
+  (scm-error 'misc-error "open-unix-repl-socket" fmt args #f))
 
 (define (socket-live? path)
   ;; Whether something accepts connections on PATH (else it is stale).
@@ -63,9 +63,9 @@
   (let ((st (false-if-exception (lstat path))))
     (when st
       (cond ((not (eq? (stat:type st) 'socket))
-             (refuse "~a exists and is not a socket: not replacing it" path))
+             (refuse "--repl-server ~a: it exists and is not a socket; left alone" path))
             ((socket-live? path)
-             (refuse "~a is in use: another server listens on it" path))
+             (refuse "--repl-server ~a: another server is listening on it" path))
             (else (delete-file path))))))
 
 (define (open-unix-repl-socket path)
