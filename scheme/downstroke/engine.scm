@@ -404,8 +404,9 @@ game-capture, a capture run or a window)."
   ;; THUNK's value; or, if it raises an error, (on-error) once (WHAT) — a
   ;; line saying what failed —, the backtrace and the error are reported.
   ;; (exit) is no error.
-  (let ((stack #f))
-    (catch #t thunk
+  (let ((stack #f) (tag (make-prompt-tag "hook")))
+    (catch #t
+      (lambda () (call-with-prompt tag thunk (lambda (k . vals) (apply values vals))))
       (lambda (key . args)
         (when (eq? key 'quit) (apply throw key args))
         ((hook-error-reporter)
@@ -416,8 +417,8 @@ game-capture, a capture run or a window)."
             (print-exception port #f key args))))
         (on-error))
       (lambda (key . args)
-        ;; the frames from THUNK on: the game loop's are the same every time
-        (unless (eq? key 'quit) (set! stack (make-stack #t 3 thunk)))))))
+        ;; the frames inside TAG: the game loop's around it are always the same
+        (unless (eq? key 'quit) (set! stack (make-stack #t 3 tag)))))))
 
 (define (step-or-pause! game dt held)
   ;; #t when the frame ran.

@@ -434,14 +434,23 @@ per frame."
         (begin (close-client! c) #f)
         #t)))
 
+(define *polling* #f)
+
 (define (repl-server-poll! server)
   "Accept new clients, read what clients sent, evaluate it, send the
 replies — without ever waiting. Call it from the game's thread."
-  (accept-all! server)
-  (let* ((clients (server-clients server))
-         (readable (readable-sockets clients)))
-    (for-each (lambda (c) (serve-client! c readable)) clients)
-    (set-server-clients! server (filter still-open? clients))))
+  ;; A client running a game loop of its own (game-run! on a new game)
+  ;; polls again from inside its evaluation: that inner poll does nothing.
+  (unless *polling*
+    (dynamic-wind
+      (lambda () (set! *polling* #t))
+      (lambda ()
+        (accept-all! server)
+        (let* ((clients (server-clients server))
+               (readable (readable-sockets clients)))
+          (for-each (lambda (c) (serve-client! c readable)) clients)
+          (set-server-clients! server (filter still-open? clients))))
+      (lambda () (set! *polling* #f)))))
 
 (define (repl-server-broadcast! server text)
   "Show TEXT to every connected client (a game's error, say)."

@@ -144,6 +144,30 @@
        waiting))
 (for-each close-port waiting)
 
+;;; At most 64 at once: with M, 63 more are served and the next is told so.
+(answer m "#t")                         ; by now the 32 closes were seen
+(define crowd (map (lambda (i) (open-client served-path)) (iota 63)))
+(define one-too-many (connect-when-ready served-path 100))
+(test-equal "a 65th client is told the server is full, and closed"
+  "\ndownstroke: already 64 clients; closing the connection\n"
+  (read-until one-too-many "no such marker"))
+(close-port one-too-many)
+(test-equal "the 64 are served" "64\n" (answer (last crowd) "(+ 63 1)"))
+(for-each close-port crowd)
+(answer m "#t")
+
+;;; An evaluation reading the REPL's input waits for it without holding the game.
+(define reader (open-client served-path))
+(send! reader "(read)")
+(define frame-reading (value m "(game-frame game)"))
+(usleep 100000)
+(test-assert "a client's (read) leaves the game running"
+  (< frame-reading (value m "(game-frame game)")))
+(send! reader "(typed while the game ran)")
+(test-equal "and gets what is typed next" "(typed while the game ran)\n"
+  (unnumbered (string-drop-right (read-until reader prompt) (string-length prompt))))
+(close-port reader)
+
 ;;; A runaway evaluation is interrupted; the game and other clients go on.
 (define looper (open-client served-path))
 (define other (open-client served-path))
