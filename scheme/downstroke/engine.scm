@@ -2,6 +2,7 @@
 (define-module (downstroke engine)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
+  #:use-module ((system repl debug) #:select (narrow-stack->vector print-frames))
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
@@ -404,21 +405,24 @@ game-capture, a capture run or a window)."
   ;; THUNK's value; or, if it raises an error, (on-error) once (WHAT) — a
   ;; line saying what failed —, the backtrace and the error are reported.
   ;; (exit) is no error.
-  (let ((stack #f) (tag (make-prompt-tag "hook")))
+  (let ((frames #f))
     (catch #t
-      (lambda () (call-with-prompt tag thunk (lambda (k . vals) (apply values vals))))
+      (lambda () (start-stack 'hook (thunk)))
       (lambda (key . args)
         (when (eq? key 'quit) (apply throw key args))
         ((hook-error-reporter)
          (call-with-output-string
           (lambda (port)
             (format port "downstroke: ~a:~%" (what))
-            (when stack (display-backtrace stack port))
+            (when frames (print-frames frames port))
             (print-exception port #f key args))))
         (on-error))
       (lambda (key . args)
-        ;; the frames inside TAG: the game loop's around it are always the same
-        (unless (eq? key 'quit) (set! stack (make-stack #t 3 tag)))))))
+        ;; The frames from the hook on, as Guile's REPL narrows them: the
+        ;; game loop's around it are always the same.
+        (unless (eq? key 'quit)
+          (let ((tag (cdr (fluid-ref %stacks))))
+            (set! frames (narrow-stack->vector (make-stack #t) 3 tag 0 1))))))))
 
 (define (step-or-pause! game dt held)
   ;; #t when the frame ran.

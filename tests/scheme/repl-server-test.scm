@@ -254,6 +254,24 @@
 (close-port stale-client)
 (delete-file stale-path)
 
+;;; --repl-port serves the same REPL on 127.0.0.1 (a port some other
+;;; program holds is refused, exit 2: then the next one is tried).
+(define (start-tcp-served tries)
+  (let* ((port (+ 20000 (modulo (+ (getpid) (* 7919 tries)) 20000)))
+         (game (open-pipe* OPEN_READ host "--repl-port" (number->string port) served-script)))
+    (if (string? (read-line game))
+        (cons game port)
+        (begin (close-pipe game) (and (> tries 0) (start-tcp-served (- tries 1)))))))
+(define tcp-game (start-tcp-served 3))
+(define tcp-client
+  (let ((s (socket PF_INET SOCK_STREAM 0)))
+    (connect s AF_INET INADDR_LOOPBACK (cdr tcp-game))
+    (read-until s prompt)
+    s))
+(test-equal "--repl-port serves on loopback" "12\n" (answer tcp-client "(* 3 4)"))
+(test-equal "that game ends by itself as well" 0 (stop-served (car tcp-game) tcp-client))
+(close-port tcp-client)
+
 ;;; Options, and the game without a server.
 (test-assert "--help documents --repl-timeout"
   (string-contains (cdr (run-joined "--help")) "--repl-timeout S"))
