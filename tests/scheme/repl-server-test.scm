@@ -201,6 +201,15 @@
 (close-port flood)
 (test-equal "the game still serves the others" "5\n" (answer other "(+ 2 3)"))
 
+;;; Output waiting for a client is bounded too.
+(define talker (open-client served-path))
+(send! talker "(display (make-string (* 5 1024 1024) #\\x))")
+(test-equal "an evaluation printing more than 4 MiB loses its connection, told why"
+  "\ndownstroke: more than 4194304 bytes of output unread; closing the connection\n"
+  (read-until talker "no such marker"))
+(close-port talker)
+(test-equal "the game serves on" "9\n" (answer other "(+ 4 5)"))
+
 ;;; A hook's error pauses the game; replacing the hook lets it go on.
 (define hook-report
   (begin (send! m "(game-update-set! game (lambda (g dt) (car '())))")
