@@ -2,6 +2,7 @@
 (define-module (downstroke engine)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
+  #:use-module ((system repl debug) #:select (narrow-stack->vector print-frames))
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
@@ -22,7 +23,7 @@
             input-pressed? input-held? input-released? play-sound
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
-            frame-pacing main-script? script-number-argument engine-stats
+            frame-pacing hook-error-reporter main-script? script-number-argument engine-stats
             gc-space-divisor set-gc-space-divisor!
             game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log))
 
@@ -375,7 +376,74 @@ game-capture, a capture run or a window)."
     (scm-error 'wrong-type-arg "game-run!"
                "frames: expected #f or a frame count, got ~S" (list frames) #f)))
 
-(define (run-frame-hooks!) (for-each (lambda (hook) (hook)) frame-hooks))
+(define (run-frame-hooks! game)
+  (for-each (lambda (hook)
+              (if (hook-error-reporter)
+                  (call-reporting (lambda ()
+                                    (format #f "a frame hook (now removed) raised an error in frame ~a"
+                                            (game-frame game)))
+                                  hook (lambda () (remove-frame-hook! hook)))
+                  (hook)))
+            frame-hooks))
+
+;;; ---------------------------------------------------------------- hook errors
+;;; In a game served to a REPL an error in a hook must not end the session
+;;; its author is working in. The host then sets hook-error-reporter (a
+;;; procedure taking the report's text); a failing frame hook is removed,
+;;; and a failing frame leaves the game paused on it, as it started, until
+;;; a hook or the scene is replaced (from the REPL), when it runs again.
+
+(define hook-error-reporter (make-parameter #f))
+
+;; game → what it failed with: its hooks and scene then (see game-levers)
+(define paused-on (make-object-property))
+
+(define (game-levers game)
+  (list (game-engine-update game) (game-update game) (game-render game) (game-scene game)))
+
+(define (call-reporting what thunk on-error)
+  ;; THUNK's value; or, if it raises an error, (on-error) once (WHAT) — a
+  ;; line saying what failed —, the backtrace and the error are reported.
+  ;; (exit) is no error.
+  (let ((frames #f))
+    (catch #t
+      (lambda () (start-stack 'hook (thunk)))
+      (lambda (key . args)
+        (when (eq? key 'quit) (apply throw key args))
+        ((hook-error-reporter)
+         (call-with-output-string
+          (lambda (port)
+            (format port "downstroke: ~a:~%" (what))
+            (when frames (print-frames frames port))
+            (print-exception port #f key args))))
+        (on-error))
+      (lambda (key . args)
+        ;; The frames from the hook on, as Guile's REPL narrows them: the
+        ;; game loop's around it are always the same.
+        (unless (eq? key 'quit)
+          (let ((tag (cdr (fluid-ref %stacks))))
+            (set! frames (narrow-stack->vector (make-stack #t) 3 tag 0 1))))))))
+
+(define (step-or-pause! game dt held)
+  ;; #t when the frame ran.
+  (cond ((not (hook-error-reporter)) (step-game! game dt held) #t)
+        ((and (paused-on game) (every eq? (paused-on game) (game-levers game))) #f)
+        (else (set! (paused-on game) #f) (step-reporting! game dt held))))
+
+(define (step-reporting! game dt held)
+  (let ((frame (game-frame game)) (scene (game-scene game))
+        (input (game-input game)) (history (game-history-log game)))
+    (call-reporting (lambda ()
+                      (format #f "a hook raised an error in frame ~a; the game is paused on it until \
+a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" frame))
+                    (lambda () (step-game! game dt held) #t)
+                    (lambda ()
+                      (game-scene-set! game scene)
+                      (game-input-set! game input)
+                      (game-history-log-set! game history)
+                      (game-frame-set! game frame)
+                      (set! (paused-on game) (game-levers game))
+                      #f))))
 
 (define (step-game! game dt held)
   ;; One fixed step: input, engine-update, update, camera, render.
@@ -403,12 +471,11 @@ game-capture, a capture run or a window)."
         (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))
         (start (get-internal-real-time)))
     (let loop ((ticks 0))
-      (run-frame-hooks!)
+      (run-frame-hooks! game)
       (let* ((frame (game-frame game))
              (held (scripted-held (game-input-script game) frame)))
         (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
-          (step-game! game dt held)
-          (when capture-dir
+          (when (and (step-or-pause! game dt held) capture-dir)
             (draw-game! game)
             (%display-save-png (game-display game) (frame-file capture-dir frame)))
           (when (frame-pacing) (wait-until (+ start (round (* (+ ticks 1) tick)))))
@@ -432,7 +499,7 @@ game-capture, a capture run or a window)."
       (lambda () #t)
       (lambda ()
         (let loop ((last (get-internal-real-time)) (owed tick))
-          (run-frame-hooks!)
+          (run-frame-hooks! game)
           (let* ((polled (%display-poll! display))
                  (held (car polled)))
             (when (odd? (caddr polled))
@@ -445,7 +512,7 @@ game-capture, a capture run or a window)."
                      (steps (min due *max-catch-up-steps*)))
                 (let step ((k 0))
                   (when (and (< k steps) (not (and frames (>= (game-frame game) frames))))
-                    (step-game! game dt held)
+                    (step-or-pause! game dt held)
                     (step (+ k 1))))
                 (draw-game! game)
                 (let ((owed (if (> due steps) 0 (- owed (* steps tick)))))

@@ -2,9 +2,8 @@
 (define-module (downstroke host)
   #:declarative? #f
   #:use-module (system repl repl)
-  #:use-module (system repl server)
-  #:use-module (system repl coop-server)
   #:use-module (downstroke engine)
+  #:use-module (downstroke repl-server)
   #:use-module (downstroke render)
   #:use-module (ice-9 format)
   #:export (main))
@@ -47,30 +46,45 @@
   0)
 
 ;;; ---------------------------------------------------------------- live REPL
-;;; A cooperative REPL server: clients' expressions are evaluated on the
-;;; game's own thread, between frames (a frame hook polls it), so they see
-;;; and change the running game without locks.
+;;; (downstroke repl-server), polled by a frame hook at the start of every
+;;; frame: expressions run on the game's own thread, between two frames.
 
-(define (unix-server-socket path)
-  ;; Only the owner may connect: create the socket under umask 077, so it is
-  ;; never open to others, not even between bind and a chmod.
-  (when (file-exists? path) (delete-file path))
-  (let ((old (umask #o077)))
-    (dynamic-wind
-      (lambda () #t)
-      (lambda ()
-        (let ((socket (make-unix-domain-server-socket #:path path)))
-          (chmod path #o600)
-          socket))
-      (lambda () (umask old)))))
-
-(define (serve-repl! socket)
-  (let ((server (spawn-coop-repl-server socket)))
-    (add-frame-hook! (lambda () (poll-coop-repl-server server)))
+(define (serve-repl! socket timeout)
+  (let ((server (make-repl-server socket #:timeout timeout)))
+    (add-frame-hook! (lambda () (repl-server-poll! server)))
+    ;; A hook's error pauses the game instead of ending the session.
+    (hook-error-reporter
+     (lambda (text)
+       (display text (current-error-port))
+       (force-output (current-error-port))
+       (repl-server-broadcast! server text)))
     (frame-pacing #t)))
 
+(define (open-repl-socket opts)
+  ;; The listening socket the options ask for, #f for none, or 'refused
+  ;; (said on the error port).
+  (let ((path (assq-ref opts 'repl-server))
+        (port (assq-ref opts 'repl-port)))
+    (catch #t
+      (lambda ()
+        (cond (path (open-unix-repl-socket path))
+              (port (open-tcp-repl-socket (string->number port)))
+              (else #f)))
+      (lambda (key . args)
+        (if (eq? key 'system-error)
+            (format (current-error-port) "downstroke: cannot serve the REPL on ~a: ~a~%"
+                    (or path (string-append "127.0.0.1:" port))
+                    (strerror (system-error-errno (cons key args))))
+            (format (current-error-port) "downstroke: ~a~%"
+                    (apply format #f (cadr args) (caddr args))))
+        'refused))))
+
+(define (repl-timeout opts)
+  (let ((v (assq-ref opts 'repl-timeout)))
+    (if v (string->number v) default-repl-timeout)))
+
 (define usage-text
-  "usage: downstroke [OPTION...] [FILE.scm ARGS...]
+  (string-append "usage: downstroke [OPTION...] [FILE.scm ARGS...]
 Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
 
   --window            show the game in a window: real time, keyboard and
@@ -81,8 +95,10 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
                       DIR/NNNNNN.png (NNNNNN: the frame number)
   --repl-server PATH  serve a REPL into the game on a Unix socket (mode 0600)
   --repl-port N       serve it on 127.0.0.1:N instead
+  --repl-timeout S    interrupt a REPL evaluation that holds the game longer
+                      than S seconds (default " (number->string default-repl-timeout) ")
   --help              this text
-")
+"))
 
 (define (usage)
   (display usage-text (current-error-port))
@@ -103,6 +119,8 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
            (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
           ((string=? (car args) "--capture") (with-value 'capture string?))
           ((string=? (car args) "--repl-server") (with-value 'repl-server string?))
+          ((string=? (car args) "--repl-timeout")
+           (with-value 'repl-timeout (lambda (v) (let ((n (string->number v))) (and n (real? n) (< 0 n 1000000))))))
           ((string=? (car args) "--repl-port")
            (with-value 'repl-port (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (< 0 n 65536))))))
           ((string-prefix? "--" (car args)) #f)
@@ -154,10 +172,8 @@ Returns the exit status."
                     (usage))
                    ((null? rest) (run-repl))
                    (else
-                    (let ((path (assq-ref opts 'repl-server))
-                          (port (assq-ref opts 'repl-port)))
-                      (cond (path (serve-repl! (unix-server-socket path)))
-                            ;; loopback only: a REPL is arbitrary code execution
-                            (port (serve-repl! (make-tcp-server-socket #:addr INADDR_LOOPBACK
-                                                                        #:port (string->number port)))))
-                      (run-script (car rest) (cdr rest))))))))))
+                    (let ((socket (open-repl-socket opts)))
+                      (cond ((eq? socket 'refused) 2)
+                            (else
+                             (when socket (serve-repl! socket (repl-timeout opts)))
+                             (run-script (car rest) (cdr rest))))))))))))

@@ -1,6 +1,6 @@
 ;;; The live REPL: run a game under `downstroke --repl-server PATH`, connect to
 ;;; the socket, move an entity from the REPL, and see the running game notice.
-(use-modules (srfi srfi-64) (ice-9 popen) (ice-9 rdelim) (ice-9 textual-ports))
+(use-modules (srfi srfi-64) (ice-9 popen) (ice-9 rdelim) (ice-9 textual-ports) (srfi srfi-1))
 
 (load "support.scm")
 
@@ -42,6 +42,255 @@
 (define port-game (open-pipe* OPEN_READ host "--repl-port" "0" game-script))
 (test-equal "--repl-port 0 is refused (usage)" 2 (status:exit-val (close-pipe port-game)))
 
-(delete-file socket-path)
+;;; ------------------------------------------------------------ the server's bounds
+;;; A game served with a short time limit, driven client by client. Replies
+;;; are read up to the next prompt.
+
+(define served-script (string-append (getenv "DS_TEST_DATA") "/scripts/repl-served.scm"))
+(define served-path (string-append dir "/served.sock"))
+(define prompt "scheme@(guile-user)> ")
+;; The test sends a line too long for the server on purpose: a closed
+;; connection must be an error return here, not the end of the suite.
+(sigaction SIGPIPE SIG_IGN)
+
+(define (read-until port marker)
+  ;; What PORT sends up to and including MARKER, or up to its end, or up to
+  ;; " <no more for 10 s>" should the server fall silent.
+  (let loop ((acc '()) (n 0))
+    (let ((ch (if (or (char-ready? port) (pair? (car (select (list port) '() '() 10))))
+                  (read-char port)
+                  #f)))
+      (cond ((not ch) (string-append (list->string (reverse acc)) " <no more for 10 s>"))
+            ((eof-object? ch) (list->string (reverse acc)))
+            (else
+             (let ((acc (cons ch acc)) (m (string-length marker)))
+               (if (and (>= (+ n 1) m) (string=? marker (list->string (reverse (list-head acc m)))))
+                   (list->string (reverse acc))
+                   (loop acc (+ n 1)))))))))
+
+(define (open-client path)
+  (let ((c (connect-when-ready path 100)))
+    (read-until c prompt)               ; the banner and the first prompt
+    c))
+
+(define (send! c text) (display text c) (newline c) (force-output c))
+
+(define (reply c text)
+  ;; What evaluating TEXT printed, the prompt after it left off.
+  (send! c text)
+  (let ((r (read-until c prompt)))
+    (if (string-suffix? prompt r) (string-drop-right r (string-length prompt)) r)))
+
+;; Guile numbers values ($1, $2 …) across all clients of a process: left out.
+(define (unnumbered r)
+  (if (and (string-prefix? "$" r) (string-contains r " = "))
+      (substring r (+ 3 (string-contains r " = ")))
+      r))
+
+(define (answer c text) (unnumbered (reply c text)))
+
+(define (value c text)
+  ;; The value TEXT evaluates to, from its "$N = VALUE" line.
+  (let* ((r (reply c text)) (at (string-contains r " = ")))
+    (and at (read (open-input-string (substring r (+ at 3)))))))
+
+(define (start-served path . options)
+  (let ((game (apply open-pipe* OPEN_READ host "--repl-server" path (append options (list served-script)))))
+    (read-line game)                    ; "ready"
+    game))
+
+(define (stop-served game client)
+  ;; An update hook that exits ends the game loop: the script's status.
+  (send! client "(game-update-set! game (lambda (g dt) (exit 0)))")
+  (status:exit-val (close-pipe game)))
+
+(define (run-joined . argv)
+  ;; (exit status . everything printed, error port included) of the host run with ARGV.
+  (let* ((cmd (string-append (string-join (map (lambda (a) (string-append "'" a "'")) (cons host argv)) " ")
+                             " 2>&1"))
+         (p (open-pipe* OPEN_READ "/bin/sh" "-c" cmd))
+         (text (get-string-all p)))
+    (cons (status:exit-val (close-pipe p)) text)))
+
+(define served (start-served served-path "--repl-timeout" "0.5"))
+(define m (open-client served-path))
+
+(test-equal "an expression's value" "3\n" (answer m "(+ 1 2)"))
+(test-equal "meta-commands work (,use)" "" (reply m ",use (ice-9 ftw)"))
+
+;;; Connections leave nothing behind.
+(define (fd-count) (value m "(length (scandir \"/proc/self/fd\"))"))
+(define (thread-count) (value m "(length (scandir \"/proc/self/task\"))"))
+(define fds-before (fd-count))
+(define threads-before (thread-count))
+(define answers
+  (map (lambda (i)
+         (let* ((c (open-client served-path)) (r (answer c (format #f "(+ ~a 1)" i))))
+           (close-port c)
+           r))
+       (iota 50)))
+(test-equal "50 connections, one after another, each answered"
+  (map (lambda (i) (format #f "~a\n" (+ i 1))) (iota 50)) answers)
+(reply m "#t")                          ; by now the server saw every close
+(test-equal "their descriptors are closed again" fds-before (fd-count))
+(test-equal "and no thread is left" threads-before (thread-count))
+
+;;; 32 clients waiting at once are all served.
+(define waiting (map (lambda (i) (connect-when-ready served-path 100)) (iota 32)))
+(for-each (lambda (c i) (send! c (format #f "(* 2 ~a)" i))) waiting (iota 32))
+(test-equal "32 simultaneous clients all get their answer"
+  (map (lambda (i) (format #f "~a\n" (* 2 i))) (iota 32))
+  (map (lambda (c) (read-until c prompt) (unnumbered (string-drop-right (read-until c prompt) (string-length prompt))))
+       waiting))
+(for-each close-port waiting)
+
+;;; At most 64 at once: with M, 63 more are served and the next is told so.
+(answer m "#t")                         ; by now the 32 closes were seen
+(define crowd (map (lambda (i) (open-client served-path)) (iota 63)))
+(define one-too-many (connect-when-ready served-path 100))
+(test-equal "a 65th client is told the server is full, and closed"
+  "\ndownstroke: already 64 clients; closing the connection\n"
+  (read-until one-too-many "no such marker"))
+(close-port one-too-many)
+(test-equal "the 64 are served" "64\n" (answer (last crowd) "(+ 63 1)"))
+(for-each close-port crowd)
+(answer m "#t")
+
+;;; An evaluation reading the REPL's input waits for it without holding the game.
+(define reader (open-client served-path))
+(send! reader "(read)")
+(define frame-reading (value m "(game-frame game)"))
+(usleep 100000)
+(test-assert "a client's (read) leaves the game running"
+  (< frame-reading (value m "(game-frame game)")))
+(send! reader "(typed while the game ran)")
+(test-equal "and gets what is typed next" "(typed while the game ran)\n"
+  (unnumbered (string-drop-right (read-until reader prompt) (string-length prompt))))
+(close-port reader)
+
+;;; A runaway evaluation is interrupted; the game and other clients go on.
+(define looper (open-client served-path))
+(define other (open-client served-path))
+(define frame-before (value m "(game-frame game)"))
+(send! looper "(let loop () (loop))")
+(send! other "(+ 40 2)")
+(test-equal "the loop is interrupted after --repl-timeout, with an error to its client"
+  "In procedure repl: evaluation ran past the 0.5 s limit (--repl-timeout): interrupted\n"
+  (string-drop-right (read-until looper prompt) (string-length prompt)))
+(test-equal "a client waiting meanwhile is answered" "42\n"
+  (unnumbered (string-drop-right (read-until other prompt) (string-length prompt))))
+(test-equal "the interrupted client's REPL goes on" "7\n" (answer looper "(+ 3 4)"))
+(define frame-after (value m "(game-frame game)"))
+(usleep 100000)
+(test-assert "the game's frames advance again after the interruption"
+  (< frame-before frame-after (value m "(game-frame game)")))
+(send! looper "(let loop () (catch #t (lambda () (let spin () (spin))) (lambda _ (loop))))")
+(test-equal "an evaluation that catches its interrupt and goes on loses its connection"
+  "\ndownstroke: evaluation still running 0.5 s after its interrupt; closing the connection\n"
+  (read-until looper "no such marker"))
+(close-port looper)
+(test-equal "others are still served" "2\n" (answer other "(+ 1 1)"))
+
+;;; An input line is bounded.
+(define flood (open-client served-path))
+(display (make-string (+ 1 (* 1024 1024)) #\a) flood)
+(force-output flood)
+(test-equal "a line longer than 1 MiB is refused and the connection closed"
+  "\ndownstroke: input line longer than 1048576 bytes discarded; closing the connection\n"
+  (read-until flood "no such marker"))
+(close-port flood)
+(test-equal "the game still serves the others" "5\n" (answer other "(+ 2 3)"))
+
+;;; Output waiting for a client is bounded too.
+(define talker (open-client served-path))
+(send! talker "(display (make-string (* 5 1024 1024) #\\x))")
+(test-equal "an evaluation printing more than 4 MiB loses its connection, told why"
+  "\ndownstroke: more than 4194304 bytes of output unread; closing the connection\n"
+  (read-until talker "no such marker"))
+(close-port talker)
+(test-equal "the game serves on" "9\n" (answer other "(+ 4 5)"))
+
+;;; A hook's error pauses the game; replacing the hook lets it go on.
+(define hook-report
+  (begin (send! m "(game-update-set! game (lambda (g dt) (car '())))")
+         (read-until m "(expecting pair): ()\n")))
+(define failed-frame
+  (let ((at (string-contains hook-report "in frame ")))
+    (and at (read (open-input-string (substring hook-report (+ at 9)))))))
+(test-assert "the error is reported to the client, naming the frame"
+  (and (string-contains hook-report "downstroke: a hook raised an error in frame ")
+       (string-contains hook-report "In procedure car: Wrong type argument in position 1 (expecting pair): ()")
+       (exact-integer? failed-frame)))
+(test-equal "the game is paused on that frame" failed-frame (value m "(game-frame game)"))
+(usleep 100000)
+(test-equal "and stays there" failed-frame (value m "(game-frame game)"))
+(reply m "(game-update-set! game (lambda (g dt) #t))")
+(usleep 100000)
+(test-assert "a fixed hook lets the game continue" (< failed-frame (value m "(game-frame game)")))
+(send! m "(add-frame-hook! (lambda () (error \"frame hook failed\")))")
+(define frame-hook-report (read-until m "frame hook failed\n"))
+(test-assert "a failing frame hook is reported and removed"
+  (string-contains frame-hook-report "downstroke: a frame hook (now removed) raised an error in frame "))
+(define after-frame-hook (value m "(game-frame game)"))
+(usleep 100000)
+(test-assert "and the game goes on" (< after-frame-hook (value m "(game-frame game)")))
+
+;;; The socket path: a live socket, a file that is not one, a stale one.
+(test-equal "a socket a game is serving on is refused"
+  (cons 2 (format #f "downstroke: --repl-server ~a: another server is listening on it\n" served-path))
+  (run-joined "--repl-server" served-path served-script))
+(test-equal "the refused game left the first one's socket working" "2\n"
+  (let* ((c (open-client served-path)) (r (answer c "(+ 1 1)"))) (close-port c) r))
+(test-equal "the served game ends by itself (exit 0)" 0 (stop-served served m))
+(close-port m)
+(close-port other)
+
+(define plain-path (string-append dir "/plain"))
+(call-with-output-file plain-path (lambda (p) (display "keep me" p)))
+(test-equal "a path that exists and is not a socket is refused, naming it"
+  (cons 2 (format #f "downstroke: --repl-server ~a: it exists and is not a socket; left alone\n" plain-path))
+  (run-joined "--repl-server" plain-path served-script))
+(test-equal "and left as it was" "keep me" (call-with-input-file plain-path get-string-all))
+(delete-file plain-path)
+
+(define stale-path (string-append dir "/stale.sock"))
+(let ((s (socket PF_UNIX SOCK_STREAM 0))) (bind s AF_UNIX stale-path) (close-port s))
+(test-equal "a stale socket is there" 'socket (stat:type (stat stale-path)))
+(define stale-game (start-served stale-path))
+(define stale-client (open-client stale-path))
+(test-equal "a stale socket is replaced and served on" "6\n" (answer stale-client "(* 2 3)"))
+(test-equal "that game ends by itself too" 0 (stop-served stale-game stale-client))
+(close-port stale-client)
+(delete-file stale-path)
+
+;;; --repl-port serves the same REPL on 127.0.0.1 (a port some other
+;;; program holds is refused, exit 2: then the next one is tried).
+(define (start-tcp-served tries)
+  (let* ((port (+ 20000 (modulo (+ (getpid) (* 7919 tries)) 20000)))
+         (game (open-pipe* OPEN_READ host "--repl-port" (number->string port) served-script)))
+    (if (string? (read-line game))
+        (cons game port)
+        (begin (close-pipe game) (and (> tries 0) (start-tcp-served (- tries 1)))))))
+(define tcp-game (start-tcp-served 3))
+(define tcp-client
+  (let ((s (socket PF_INET SOCK_STREAM 0)))
+    (connect s AF_INET INADDR_LOOPBACK (cdr tcp-game))
+    (read-until s prompt)
+    s))
+(test-equal "--repl-port serves on loopback" "12\n" (answer tcp-client "(* 3 4)"))
+(test-equal "that game ends by itself as well" 0 (stop-served (car tcp-game) tcp-client))
+(close-port tcp-client)
+
+;;; Options, and the game without a server.
+(test-assert "--help documents --repl-timeout"
+  (string-contains (cdr (run-joined "--help")) "--repl-timeout S"))
+(test-equal "--repl-timeout must be a positive number" 2
+  (car (run-joined "--repl-timeout" "0" "--repl-server" served-path served-script)))
+(define unserved (run-joined (string-append (getenv "DS_TEST_DATA") "/scripts/hook-error.scm")))
+(test-equal "without a server a hook's error still ends the script (status 1)" 1 (car unserved))
+(test-assert "with its message" (string-contains (cdr unserved) "update failed in frame 3"))
+
+(when (file-exists? socket-path) (delete-file socket-path))
+(when (file-exists? served-path) (delete-file served-path))
 (rmdir dir)
 (test-end "repl-server")

@@ -1,0 +1,464 @@
+;;; (downstroke repl-server) — the live REPL into a running game.
+;;;
+;;; Polled once per frame on the game's own thread, so expressions see and
+;;; change the game between two frames without locks. It never blocks and
+;;; keeps no thread per client: each client runs Guile's own REPL (prompts,
+;;; meta-commands, the debugger — what Geiser expects) inside a prompt, and
+;;; when that REPL would wait for input it is suspended (suspendable ports)
+;;; and resumed by a later poll that brought it some. What one client may
+;;; cost is bounded: its input line, its unread output, the time one
+;;; evaluation may hold the game.
+(define-module (downstroke repl-server)
+  #:use-module (system repl repl)
+  #:use-module (system repl common)
+  #:use-module (system repl debug)
+  #:use-module (ice-9 suspendable-ports)
+  #:use-module (rnrs bytevectors)
+  #:use-module (srfi srfi-1)
+  #:use-module (srfi srfi-9)
+  #:export (default-repl-timeout open-unix-repl-socket open-tcp-repl-socket
+            make-repl-server repl-server-poll! repl-server-broadcast!))
+
+;;; ---------------------------------------------------------------- tunables
+
+;; Seconds one evaluation may hold the game before it is interrupted: long
+;; enough for any reasonable expression typed at a game, short enough that
+;; a runaway loop is a hiccup, not a hang (--repl-timeout changes it).
+(define default-repl-timeout 3)
+
+;; Connections the kernel queues until the next frame accepts them: a burst
+;; of editors and scripts connecting at once (the suite checks 32).
+(define *listen-backlog* 64)
+
+;; Clients served at once: each costs three descriptors and its buffers.
+(define *max-clients* 64)
+
+;; The longest input line a client may send: far beyond any form typed or
+;; sent by an editor, and small enough that a runaway sender (a 16 MB string)
+;; cannot make the game hold it in memory.
+(define *max-line-bytes* (* 1024 1024))
+
+;; Bytes read from a client's socket per frame: a fast sender gets 4 MB/s
+;; at 60 frames a second, and a frame's work stays bounded however many
+;; clients send at once.
+(define *recv-chunk-bytes* 65536)
+
+;; Output waiting to be sent to a client — what one evaluation prints (it is
+;; sent between frames) and what the client has not read yet: past it, a
+;; client that stopped reading, or a value far too big to print, is dropped.
+(define *max-output-bytes* (* 4 1024 1024))
+
+;;; ---------------------------------------------------------------- sockets
+
+(define (refuse fmt . args)
+  (scm-error 'misc-error "open-unix-repl-socket" fmt args #f))
+
+(define (socket-live? path)
+  ;; Whether something accepts connections on PATH (else it is stale).
+  (let ((probe (socket PF_UNIX SOCK_STREAM 0)))
+    (catch 'system-error
+      (lambda () (connect probe AF_UNIX path) (close-port probe) #t)
+      (lambda args (close-port probe) #f))))
+
+(define (clear-socket-path! path)
+  ;; Only a stale socket is ever removed: a file of the user's, or a socket
+  ;; another game serves on, is left alone and refused.
+  (let ((st (false-if-exception (lstat path))))
+    (when st
+      (cond ((not (eq? (stat:type st) 'socket))
+             (refuse "--repl-server ~a: it exists and is not a socket; left alone" path))
+            ((socket-live? path)
+             (refuse "--repl-server ~a: another server is listening on it" path))
+            (else (delete-file path))))))
+
+(define (open-unix-repl-socket path)
+  "A listening Unix socket at PATH, mode 0600. PATH may not exist yet or be
+a stale socket; anything else there is refused (a 'misc-error naming PATH)."
+  (clear-socket-path! path)
+  ;; Created under umask 077, so it is never open to others, not even
+  ;; between bind and chmod.
+  (let ((old (umask #o077))
+        (sock (socket PF_UNIX SOCK_STREAM 0)))
+    (dynamic-wind
+      (lambda () #t)
+      (lambda () (bind sock AF_UNIX path) (chmod path #o600))
+      (lambda () (umask old)))
+    sock))
+
+(define (open-tcp-repl-socket port)
+  "A listening TCP socket on 127.0.0.1:PORT: loopback only, since a REPL is
+arbitrary code execution."
+  (let ((sock (socket PF_INET SOCK_STREAM 0)))
+    (setsockopt sock SOL_SOCKET SO_REUSEADDR 1)
+    (bind sock AF_INET INADDR_LOOPBACK port)
+    sock))
+
+(define (non-blocking! port)
+  (fcntl port F_SETFL (logior O_NONBLOCK (fcntl port F_GETFL))))
+
+;;; ---------------------------------------------------------------- clients
+;;; Input goes socket → our staging (where the line bound is kept) → one end
+;;; of a socket pair → the REPL, which reads the other end; output goes the
+;;; REPL → a soft port into OUTBOX → the socket. The game writes and reads
+;;; only what the kernel takes at once.
+
+(define-record-type <client>
+  (%make-client sock feed in out)
+  client?
+  (sock client-sock)                          ; the connection
+  (feed client-feed)                          ; our end of the pair
+  (in client-in)                              ; the REPL's end
+  (out client-out set-client-out!)            ; the REPL's output port
+  (partial client-partial set-client-partial!)   ; the unfinished line, reversed pieces
+  (partial-bytes client-partial-bytes set-client-partial-bytes!)
+  (ready client-ready set-client-ready!)      ; whole lines not yet fed, in order
+  (ready-bytes client-ready-bytes set-client-ready-bytes!)
+  (outbox client-outbox set-client-outbox!)   ; bytevectors not yet sent, newest first
+  (outbox-bytes client-outbox-bytes set-client-outbox-bytes!)
+  (cont client-cont set-client-cont!)         ; the suspended REPL, or #f
+  (eof? client-eof? set-client-eof!)          ; the client sent all it will send
+  (closing client-closing set-client-closing!)) ; #f, or why it is dropped
+
+(define (make-client sock)
+  (let* ((pair (socketpair PF_UNIX SOCK_STREAM 0))
+         (c (%make-client sock (car pair) (cdr pair) #f)))
+    (for-each non-blocking! (list sock (car pair) (cdr pair)))
+    (set-port-encoding! (cdr pair) "UTF-8")
+    (set-client-partial! c '()) (set-client-partial-bytes! c 0)
+    (set-client-ready! c '()) (set-client-ready-bytes! c 0)
+    (set-client-outbox! c '()) (set-client-outbox-bytes! c 0)
+    (set-client-cont! c #f) (set-client-eof! c #f) (set-client-closing! c #f)
+    (set-client-out! c (output-port-for c))
+    c))
+
+(define (queue-output! c bv)
+  ;; OUTBOX is newest first: a printing loop queues in constant time.
+  (set-client-outbox! c (cons bv (client-outbox c)))
+  (set-client-outbox-bytes! c (+ (client-outbox-bytes c) (bytevector-length bv))))
+
+(define (output-port-for c)
+  ;; Writing never blocks: a client that does not read fills its outbox up
+  ;; to the bound, and is then dropped with the rest unsent.
+  (define (put-string s)
+    (cond ((client-closing c) #t)
+          ((> (+ (client-outbox-bytes c) (string-length s)) *max-output-bytes*)
+           ;; what is unsent goes, and only the reason is still said
+           (set-client-outbox! c '()) (set-client-outbox-bytes! c 0)
+           (queue-output! c (string->utf8 (format #f "~%downstroke: more than ~a bytes of output unread; closing the connection~%" *max-output-bytes*)))
+           (set-client-closing! c "output unread"))
+          (else (queue-output! c (string->utf8 s)))))
+  (let ((port (make-soft-port (vector (lambda (ch) (put-string (string ch))) put-string
+                                      (lambda () #t) (lambda () #f) (lambda () #t))
+                              "w")))
+    (set-port-encoding! port "UTF-8")
+    port))
+
+(define (say! c text)
+  ;; A message of the server's own, after whatever the REPL printed.
+  (force-output (client-out c))
+  (queue-output! c (string->utf8 text)))
+
+(define (drop! c why)
+  ;; Output still unsent goes: the reason is what the client gets next.
+  (unless (client-closing c)
+    (force-output (client-out c))
+    (set-client-outbox! c '()) (set-client-outbox-bytes! c 0)
+    (say! c (format #f "~%downstroke: ~a; closing the connection~%" why))
+    (set-client-closing! c why))
+  (set-client-cont! c #f))
+
+(define (close-client! c)
+  (for-each (lambda (p) (false-if-exception (close-port p)))
+            (list (client-sock c) (client-feed c) (client-in c) (client-out c))))
+
+;;; ---------------------------------------------------------------- input
+
+(define (last-newline bv n)
+  (let loop ((i (- n 1)))
+    (cond ((< i 0) #f)
+          ((= (bytevector-u8-ref bv i) 10) i)
+          (else (loop (- i 1))))))
+
+(define (first-newline bv n)
+  (let loop ((i 0))
+    (cond ((= i n) #f)
+          ((= (bytevector-u8-ref bv i) 10) i)
+          (else (loop (+ i 1))))))
+
+(define (sub bv start end)
+  (let ((out (make-bytevector (- end start))))
+    (bytevector-copy! bv start out 0 (- end start))
+    out))
+
+(define (stage-chunk! c bv n)
+  ;; Whole lines become ready to feed; the unfinished rest waits, bounded.
+  (let ((first (first-newline bv n)))
+    (if (> (+ (client-partial-bytes c) (or first n)) *max-line-bytes*)
+        (begin (set-client-partial! c '()) (set-client-partial-bytes! c 0)
+               (drop! c (format #f "input line longer than ~a bytes discarded" *max-line-bytes*)))
+        (let ((last (last-newline bv n)))
+          (if (not last)
+              (begin (set-client-partial! c (cons (sub bv 0 n) (client-partial c)))
+                     (set-client-partial-bytes! c (+ (client-partial-bytes c) n)))
+              (let ((lines (apply bytevector-append
+                                  (reverse (cons (sub bv 0 (+ last 1)) (client-partial c))))))
+                (set-client-ready! c (append (client-ready c) (list lines)))
+                (set-client-ready-bytes! c (+ (client-ready-bytes c) (bytevector-length lines)))
+                (set-client-partial! c (list (sub bv (+ last 1) n)))
+                (set-client-partial-bytes! c (- n last 1))))))))
+
+(define (bytevector-append . bvs)
+  (let ((out (make-bytevector (apply + (map bytevector-length bvs)))))
+    (let loop ((bvs bvs) (at 0))
+      (unless (null? bvs)
+        (bytevector-copy! (car bvs) 0 out at (bytevector-length (car bvs)))
+        (loop (cdr bvs) (+ at (bytevector-length (car bvs))))))
+    out))
+
+(define (receive! c)
+  ;; What the socket has; end of input once the client has shut its side.
+  (let* ((bv (make-bytevector *recv-chunk-bytes*))
+         (n (catch 'system-error (lambda () (recv! (client-sock c) bv)) (lambda _ 0))))
+    (if (zero? n)
+        (set-client-eof! c #t)
+        (stage-chunk! c bv n))))
+
+(define (send-some port bv)
+  ;; How many bytes of BV the kernel took now (0 when it would block); #f
+  ;; when the other side is gone.
+  (catch 'system-error
+    (lambda () (send port bv))
+    (lambda args
+      (let ((errno (system-error-errno args)))
+        (and (or (= errno EAGAIN) (= errno EWOULDBLOCK) (= errno EINTR)) 0)))))
+
+(define (feed! c)
+  ;; Ready lines into the REPL's end, as far as the pair takes them now.
+  ;; #t when something new reached the REPL.
+  (let loop ((fed? #f))
+    (if (null? (client-ready c))
+        (begin
+          (when (and (client-eof? c) (pair? (client-partial c)))
+            ;; the last line had no newline: it is whole now
+            (set-client-ready! c (list (apply bytevector-append (reverse (client-partial c)))))
+            (set-client-partial! c '()) (set-client-partial-bytes! c 0))
+          (if (null? (client-ready c)) fed? (loop fed?)))
+        (let* ((bv (car (client-ready c)))
+               (sent (or (send-some (client-feed c) bv) 0)))
+          (set-client-ready-bytes! c (- (client-ready-bytes c) sent))
+          (cond ((= sent (bytevector-length bv))
+                 (set-client-ready! c (cdr (client-ready c)))
+                 (loop #t))
+                (else
+                 (when (> sent 0)
+                   (set-client-ready! c (cons (sub bv sent (bytevector-length bv)) (cdr (client-ready c)))))
+                 (or fed? (> sent 0))))))))
+
+(define (end-input! c)
+  ;; Everything the client sent has been fed: the REPL reads end-of-file.
+  (false-if-exception (shutdown (client-feed c) 1)))
+
+;;; ---------------------------------------------------------------- output
+
+(define (flush! c)
+  ;; Send what the client's socket takes now: how many bytes went, or #f
+  ;; once the client is gone.
+  (force-output (client-out c))
+  (let loop ((bvs (reverse (client-outbox c))) (total 0))
+    (define (keep! rest)
+      (set-client-outbox! c (reverse rest))
+      (set-client-outbox-bytes! c (- (client-outbox-bytes c) total))
+      total)
+    (if (null? bvs)
+        (keep! '())
+        (let* ((bv (car bvs))
+               (sent (send-some (client-sock c) bv)))
+          (cond ((not sent) #f)
+                ((= sent (bytevector-length bv)) (loop (cdr bvs) (+ total sent)))
+                (else
+                 (set! total (+ total sent))
+                 (keep! (cons (sub bv sent (bytevector-length bv)) (cdr bvs)))))))))
+
+;;; ---------------------------------------------------------------- the REPL
+;;; A client's REPL runs in slices: from a resume until it waits for input
+;;; again (or ends). Only during a slice are the ports suspendable and the
+;;; time limit armed.
+
+(define repl-tag (make-prompt-tag "downstroke-repl"))
+
+(define *active* #f)                 ; the client whose slice runs, or #f
+(define *timeout* default-repl-timeout)
+(define *strikes* 0)                 ; timer expiries in this slice's evaluation
+
+(define (seconds->timer s)
+  (let ((us (inexact->exact (round (* s 1000000)))))
+    (values (quotient us 1000000) (remainder us 1000000))))
+
+(define (arm-timer!)
+  ;; Expires after the limit, then every limit again: the first expiry
+  ;; interrupts the evaluation with an error, a second one (the error was
+  ;; caught and the loop went on) drops the client.
+  (set! *strikes* 0)
+  (call-with-values (lambda () (seconds->timer *timeout*))
+    (lambda (s us) (setitimer ITIMER_REAL s us s us))))
+
+(define (disarm-timer!) (setitimer ITIMER_REAL 0 0 0 0))
+
+(define (on-alarm signal)
+  (when *active*
+    (set! *strikes* (+ *strikes* 1))
+    (if (= *strikes* 1)
+        (scm-error 'misc-error "repl"
+                   "evaluation ran past the ~a s limit (--repl-timeout): interrupted"
+                   (list *timeout*) #f)
+        (abort-to-prompt repl-tag 'runaway))))
+
+(define (on-read)
+  ;; Each new prompt starts a new evaluation's time.
+  (when *active* (arm-timer!)))
+
+(define (client-repl c module)
+  (lambda ()
+    (parameterize ((current-input-port (client-in c))
+                   (current-output-port (client-out c))
+                   (current-error-port (client-out c))
+                   (current-warning-port (client-out c))
+                   (current-read-waiter (lambda (port) (abort-to-prompt repl-tag 'read))))
+      (with-fluids ((*repl-stack* '()))
+        (save-module-excursion
+         (lambda ()
+           (set-current-module module)
+           (run-repl (served-repl))))))
+    #t))
+
+(define (served-repl)
+  ;; Guile's REPL, but an error reports its backtrace and returns to the
+  ;; prompt instead of entering the debugger: errors raised in C (most of
+  ;; them) leave C frames under the debugger's prompt, and a REPL waiting
+  ;; there for input could never be suspended and resumed.
+  (let ((repl (make-repl (current-language))))
+    ;; call-with-error-handling takes a procedure, but the option's checker
+    ;; knows only the symbols: set it past the checker.
+    (set-car! (cdr (assq 'on-error (repl-options repl))) report-error)
+    repl))
+
+(define (report-error key . args)
+  ;; As Guile's 'backtrace: the failed evaluation's frames, then the error.
+  ;; A timeout's frames are the signal's, and Guile cannot print them.
+  (let ((port (current-error-port)))
+    (when (zero? *strikes*)
+      (let ((tag (and (pair? (fluid-ref %stacks)) (cdr (fluid-ref %stacks)))))
+        (print-frames (narrow-stack->vector (make-stack #t) 3 tag 0 (and tag 1)) port)))
+    (print-exception port #f key args)))
+
+(define (run-slice! c thunk)
+  ;; Runs THUNK (a REPL start or resume) until it suspends or ends.
+  (dynamic-wind
+    (lambda () (set! *active* c) (install-suspendable-ports!) (arm-timer!))
+    (lambda ()
+      (let ((ended? (catch #t
+                      (lambda ()
+                        (with-continuation-barrier
+                         (lambda ()
+                           (call-with-prompt repl-tag thunk
+                             (lambda (k why)
+                               (if (eq? why 'read)
+                                   (set-client-cont! c k)
+                                   (drop! c (format #f "evaluation still running ~a s after its interrupt" *timeout*)))
+                               #f)))))
+                      (lambda (key . args)
+                        (drop! c (format #f "REPL failed: ~a ~s" key args))
+                        #f))))
+        (when ended? (set-client-cont! c #f) (set-client-closing! c (or (client-closing c) "ended")))))
+    (lambda () (disarm-timer!) (uninstall-suspendable-ports!) (set! *active* #f))))
+
+(define (resume! c)
+  (let ((k (client-cont c)))
+    (set-client-cont! c #f)
+    (run-slice! c (lambda () (k)))))
+
+;;; ---------------------------------------------------------------- the server
+
+(define-record-type <repl-server>
+  (%make-repl-server socket module clients)
+  repl-server?
+  (socket server-socket)
+  (module server-module)
+  (clients server-clients set-server-clients!))
+
+(define* (make-repl-server socket #:key (module (resolve-module '(guile-user)))
+                           (timeout default-repl-timeout))
+  "Serve a REPL on SOCKET (bound, not yet listening) into MODULE; each
+evaluation may hold the game TIMEOUT seconds. Call repl-server-poll! once
+per frame."
+  (set! *timeout* timeout)
+  (non-blocking! socket)
+  (listen socket *listen-backlog*)
+  ;; A client that hangs up must cost an error return, not the process.
+  (sigaction SIGPIPE SIG_IGN)
+  (sigaction SIGALRM on-alarm)
+  (add-hook! before-read-hook on-read)
+  (%make-repl-server socket module '()))
+
+(define (accept-all! server)
+  (let loop ()
+    (let ((conn (catch 'system-error (lambda () (accept (server-socket server))) (lambda _ #f))))
+      (when conn
+        (let ((c (make-client (car conn))))
+          (if (>= (length (server-clients server)) *max-clients*)
+              (begin (drop! c (format #f "already ~a clients" *max-clients*))
+                     (flush! c) (close-client! c))
+              (begin
+                (set-server-clients! server (append (server-clients server) (list c)))
+                (run-slice! c (client-repl c (server-module server))))))
+        (loop)))))
+
+(define (readable-sockets clients)
+  ;; Clients with room in their staging whose sockets have input (or EOF).
+  (let ((wanted (filter (lambda (c) (and (not (client-eof? c)) (not (client-closing c))
+                                         (< (client-ready-bytes c) *max-line-bytes*)))
+                        clients)))
+    (if (null? wanted)
+        '()
+        (car (select (map client-sock wanted) '() '() 0)))))
+
+(define (serve-client! c readable)
+  (when (memq (client-sock c) readable) (receive! c))
+  (unless (client-closing c) (serve-input! c)))
+
+(define (serve-input! c)
+  (when (and (feed! c) (client-cont c)) (resume! c))
+  (when (and (client-eof? c) (null? (client-ready c)) (client-cont c))
+    (end-input! c)
+    (resume! c)))
+
+(define (still-open? c)
+  ;; #f once the client is closed: it is gone, or its REPL ended or it was
+  ;; dropped and its last output went out (or stopped going out).
+  (let ((sent (flush! c)))
+    (if (or (not sent)
+            (and (client-closing c) (or (null? (client-outbox c)) (zero? sent))))
+        (begin (close-client! c) #f)
+        #t)))
+
+(define *polling* #f)
+
+(define (repl-server-poll! server)
+  "Accept new clients, read what clients sent, evaluate it, send the
+replies — without ever waiting. Call it from the game's thread."
+  ;; A client running a game loop of its own (game-run! on a new game)
+  ;; polls again from inside its evaluation: that inner poll does nothing.
+  (unless *polling*
+    (dynamic-wind
+      (lambda () (set! *polling* #t))
+      (lambda ()
+        (accept-all! server)
+        (let* ((clients (server-clients server))
+               (readable (readable-sockets clients)))
+          (for-each (lambda (c) (serve-client! c readable)) clients)
+          (set-server-clients! server (filter still-open? clients))))
+      (lambda () (set! *polling* #f)))))
+
+(define (repl-server-broadcast! server text)
+  "Show TEXT to every connected client (a game's error, say)."
+  (for-each (lambda (c) (say! c text)) (server-clients server)))
