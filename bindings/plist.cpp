@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "cons.hpp"
+#include "list_walk.hpp"
 #include "scm_number.hpp"
 
 namespace ds::guile {
@@ -38,7 +39,12 @@ bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
 bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
     mask = 0;
     SCM p = list;
+    Tortoise<1> tortoise(list);
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
+        if (tortoise.caught(p)) {
+            fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got a circular list ~S");
+            return false;
+        }
         SCM sym = SCM_CAR(p);
         if (!scm_is_symbol(sym)) {
             fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
@@ -154,6 +160,7 @@ int64_t identity_tag(SCM v) {
 bool decode_entity(SCM plist, Decoded& d, Failure& f) {
     d = Decoded{};
     SCM p = plist;
+    Tortoise<2> tortoise(plist);
     for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p))) {
         SCM key = SCM_CAR(p);
         const uint8_t k = keys->lookup(key);  // a physics key is a keyword: no need to ask
@@ -163,6 +170,10 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
         }
         if (!scm_is_pair(SCM_CDR(p))) {
             fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: key ~S has no value in ~S");
+            return false;
+        }
+        if (tortoise.caught(p)) {
+            fail_circular(f, "malformed entity", "a keyword plist", plist);
             return false;
         }
         if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) continue;  // first occurrence wins
