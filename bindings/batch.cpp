@@ -48,7 +48,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.hit.clear();
     size_t i = 0;
     SCM p = entities;
-    Tortoise<1> tortoise(entities);
+    Tortoise tortoise;
     for (; scm_is_pair(p); p = SCM_CDR(p), ++i) {
         if (tortoise.caught(p)) {
             fail_circular(f, "entities", "a list of entities", entities);

@@ -19,7 +19,7 @@ SCM scene_hash_entities(SCM entities) {
         StateHash h;
         Decoded d;
         SCM p = entities;
-        Tortoise<1> tortoise(entities);
+        Tortoise tortoise;
         for (; scm_is_pair(p) && !f; p = SCM_CDR(p))
             if (tortoise.caught(p)) fail_circular(f, "entities", "a list of entities", entities);
             else if (decode_entity(SCM_CAR(p), d, f)) h.add(d.body);

@@ -1,10 +1,12 @@
 // Native walks over Scheme lists that cannot hang on a circular one.
-// Floyd's tortoise and hare: the walk itself is the hare, and a Tortoise
-// follows it at half speed. On a list that ends, the hare is always ahead
-// of the tortoise; on a circular one, both end up going round the cycle and
-// the hare, gaining one step every second step, lands on the tortoise
-// within (cells before the cycle + cycle length) steps of the tortoise.
-// The cost is one comparison (and every second step one cdr) per step.
+// Brent's variant of Floyd's tortoise and hare: the walk itself is the
+// hare, and the tortoise waits on a cell the hare passed, moving up to it
+// after waits of 2, 4, 8, … steps (at x₀, x₂, x₆, x₁₄, …, the head being
+// x₀). On a list that ends every cell is new, so the hare never lands on the
+// tortoise. On a circular one (μ cells before a cycle of λ) it does once the
+// tortoise sits in the cycle and waits at least λ steps: within
+// 3·(μ + λ) + 4 steps. Unlike Floyd's, the tortoise never walks by itself
+// (no second cdr, no unchecked cell): one comparison and one count a step.
 #pragma once
 #include <libguile.h>
 
@@ -14,33 +16,24 @@
 
 namespace ds::guile {
 
-// Stride: the cells one step of the walk moves: 1 for a list, 2 for a plist
-// walked key by key.
-template <int Stride>
 class Tortoise {
-    static_assert(Stride == 1 || Stride == 2);
-
 public:
-    explicit Tortoise(SCM head) : at_(head) {}
-
-    // Call with every cell the walk reaches, the head included (x₀, x₁, …,
-    // each x a pair the walk has checked). True when the list is circular:
-    // at step i (even, ≥ 2) the tortoise is at x_{i/2}, and x_{i/2} = x_i
-    // happens exactly when the cells repeat. It only steps on cells the hare
-    // has already checked.
+    // Call with every cell of the walk in order, the head first. True when
+    // the hare has come back to the tortoise's cell: the list is circular.
     bool caught(SCM hare) {
-        const uint64_t i = steps_++;
-        if (i == 0 || (i & 1) != 0) return false;
-        at_ = Stride == 1 ? SCM_CDR(at_) : SCM_CDR(SCM_CDR(at_));
-        return scm_is_eq(at_, hare);
+        if (scm_is_eq(hare, at_)) [[unlikely]]
+            return true;
+        ++steps_;
+        if ((steps_ & (steps_ + 1)) == 0) at_ = hare;  // after 1, 3, 7, 15, … calls
+        return false;
     }
 
 private:
-    SCM at_;  // on the stack, which the collector scans
-    uint64_t steps_ = 0;
+    SCM at_ = SCM_UNDEFINED;  // no pair; on the stack, which the collector scans
+    uint64_t steps_ = 0;      // calls so far
 };
 
-static_assert(survives_longjmp<Tortoise<1>, Tortoise<2>>);
+static_assert(survives_longjmp<Tortoise>);
 
 // Records "<what>: expected <expected>, got a circular list ~S" (irritant
 // list; Guile's printer marks the cycle instead of looping).

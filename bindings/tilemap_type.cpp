@@ -35,7 +35,7 @@ bool check_map(SCM obj, const char* proc, Failure& f) {
 
 bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f) {
     SCM p = list;
-    Tortoise<1> tortoise(list);
+    Tortoise tortoise;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
         if (tortoise.caught(p)) {
             fail_circular(f, what, "a list of gids", list);
