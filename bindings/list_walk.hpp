@@ -10,6 +10,7 @@
 #pragma once
 #include <libguile.h>
 
+#include <cstddef>
 #include <cstdint>
 
 #include "failure.hpp"
@@ -34,6 +35,27 @@ private:
 };
 
 static_assert(survives_longjmp<Tortoise>);
+
+// How far a hot walk may go before it asks circular() once: ordinary
+// plists and #:skip-pipelines lists are far shorter, so they never pay even
+// for a tortoise (the plist walk is bound by memory latency, where any state
+// carried in the loop showed), and a circular list always gets there.
+constexpr size_t kStepsBeforeCycleCheck = 64;
+
+// Whether a list (Stride 1) or a plist walked key by key (Stride 2) is
+// circular: one walk with a Tortoise, out of line as hot walks seldom call it.
+template <int Stride>
+[[gnu::cold, gnu::noinline]] bool circular(SCM list) {
+    Tortoise tortoise;
+    for (SCM p = list; scm_is_pair(p); p = SCM_CDR(p)) {
+        if (tortoise.caught(p)) return true;
+        if constexpr (Stride == 2) {
+            p = SCM_CDR(p);
+            if (!scm_is_pair(p)) return false;
+        }
+    }
+    return false;
+}
 
 // Records "<what>: expected <expected>, got a circular list ~S" (irritant
 // list; Guile's printer marks the cycle instead of looping).

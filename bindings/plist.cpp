@@ -39,9 +39,9 @@ bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
 bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
     mask = 0;
     SCM p = list;
-    Tortoise tortoise;
+    size_t walked = 0;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
-        if (tortoise.caught(p)) {
+        if (++walked == kStepsBeforeCycleCheck && circular<1>(list)) [[unlikely]] {
             fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got a circular list ~S");
             return false;
         }
@@ -157,25 +157,6 @@ int64_t identity_tag(SCM v) {
     return tag;
 }
 
-namespace {
-
-// The entries decode_entity passes over (unknown keys, later occurrences)
-// before it checks whether the plist is circular. A circular plist has only
-// finitely many first occurrences of physics keys, and then only such
-// entries, so it reaches this count; an entity with fewer of them, as every
-// ordinary one, never pays for the check. The check is one walk with a
-// Tortoise, once per plist.
-constexpr size_t kEntriesBeforeCycleCheck = 64;
-
-[[gnu::cold, gnu::noinline]] bool circular_plist(SCM plist) {
-    Tortoise tortoise;
-    for (SCM p = plist; scm_is_pair(p) && scm_is_pair(SCM_CDR(p)); p = SCM_CDR(SCM_CDR(p)))
-        if (tortoise.caught(p)) return true;
-    return false;
-}
-
-}  // namespace
-
 bool decode_entity(SCM plist, Decoded& d, Failure& f) {
     d = Decoded{};
     SCM p = plist;
@@ -192,7 +173,9 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             return false;
         }
         if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) {  // first occurrence wins
-            if (++passed == kEntriesBeforeCycleCheck && circular_plist(plist)) [[unlikely]] {
+            // A circular plist has finitely many first occurrences of physics
+            // keys, then only entries like this one: it always gets here.
+            if (++passed == kStepsBeforeCycleCheck && circular<2>(plist)) [[unlikely]] {
                 fail_circular(f, "malformed entity", "a keyword plist", plist);
                 return false;
             }

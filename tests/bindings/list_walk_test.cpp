@@ -1,4 +1,4 @@
-// The Tortoise of list_walk.hpp: never a false alarm on a list that ends,
+// The Tortoise and circular() of list_walk.hpp: never a false alarm on a list that ends,
 // and a circular one caught within the bound its header promises.
 #include <doctest/doctest.h>
 #include <libguile.h>
@@ -48,6 +48,15 @@ TEST_SUITE("list-walk") {
                 CAPTURE(lambda);
                 CHECK(n >= mu + lambda);  // the hare must have gone round once
                 CHECK(n <= bound);
+            }
+    }
+    TEST_CASE("circular<1> and circular<2> tell lassos from lists, whatever the cycle's parity") {
+        for (int mu = 0; mu <= 9; ++mu)
+            for (int lambda = 0; lambda <= 9; ++lambda) {
+                CAPTURE(mu);
+                CAPTURE(lambda);
+                CHECK(ds::guile::circular<1>(lasso(mu, lambda)) == (lambda > 0));
+                CHECK(ds::guile::circular<2>(lasso(mu, lambda)) == (lambda > 0));
             }
     }
 }

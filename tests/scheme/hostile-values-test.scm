@@ -125,6 +125,11 @@
             (lambda () (apply-gravity (list #:gravity? #t #:skip-pipelines (circular 'velocity-x)) #f 16))
             "apply-gravity" "#:skip-pipelines" "circular list"))
 
+(test-equal "a long proper #:skip-pipelines (past the check) still skips" '(#:gravity? #t #:vy 0)
+  (list-head (apply-gravity (list #:gravity? #t #:vy 0 #:skip-pipelines (append (make-list 100 'jump) '(gravity))) #f 16) 4))
+(test-equal "a long proper #:skip-pipelines without gravity still falls" 1
+  (entity-ref (apply-gravity (list #:gravity? #t #:vy 0 #:skip-pipelines (make-list 100 'jump)) #f 16) #:vy))
+
 ;;; ---------------------------------------------------------------- circular entity lists
 (define scene-with (@@ (downstroke world) %scene-with-entities))
 (test-assert "resolve-entity-collisions, a circular entity list"
