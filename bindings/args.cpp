@@ -21,7 +21,12 @@ bool substeps_from_scm(SCM k, int& out, Failure& f) {
 }
 
 bool dt_from_scm(SCM dt, double& out, Failure& f) {
-    return from_scm(dt, out, "dt", f, "a finite number of milliseconds");
+    // Time runs forwards: a negative dt would run tweens backwards.
+    constexpr const char* what = "a finite number of milliseconds ≥ 0";
+    if (!from_scm(dt, out, "dt", f, what)) return false;
+    if (out >= 0) return true;
+    fail_arg(f, "dt", dt, "%s", what);
+    return false;
 }
 
 }  // namespace ds::guile

@@ -13,7 +13,7 @@ bool mode_from_scm(SCM mode, CollisionMode& out, Failure& f);
 // Sub-frames per frame: unbound means 1; else an exact integer in
 // [1, kMaxSubsteps] (constants.hpp says why).
 bool substeps_from_scm(SCM k, int& out, Failure& f);
-// A finite real number of milliseconds.
+// A finite real number of milliseconds, ≥ 0 (-0.0 included).
 bool dt_from_scm(SCM dt, double& out, Failure& f);
 
 }  // namespace ds::guile

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cons.hpp"
+#include "list_walk.hpp"
 #include "plist.hpp"
 
 namespace ds::guile {
@@ -47,7 +48,12 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.hit.clear();
     size_t i = 0;
     SCM p = entities;
+    Tortoise tortoise;
     for (; scm_is_pair(p); p = SCM_CDR(p), ++i) {
+        if (tortoise.caught(p)) {
+            fail_circular(f, "entities", "a list of entities", entities);
+            return false;
+        }
         SCM e = SCM_CAR(p);
         reserve_cache(batch, i + 1);
         CachedEntity& c = batch.cached[i];

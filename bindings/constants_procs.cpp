@@ -4,6 +4,7 @@
 
 #include "constants.hpp"
 #include "registry.hpp"
+#include "tween_step.hpp"
 
 namespace ds::guile {
 
@@ -29,6 +30,8 @@ void register_constants() {
     define_constant("%jump-force", exact<kJumpForce>());
     define_constant("%on-solid-tolerance", exact<kOnSolidTolerance>());
     define_constant("%max-substeps", exact<kMaxSubsteps>());
+    define_constant("%max-tween-repeat", exact<kMaxTweenRepeat>());
+    define_constant("%max-tween-props", exact<kMaxTweenProps>());
 }
 
 }  // namespace ds::guile

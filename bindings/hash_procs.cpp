@@ -1,5 +1,6 @@
 // scene-hash's native half: the physical state of an entity list, hashed
 // by the core (state_hash.hpp) so that Scheme and C++ agree on the bytes.
+#include "list_walk.hpp"
 #include "plist.hpp"
 #include "registry.hpp"
 #include "state_hash.hpp"
@@ -18,8 +19,10 @@ SCM scene_hash_entities(SCM entities) {
         StateHash h;
         Decoded d;
         SCM p = entities;
+        Tortoise tortoise;
         for (; scm_is_pair(p) && !f; p = SCM_CDR(p))
-            if (decode_entity(SCM_CAR(p), d, f)) h.add(d.body);
+            if (tortoise.caught(p)) fail_circular(f, "entities", "a list of entities", entities);
+            else if (decode_entity(SCM_CAR(p), d, f)) h.add(d.body);
         if (!f && !scm_is_null(p))
             fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");
         hash = h.value();

@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "cons.hpp"
+#include "list_walk.hpp"
 #include "scm_number.hpp"
 
 namespace ds::guile {
@@ -38,7 +39,12 @@ bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
 bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
     mask = 0;
     SCM p = list;
+    size_t walked = 0;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
+        if (++walked == kStepsBeforeCycleCheck && circular<1>(list)) [[unlikely]] {
+            fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got a circular list ~S");
+            return false;
+        }
         SCM sym = SCM_CAR(p);
         if (!scm_is_symbol(sym)) {
             fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
@@ -154,6 +160,7 @@ int64_t identity_tag(SCM v) {
 bool decode_entity(SCM plist, Decoded& d, Failure& f) {
     d = Decoded{};
     SCM p = plist;
+    size_t passed = 0;
     for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p))) {
         SCM key = SCM_CAR(p);
         const uint8_t k = keys->lookup(key);  // a physics key is a keyword: no need to ask
@@ -165,7 +172,15 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: key ~S has no value in ~S");
             return false;
         }
-        if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) continue;  // first occurrence wins
+        if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) {  // first occurrence wins
+            // A circular plist has finitely many first occurrences of physics
+            // keys, then only entries like this one: it always gets here.
+            if (++passed == kStepsBeforeCycleCheck && circular<2>(plist)) [[unlikely]] {
+                fail_circular(f, "malformed entity", "a keyword plist", plist);
+                return false;
+            }
+            continue;
+        }
         d.present |= 1u << k;
         if (!decode_value(k, key, SCM_CAR(SCM_CDR(p)), d, f)) return false;
     }

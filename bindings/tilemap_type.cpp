@@ -7,6 +7,7 @@
 
 #include "convert.hpp"
 #include "failure.hpp"
+#include "list_walk.hpp"
 #include "registry.hpp"
 
 namespace ds::guile {
@@ -34,7 +35,12 @@ bool check_map(SCM obj, const char* proc, Failure& f) {
 
 bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f) {
     SCM p = list;
+    Tortoise tortoise;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
+        if (tortoise.caught(p)) {
+            fail_circular(f, what, "a list of gids", list);
+            return false;
+        }
         SCM g = SCM_CAR(p);
         if (!scm_is_unsigned_integer(g, 0, kGidMask)) {
             fail(f, "wrong-type-arg", scm_list_2(g, list), "%s: expected gids (exact integers ≥ 0), got ~S in ~S", what);

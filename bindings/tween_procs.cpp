@@ -96,6 +96,17 @@ SCM register_tween_type(SCM rtd) {
     return SCM_UNSPECIFIED;
 }
 
+// What on-complete returned looks like an entity (a keyword first): it
+// replaces the entity only if it is a whole one, so that a circular or
+// improper list is refused here, naming on-complete, rather than later.
+bool completed_entity(SCM r, Failure& f) {
+    Failure bad{f.proc};
+    Decoded check;
+    if (decode_entity(r, check, bad)) return true;
+    fail(f, bad.key, bad.irritants, "tween on-complete returned a bad entity: %s", bad.message);
+    return false;
+}
+
 SCM step_tweens_1(SCM entity, SCM dt) {
     Failure f{"step-tweens"};
     double d = 0;
@@ -144,7 +155,10 @@ SCM advance_entity_tween(SCM entity, double dt, Failure& f) {
     SCM on_complete = field(tween, kOnComplete);
     if (phase.finished && scm_is_true(scm_procedure_p(on_complete))) {
         SCM r = scm_call_1(on_complete, result);
-        if (scm_is_pair(r) && scm_is_keyword(SCM_CAR(r))) result = r;
+        if (scm_is_pair(r) && scm_is_keyword(SCM_CAR(r))) {
+            if (!completed_entity(r, f)) return entity;
+            result = r;
+        }
     }
     return result;
 }

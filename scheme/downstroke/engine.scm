@@ -112,6 +112,15 @@ default-input-map, which is used when it is #f."
                            (list name v) #f)))
             '(width height) (list width height))
   (check-substeps "make-game" substeps)
+  ;; dt is frame-delay ms, and the window's clock divides by it: a frame
+  ;; takes some time, and time runs forwards.
+  (unless (and (real? frame-delay) (> frame-delay 0) (not (inf? frame-delay)))
+    (scm-error 'wrong-type-arg "make-game" "frame-delay: expected a finite number of ms > 0, got ~S"
+               (list frame-delay) #f))
+  ;; scripted-held walks it every frame: a circular script would hang the game.
+  (unless (list? input-script)
+    (scm-error 'wrong-type-arg "make-game" "input-script: expected a list of (frame . actions), got ~S"
+               (list input-script) #f))
   (let ((display (and (renderer-available?) (%make-display width height))))
     (when display (%display-set-input-map! display (or input-map (default-input-map))))
     (let ((game (%make-game title width height frame-delay scene update render engine-update

@@ -10,6 +10,19 @@
   (scm-error 'wrong-type-arg (symbol->string who)
              "malformed entity (expected a keyword plist): ~S" (list entity) #f))
 
+(define (circular who entity)
+  (scm-error 'wrong-type-arg (symbol->string who)
+             "malformed entity (expected a keyword plist): circular list ~S" (list entity) #f))
+
+;;; The walks below visit the plist key by key (P = x0, x1, … with
+;;; x(i+1) = (cddr xi)) while SLOW trails at half speed (Floyd's tortoise and
+;;; hare): SLOW is x(i/2) for even i. Only a circular plist brings the two
+;;; together, within a few laps of its cycle, so a walk for a missing key ends.
+(define-inlinable (lapped? odd? p slow)
+  (and odd? (eq? (cddr p) (cddr slow))))
+(define-inlinable (trail odd? slow)
+  (if odd? (cddr slow) slow))
+
 (define (check-key who key)
   (unless (keyword? key)
     (scm-error 'wrong-type-arg (symbol->string who)
@@ -18,10 +31,12 @@
 (define* (entity-ref entity key #:optional (default #f))
   "The value of KEY in ENTITY, or DEFAULT (#f unless given) when absent."
   (check-key 'entity-ref key)
-  (let loop ((p entity))
+  (let loop ((p entity) (slow entity) (odd? #f))
     (cond ((null? p) default)
           ((and (pair? p) (keyword? (car p)) (pair? (cdr p)))
-           (if (eq? (car p) key) (cadr p) (loop (cddr p))))
+           (cond ((eq? (car p) key) (cadr p))
+                 ((lapped? odd? p slow) (circular 'entity-ref entity))
+                 (else (loop (cddr p) (trail odd? slow) (not odd?)))))
           (else (malformed 'entity-ref entity)))))
 
 (define (entity-set entity key value)
@@ -29,12 +44,12 @@
 at the end when absent. ENTITY itself is not changed; the part after KEY is
 shared."
   (check-key 'entity-set key)
-  (let loop ((p entity) (acc '()))
+  (let loop ((p entity) (acc '()) (slow entity) (odd? #f))
     (cond ((null? p) (append-reverse! acc (list key value)))
           ((and (pair? p) (keyword? (car p)) (pair? (cdr p)))
-           (if (eq? (car p) key)
-               (append-reverse! acc (cons key (cons value (cddr p))))
-               (loop (cddr p) (cons* (cadr p) (car p) acc))))
+           (cond ((eq? (car p) key) (append-reverse! acc (cons key (cons value (cddr p)))))
+                 ((lapped? odd? p slow) (circular 'entity-set entity))
+                 (else (loop (cddr p) (cons* (cadr p) (car p) acc) (trail odd? slow) (not odd?)))))
           (else (malformed 'entity-set entity)))))
 
 (define (entity-skips-pipeline? entity step)
@@ -57,15 +72,20 @@ shared."
     "(define-pipeline (name skip-symbol) (entity scene dt) [guard: expr] body ...)
 defines a step that returns ENTITY unchanged when it skips SKIP-SYMBOL or
 the guard is false."
+    (define (names? . ids) (and-map identifier? ids))
     (syntax-case stx ()
       ((_ (name skip) (entity scene dt) marker guard body0 body ...)
-       (guard-marker? (syntax->datum #'marker))
+       (and (guard-marker? (syntax->datum #'marker)) (names? #'name #'skip #'entity #'scene #'dt))
        #'(define (name entity scene dt)
            (if (or (entity-skips-pipeline? entity 'skip) (not guard))
                entity
                (let () body0 body ...))))
       ((_ (name skip) (entity scene dt) body0 body ...)
+       (names? #'name #'skip #'entity #'scene #'dt)
        #'(define (name entity scene dt)
            (if (entity-skips-pipeline? entity 'skip)
                entity
-               (let () body0 body ...)))))))
+               (let () body0 body ...))))
+      (_ (syntax-violation 'define-pipeline
+                           "expected (define-pipeline (name skip-symbol) (entity scene dt) [guard: expr] body ...), each name a symbol"
+                           stx)))))

@@ -55,8 +55,10 @@
   "A tween of ENTITY's PROPS, an alist of (key . target). Store it under
 #:tween; step-tweens advances it by dt and removes it at the end, then calls
 ON-COMPLETE with the entity (its result replaces the entity when it is one)."
-  (unless (and (list? props) (<= (length props) 32))
-    (bad "make-tween" "props: expected an alist of at most 32 (key . target)" props))
+  (unless (and (list? props) (<= (length props) %max-tween-props))
+    (bad "make-tween"
+         (format #f "props: expected an alist of at most ~a (key . target)" %max-tween-props)
+         props))
   (for-each (lambda (p)
               (unless (and (pair? p) (keyword? (car p)) (finite-real? (cdr p)))
                 (bad "make-tween" "props: expected (keyword . finite number)" p)))
@@ -73,8 +75,10 @@ ON-COMPLETE with the entity (its result replaces the entity when it is one)."
     (bad "make-tween" "duration: expected a number of ms ≥ 0" duration))
   (unless (and (finite-real? delay) (>= delay 0))
     (bad "make-tween" "delay: expected a number of ms ≥ 0" delay))
-  (unless (and (exact-integer? repeat) (>= repeat -1))
-    (bad "make-tween" "repeat: expected an exact integer ≥ -1" repeat))
+  (unless (and (exact-integer? repeat) (<= -1 repeat %max-tween-repeat))
+    (bad "make-tween"
+         (format #f "repeat: expected an exact integer from -1 to ~a" %max-tween-repeat)
+         repeat))
   (when (and (= repeat -1) (zero? duration))
     (bad "make-tween" "repeat: a tween repeating forever needs a duration > 0" repeat))
   (unless (or (procedure? ease) (%ease-index ease))

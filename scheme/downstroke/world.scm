@@ -1,6 +1,7 @@
 ;;; (downstroke world) — scenes (immutable) and the camera (mutable).
 (define-module (downstroke world)
   #:use-module (srfi srfi-9)
+  #:use-module ((downstroke native) #:select (tilemap?))
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
             scene-map-entities scene-transform-entities
@@ -47,11 +48,19 @@ X and Y must be finite real numbers."
   (unless (list? entities)
     (scm-error 'wrong-type-arg who "entities: expected a list, got ~S" (list entities) #f)))
 
+;; Refused when the scene is made, not frames later inside a step or a draw.
+(define (check-scene-parts who tilemap camera)
+  (unless (or (not tilemap) (tilemap? tilemap))
+    (scm-error 'wrong-type-arg who "tilemap: expected a tilemap or #f, got ~S" (list tilemap) #f))
+  (unless (camera? camera)
+    (scm-error 'wrong-type-arg who "camera: expected a camera (make-camera), got ~S" (list camera) #f)))
+
 (define* (make-scene #:key (entities '()) (tilemap #f) (camera (make-camera))
                      (camera-target #f))
   "A scene: the entity list, an optional tilemap, a camera, and optionally the
 #:id (or #:tag) of the entity the camera follows."
   (check-entities "make-scene" entities)
+  (check-scene-parts "make-scene" tilemap camera)
   (%make-scene entities tilemap camera camera-target))
 
 (define* (update-scene scene #:key (entities (scene-entities scene))
@@ -59,6 +68,7 @@ X and Y must be finite real numbers."
                        (camera-target (scene-camera-target scene)))
   "A copy of SCENE with the given fields replaced."
   (check-entities "update-scene" entities)
+  (check-scene-parts "update-scene" tilemap camera)
   (%make-scene entities tilemap camera camera-target))
 
 (define (%scene-with-entities scene entities)
