@@ -48,10 +48,6 @@ bool decode_boxes(SCM entities, Arg a, std::vector<Box>& out, Failure& f) {
     if (!proper_list(entities, a, f)) return false;
     for (SCM l = entities; scm_is_pair(l); l = SCM_CDR(l)) {
         Decoded d;
-        if (scm_ilength(SCM_CAR(l)) < 0) {  // decode_entity walks it
-            fail_arg(f, Arg("entity"), SCM_CAR(l), "an entity plist (a proper list)");
-            return false;
-        }
         if (!decode_entity(SCM_CAR(l), d, f)) return false;
         out.push_back({d.body.x.v, d.body.y.v, d.body.w.v, d.body.h.v});
     }
