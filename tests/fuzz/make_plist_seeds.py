@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Writes the plist target's seed recipes (seeds/plist/) in the byte language
 fuzz_plist.cpp reads: typical entities (a falling box, a player on the ground,
-a pushed pair, a group), so fuzzing starts from plists that reach every step.
-Run it after changing that language; the files are committed."""
+a pushed pair, a group), so fuzzing starts from plists that reach every step;
+and (pending/plist/) the circular lists the native walks hang on until they
+check for cycles, next to the one the fuzzer found. Run it after changing that
+language; the files are committed."""
 import os
 import struct
 
@@ -33,9 +35,16 @@ def entity(**fields):
     return out + bytes([1, 0])  # not a dangling key; a proper tail
 
 
-def scene(*entities):
-    # entity_list(): count-1; then the step arguments (map, mode, dt, substeps)
-    return bytes([len(entities) - 1]) + b"".join(entities) + bytes([0, 1, 1, 1, 1, 0])
+def scene(*entities, tail=bytes([0])):
+    # entity_list(): count-1, the entities, how the list ends (close_list());
+    # then the step arguments (map, mode, dt, substeps)
+    return bytes([len(entities) - 1]) + b"".join(entities) + tail + bytes([1, 1, 1, 1, 0])
+
+
+def circular_skips():
+    # key 14 (#:skip-pipelines); value() choice 6, a list of two skip symbols,
+    # its last pair tied back to the first (close_list() choice 7, pair 0)
+    return bytes([1]) + key("skip-pipelines") + bytes([6, 2, 1, 0, 1, 1, 7, 0]) + bytes([1, 0])
 
 
 SEEDS = {
@@ -47,8 +56,15 @@ SEEDS = {
                    entity(x=0, y=0, width=4, height=4, group_id=1, group_local_x=5, group_local_y=-2)),
 }
 
-here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "seeds", "plist")
-os.makedirs(here, exist_ok=True)
-for name, data in SEEDS.items():
-    with open(os.path.join(here, name), "wb") as f:
-        f.write(data)
+PENDING = {
+    "circular-skip-pipelines": scene(circular_skips()),
+    "circular-entity-list": scene(entity(x=1), entity(y=2), tail=bytes([7, 0])),
+}
+
+root = os.path.dirname(os.path.abspath(__file__))
+for folder, files in (("seeds", SEEDS), ("pending", PENDING)):
+    here = os.path.join(root, folder, "plist")
+    os.makedirs(here, exist_ok=True)
+    for name, data in files.items():
+        with open(os.path.join(here, name), "wb") as f:
+            f.write(data)
