@@ -56,6 +56,8 @@ constexpr int kMaxPairs = 12;
 constexpr int kMaxListLength = 5;
 constexpr int kMaxDepth = 2;
 
+// The procedures stay reachable from (downstroke native) and the tilemap is a
+// permanent object, so the collector keeps them whatever it makes of this struct.
 struct Natives {
     SCM step_entities, single[5], tile_steps[2], detect_on_solid, list_steps[3];
     SCM tilemap;  // 8×4 cells of 16 px, the bottom row solid
