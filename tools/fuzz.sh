@@ -7,6 +7,7 @@
 #                                         in JOBS parallel processes (default 1)
 #   tools/fuzz.sh replay TARGET FILE…     run TARGET's entry point on FILEs, no
 #                                         fuzzing (plist: shows the entities built)
+# More libFuzzer flags go in FUZZ_FLAGS (-rss_limit_mb=4096 -dict=FILE …).
 #
 # What a run finds grows build/tests/fuzz/corpus/TARGET, kept between runs. An
 # input that fails lands in build/tests/fuzz/artifacts/TARGET/; once fixed,
@@ -28,7 +29,7 @@ fi
 (($# == 2 || $# == 3)) || usage
 target=$1 minutes=$2 jobs=${3:-1}
 case $target in tmx|tsx|plist) ;; *) usage ;; esac
-[[ $minutes =~ ^[0-9]+$ && $jobs =~ ^[0-9]+$ ]] || usage
+[[ $minutes =~ ^[1-9][0-9]*$ && $jobs =~ ^[1-9][0-9]*$ ]] || usage  # 0 minutes would be -max_total_time=0: no limit
 if [ ! -f "$fuzz_dir/$target.args" ]; then
   echo "fuzz.sh: no libFuzzer build in $build/ (configure says why: look for 'libFuzzer targets')" >&2
   exit 1
@@ -40,4 +41,4 @@ mapfile -t args < "$fuzz_dir/$target.args"
 parallel=()
 ((jobs > 1)) && parallel=(-fork="$jobs" -ignore_crashes=0)
 echo "fuzz.sh: $target for $minutes min; findings in $fuzz_dir/artifacts/$target/"
-exec "$fuzz_dir/clang/bin/fuzz-$target" -max_total_time=$((minutes * 60)) "${parallel[@]}" "${args[@]}"
+exec "$fuzz_dir/clang/bin/fuzz-$target" -max_total_time=$((minutes * 60)) "${parallel[@]}" "${args[@]}" ${FUZZ_FLAGS:-}
