@@ -10,12 +10,12 @@ namespace ds::guile {
 
 namespace {
 
-// Scheme sees these as exact integers (*gravity* is 1, not 1.0).
-template <auto V>
-SCM exact() {
-    static_assert(static_cast<double>(static_cast<int64_t>(V)) == static_cast<double>(V),
-                  "a rule constant Scheme sees must be an integer");
-    return scm_from_int64(static_cast<int64_t>(V));
+// Scheme sees these as exact integers (*gravity* is 1, not 1.0). consteval,
+// not a double template parameter, which clang before 18 cannot take: a
+// constant that is not an integer still fails to compile (the throw).
+consteval int64_t exact_integer(double v) {
+    if (static_cast<double>(static_cast<int64_t>(v)) != v) throw "a rule constant Scheme sees must be an integer";
+    return static_cast<int64_t>(v);
 }
 
 void define_constant(const char* name, SCM value) {
@@ -26,12 +26,12 @@ void define_constant(const char* name, SCM value) {
 }  // namespace
 
 void register_constants() {
-    define_constant("%gravity", exact<kGravity>());
-    define_constant("%jump-force", exact<kJumpForce>());
-    define_constant("%on-solid-tolerance", exact<kOnSolidTolerance>());
-    define_constant("%max-substeps", exact<kMaxSubsteps>());
-    define_constant("%max-tween-repeat", exact<kMaxTweenRepeat>());
-    define_constant("%max-tween-props", exact<kMaxTweenProps>());
+    define_constant("%gravity", scm_from_int64(exact_integer(kGravity)));
+    define_constant("%jump-force", scm_from_int64(exact_integer(kJumpForce)));
+    define_constant("%on-solid-tolerance", scm_from_int64(exact_integer(kOnSolidTolerance)));
+    define_constant("%max-substeps", scm_from_int64(exact_integer(kMaxSubsteps)));
+    define_constant("%max-tween-repeat", scm_from_int64(exact_integer(kMaxTweenRepeat)));
+    define_constant("%max-tween-props", scm_from_int64(exact_integer(kMaxTweenProps)));
 }
 
 }  // namespace ds::guile
