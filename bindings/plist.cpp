@@ -69,13 +69,17 @@ struct Tag {};
 struct Id {};
 
 bool decode(Number, SCM key, SCM v, Num& out, uint32_t field, Decoded& d, Failure& f) {
-    // Only numbers can be lossy; a flag such as #:on-ground? #f is not a
-    // number at all, and watching it would make a frame that flips it and
-    // flips it back (sub-frames) rewrite the plist for nothing.
+    // A boolean flag is never lossy (decode(Flag…)): watching #:on-ground? #f
+    // would make a frame that flips it and flips it back (sub-frames) rewrite
+    // the plist for nothing.
     if (!SCM_I_INUMP(v) && !SCM_REALP(v)) d.lossy |= static_cast<uint16_t>(field);
     return decode_number(key, v, out, f);
 }
-bool decode(Flag, SCM, SCM v, bool& out, uint32_t, Decoded&, Failure&) {
+bool decode(Flag, SCM, SCM v, bool& out, uint32_t field, Decoded& d, Failure&) {
+    // A flag a step writes that holds a truthy non-boolean (#:on-ground? 'yes)
+    // is lossy: once a step writes it, even back to true, it becomes #t, as
+    // in the step-by-step composition (sub-frames that flip it and back).
+    if (!scm_is_bool(v)) d.lossy |= static_cast<uint16_t>(field);
     out = scm_is_true(v);
     return true;
 }

@@ -138,12 +138,12 @@ bool positive_int(SCM v, const char* what, int& out, Failure& f) {
     return from_scm(v, out, what, f, 1, 1 << 24, "a positive exact integer");
 }
 
-SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids) {
+SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids, SCM one_way_gids) {
     Failure f{"make-tilemap"};
     SCM result = SCM_BOOL_F;
     {
         int w = 0, h = 0, tw = 0, th = 0;
-        std::vector<uint32_t> gids, solid;
+        std::vector<uint32_t> gids, solid, one_way;
         std::unique_ptr<MapHandle> handle;
         const bool sizes = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
                            positive_int(tile_w, "tile-width", tw, f) && positive_int(tile_h, "tile-height", th, f);
@@ -167,8 +167,10 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
                     ok = gid_list(cells, gids, "cells", f);
                 }
                 if (!ok || !gid_list(solid_gids, solid, "solid-gids", f)) return;
+                if (!SCM_UNBNDP(one_way_gids) && !gid_list(one_way_gids, one_way, "one-way-gids", f)) return;
                 handle = std::make_unique<MapHandle>();
-                handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid));
+                handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid), kMaxMapCells,
+                                               std::move(one_way));
                 handle->grid = handle->map.solid_grid();
             });
         if (handle) result = wrap(std::move(handle));
@@ -219,6 +221,13 @@ SCM tilemap_cell_solid_p(SCM m, SCM col, SCM row) {
     if (!check_map(m, "tilemap-cell-solid?", f)) raise(f);
     check_cell(col, row, f);
     return scm_from_bool(tilemap_handle(m).grid.solid(scm_to_int64(col), scm_to_int64(row)));
+}
+
+SCM tilemap_cell_one_way_p(SCM m, SCM col, SCM row) {
+    Failure f;
+    if (!check_map(m, "tilemap-cell-one-way?", f)) raise(f);
+    check_cell(col, row, f);
+    return scm_from_bool(tilemap_handle(m).grid.one_way(scm_to_int64(col), scm_to_int64(row)));
 }
 
 SCM tilemap_solid_extent(SCM m) {
@@ -274,9 +283,10 @@ void register_tilemap_procedures() {
     define_procedure<4, 0, 0, load_tilemap>("%load-tilemap",
         WrapperDoc{"(path solid-gids max-cells max-bytes)", "load-tilemap", "(downstroke tilemap)"});
     // Exported as they are (re-exported by (downstroke tilemap)): documented here.
-    define_procedure<6, 0, 0, make_tilemap>("make-tilemap",
-        "(make-tilemap width height tile-width tile-height cells solid-gids): a map made in "
-        "memory; cells is a vector (or list) of gids, row-major.");
+    define_procedure<6, 1, 0, make_tilemap>("make-tilemap",
+        "(make-tilemap width height tile-width tile-height cells solid-gids [one-way-gids]): a map "
+        "made in memory; cells is a vector (or list) of gids, row-major; one-way-gids are one-way "
+        "platforms (solid from above only).");
     define_procedure<1, 0, 0, tilemap_p>("tilemap?", "Whether obj is a tilemap.");
     define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "Width in cells.");
     define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "Height in cells.");
@@ -284,6 +294,9 @@ void register_tilemap_procedures() {
     define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "Tile height in px.");
     define_procedure<3, 0, 0, tilemap_cell_solid_p>("tilemap-cell-solid?",
         "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+    define_procedure<3, 0, 0, tilemap_cell_one_way_p>("tilemap-cell-one-way?",
+        "(tilemap-cell-one-way? tm col row): whether that cell is a one-way platform, which stops "
+        "bodies only from above.");
     define_procedure<1, 0, 0, tilemap_solid_extent>("tilemap-solid-extent",
         "(first-col first-row cols rows): the block of cells that can be solid; every "
         "cell outside it is empty (infinite maps may start at negative cells).");

@@ -11,6 +11,11 @@ namespace ds {
 constexpr double kGravity = 1.0;           // *gravity*, px/frame²
 constexpr double kJumpForce = 15.0;        // *jump-force*
 constexpr double kOnSolidTolerance = 4.0;  // *on-solid-tolerance*, px and px/frame
+// A one-way cell holds a body up while its feet are less than this far below
+// the cell's top (semantics §9). Not the tolerance above: a body that drops
+// through a platform is 1 px or more into it after its first frame of
+// falling (gravity makes vy at least 1), and must not stand there again.
+constexpr double kOneWayFooting = 1.0;
 
 // ---- limits that refuse input
 // Sub-frames per frame (make-game substeps:, step-scene #:substeps): beyond

@@ -9,8 +9,12 @@ namespace ds {
 bool tile_supports(const Body& b, const TileGrid& grid) {
     const int64_t row = cell_of(b.y + b.h, grid.tile_height());
     const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    // One-way cells (semantics §9) hold up a body that is not rising, not
+    // dropping through, with its feet at most kOneWayFooting into the cell.
+    const bool on_top = b.vy.v >= 0 && !b.drop_through &&
+                        (b.y + b.h).v - static_cast<double>(row) * grid.tile_height() < kOneWayFooting;
     for (int64_t c = cols.first; c <= cols.last; ++c)
-        if (grid.solid(c, row)) return true;
+        if (grid.solid(c, row) || (on_top && grid.one_way(c, row))) return true;
     return false;
 }
 

@@ -1,4 +1,4 @@
-// Spatial queries for game logic (semantics §9): boxes overlapping a
+// Spatial queries for game logic (semantics §8): boxes overlapping a
 // rectangle or holding a point, the overlapping pairs between two sets of
 // boxes, and segments cast against boxes and solid cells. Boxes are the
 // engine's half-open [x, x+w) × [y, y+h); overlap is aabb_overlap's strict

@@ -25,6 +25,8 @@ TileGrid::TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8
         throw std::invalid_argument("tile grid: sizes must be positive");
     if (solid_.size() != static_cast<size_t>(cols) * static_cast<size_t>(rows))
         throw std::invalid_argument("tile grid: solid mask is not cols*rows long");
+    for (uint8_t& c : solid_)
+        if (c != kEmptyCell && c != kOneWayCell) c = kSolidCell;
 }
 
 TileGrid::TileGrid(TileGrid&& o) noexcept { *this = std::move(o); }
@@ -48,7 +50,7 @@ void TileGrid::set_solid(int64_t col, int64_t row, bool solid) {
     const int64_t c = col - origin_col_, r = row - origin_row_;
     if (c < 0 || r < 0 || c >= cols_ || r >= rows_)
         throw std::out_of_range("tile grid: set_solid outside the grid");
-    solid_[static_cast<size_t>(r * cols_ + c)] = solid ? 1 : 0;
+    solid_[static_cast<size_t>(r * cols_ + c)] = solid ? kSolidCell : kEmptyCell;
     revision_.bump();
 }
 

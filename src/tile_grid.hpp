@@ -36,6 +36,9 @@ inline int64_t cell_of(Num pos, int tile);
 // made, copied, assigned or edited, so no two states of any grids in the
 // process share one — not even a new grid built where an old one was. Never 0
 // (callers keep 0 for "no grid").
+// What a grid's cell holds.
+constexpr uint8_t kEmptyCell = 0, kSolidCell = 1, kOneWayCell = 2;
+
 class GridRevision {
 public:
     GridRevision() : n_(next()) {}
@@ -55,7 +58,8 @@ private:
 class TileGrid {
 public:
     TileGrid() = default;
-    // cols × rows cells of tile_w × tile_h px; solid is row-major, cols*rows long.
+    // cols × rows cells of tile_w × tile_h px; solid is row-major, cols*rows
+    // long: 0 empty, kOneWayCell a one-way platform, anything else solid.
     // origin_col/row is the map cell of solid[0] (negative for infinite maps
     // whose chunks start left of or above the origin).
     TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8_t> solid,
@@ -86,7 +90,14 @@ public:
         col -= origin_col_;
         row -= origin_row_;
         if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return false;
-        return solid_[static_cast<size_t>(row * cols_ + col)] != 0;
+        return solid_[static_cast<size_t>(row * cols_ + col)] == kSolidCell;
+    }
+    // A one-way platform (semantics §9): it stops bodies only from above.
+    bool one_way(int64_t col, int64_t row) const {
+        col -= origin_col_;
+        row -= origin_row_;
+        if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return false;
+        return solid_[static_cast<size_t>(row * cols_ + col)] == kOneWayCell;
     }
 
     // The part of a column (row) range that lies inside the grid: physics

@@ -71,8 +71,16 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     const TileAxis a{along_y(b), s.share(b.vy), grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
-    resolve_axis(a, rows, cols,
-                 [&](int64_t r, int64_t c) { return grid->solid(c, r); });
+    // A one-way cell stops a body falling onto it whose feet were at or above
+    // its top when this move began (semantics §9); never one rising or
+    // dropping through.
+    const bool may_land = b.vy.v > 0 && !b.drop_through;
+    const double feet_before = (b.y - a.move + b.h).v;
+    const double th = grid->tile_height();
+    resolve_axis(a, rows, cols, [&](int64_t r, int64_t c) {
+        return grid->solid(c, r) ||
+               (may_land && grid->one_way(c, r) && feet_before <= static_cast<double>(r) * th);
+    });
     return true;
 }
 

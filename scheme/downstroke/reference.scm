@@ -13,7 +13,7 @@
   #:use-module ((downstroke physics) #:select (collision-mode resting-contacts?))
   #:use-module ((downstroke tilemap)
                 #:select (tilemap-tile-width tilemap-tile-height
-                          tilemap-cell-solid? tilemap-solid-extent))
+                          tilemap-cell-solid? tilemap-cell-one-way? tilemap-solid-extent))
   #:re-export (collision-mode resting-contacts?)
   #:export (*gravity* *jump-force* *on-solid-tolerance*
             step-tweens apply-acceleration apply-gravity apply-velocity-x
@@ -24,6 +24,9 @@
 (define *gravity* 1)
 (define *jump-force* 15)
 (define *on-solid-tolerance* 4)
+;; How far into a one-way cell a body's feet may be for it to stand there
+;; (semantics §9): less than the 1 px a first frame of falling takes it.
+(define *one-way-footing* 1)
 
 ;;; ---------------------------------------------------------------- numbers (§1)
 ;;; The core computes in double. A number is read as the nearest double,
@@ -272,25 +275,39 @@ against the first one, vx = 0."
   (let ((tm (scene-tiles scene)))
     (if (or (not tm) (zero? (num e #:vy)) (skips? e 'tile-collisions-y))
         e
-        (apply (lambda (col0 row0 cols rows)
-                 (resolve-axis e h #:y #:vy #:height #:x #:width
-                               (tilemap-tile-height tm) (tilemap-tile-width tm)
-                               row0 rows col0 cols
-                               (lambda (row col) (tilemap-cell-solid? tm col row))))
-               (tilemap-solid-extent tm)))))
+        ;; A one-way cell (§9) stops a body falling onto it whose feet were
+        ;; at or above its top when this move began.
+        (let* ((th (tilemap-tile-height tm))
+               (may-land? (and (> (num e #:vy) 0) (not (flag e #:drop-through?))))
+               (feet-before (num+ (num- (num e #:y) (share (num e #:vy) h)) (num e #:height))))
+          (apply (lambda (col0 row0 cols rows)
+                   (resolve-axis e h #:y #:vy #:height #:x #:width
+                                 th (tilemap-tile-width tm)
+                                 row0 rows col0 cols
+                                 (lambda (row col)
+                                   (or (tilemap-cell-solid? tm col row)
+                                       (and may-land? (tilemap-cell-one-way? tm col row)
+                                            (<= feet-before (* row th)))))))
+                 (tilemap-solid-extent tm))))))
 
 ;;; ---------------------------------------------------------------- ground (§4)
 
 (define (tile-supports? e tm)
   "A solid cell in the row just under the box (row ⌊(y+h)/th⌋), in any of
-the columns it spans."
+the columns it spans; or a one-way cell there (§9), for a body not rising,
+not dropping through, its feet less than *one-way-footing* into the cell."
   (and tm
        (apply (lambda (col0 row0 cols rows)
-                (let ((row (cell-of (num+ (num e #:y) (num e #:height)) (tilemap-tile-height tm)))
-                      (span (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm))
-                                  col0 cols)))
+                (let* ((th (tilemap-tile-height tm))
+                       (feet (num+ (num e #:y) (num e #:height)))
+                       (row (cell-of feet th))
+                       (on-top? (and (>= (num e #:vy) 0) (not (flag e #:drop-through?))
+                                     (< (- feet (* row th)) *one-way-footing*)))
+                       (span (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm))
+                                   col0 cols)))
                   (and (clip (cons row row) row0 rows)
-                       (any (lambda (col) (tilemap-cell-solid? tm col row))
+                       (any (lambda (col) (or (tilemap-cell-solid? tm col row)
+                                              (and on-top? (tilemap-cell-one-way? tm col row))))
                             (range->list span 1)))))
               (tilemap-solid-extent tm))))
 

@@ -64,6 +64,12 @@ bool Tileset::tile_solid(uint32_t local_id) const {
     return false;
 }
 
+bool Tileset::tile_one_way(uint32_t local_id) const {
+    const TileInfo* t = tile(local_id);
+    const Property* p = t ? find_property(t->properties, "one-way") : nullptr;
+    return p && property_is_true(*p);
+}
+
 uint32_t TileLayer::raw_gid(int64_t col, int64_t row) const {
     col -= origin_col;
     row -= origin_row;
@@ -98,6 +104,22 @@ bool Tilemap::cell_solid(int64_t col, int64_t row) const {
     return false;
 }
 
+bool Tilemap::gid_one_way(uint32_t gid) const {
+    gid &= kGidMask;
+    if (gid == 0 || gid_solid(gid)) return false;
+    for (const uint32_t s : extra_one_way_gids)
+        if ((s & kGidMask) == gid) return true;
+    const Tileset* ts = tileset_for(gid);
+    return ts && ts->tile_one_way(gid - ts->firstgid);
+}
+
+bool Tilemap::cell_one_way(int64_t col, int64_t row) const {
+    if (cell_solid(col, row)) return false;
+    for (const TileLayer& layer : layers)
+        if (layer.solidity == LayerSolidity::FromTiles && gid_one_way(layer.raw_gid(col, row))) return true;
+    return false;
+}
+
 TileGrid Tilemap::solid_grid() const {
     Bounds b;
     for (const TileLayer& l : layers) b.add(l);
@@ -107,22 +129,23 @@ TileGrid Tilemap::solid_grid() const {
     std::vector<uint8_t> solid(static_cast<size_t>(cols) * static_cast<size_t>(rows), 0);
     // Layer by layer rather than cell_solid per cell: one pass over each
     // layer's own cells, with each distinct gid's metadata looked up once.
-    std::unordered_map<uint32_t, bool> gid_cache;
+    std::unordered_map<uint32_t, uint8_t> gid_cache;  // gid → cell kind
     for (const TileLayer& l : layers) {
         if (l.solidity == LayerSolidity::None) continue;
         for (int r = 0; r < l.height; ++r) {
             for (int c = 0; c < l.width; ++c) {
                 const uint32_t gid = l.cells[static_cast<size_t>(r) * l.width + c] & kGidMask;
                 if (gid == 0) continue;
-                bool is_solid = l.solidity == LayerSolidity::All;
-                if (!is_solid) {
-                    auto [it, fresh] = gid_cache.try_emplace(gid, false);
-                    if (fresh) it->second = gid_solid(gid);
-                    is_solid = it->second;
+                uint8_t kind = kSolidCell;
+                if (l.solidity != LayerSolidity::All) {
+                    auto [it, fresh] = gid_cache.try_emplace(gid, kEmptyCell);
+                    if (fresh) it->second = gid_solid(gid) ? kSolidCell : gid_one_way(gid) ? kOneWayCell : kEmptyCell;
+                    kind = it->second;
                 }
-                if (!is_solid) continue;
+                if (kind == kEmptyCell) continue;
                 const int64_t gc = l.origin_col + c - b.col0, gr = l.origin_row + r - b.row0;
-                solid[static_cast<size_t>(gr * cols + gc)] = 1;
+                uint8_t& cell = solid[static_cast<size_t>(gr * cols + gc)];
+                if (cell != kSolidCell) cell = kind;  // a solid layer wins over a one-way one
             }
         }
     }
@@ -134,7 +157,7 @@ MapError::MapError(const std::string& file, int line, const std::string& message
     : std::runtime_error(where(file, line) + ": " + message), file_(file), line_(line) {}
 
 Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
-                     std::vector<uint32_t> solid_gids, int64_t max_cells) {
+                     std::vector<uint32_t> solid_gids, int64_t max_cells, std::vector<uint32_t> one_way_gids) {
     if (const std::string p = map_size_problem(width, height, tile_w, tile_h, max_cells); !p.empty())
         throw std::invalid_argument("make_tilemap: " + p);
     if (gids.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
@@ -154,6 +177,7 @@ Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<
     map.layers.push_back(std::move(layer));
     // No tilesets: extra_solid_gids alone decides, exactly as the caller listed.
     map.extra_solid_gids = std::move(solid_gids);
+    map.extra_one_way_gids = std::move(one_way_gids);
     return map;
 }
 

@@ -63,6 +63,8 @@ struct Tileset {
     const TileInfo* tile(uint32_t local_id) const;
     // Solid by metadata: a true solid/collision/collides property, or collision shapes.
     bool tile_solid(uint32_t local_id) const;
+    // A one-way platform by metadata: a true one-way property (semantics §9).
+    bool tile_one_way(uint32_t local_id) const;
 };
 
 enum class LayerSolidity : uint8_t {
@@ -109,6 +111,7 @@ struct Tilemap {
     std::vector<TileLayer> layers;  // in file order, groups flattened
     std::vector<ObjectLayer> object_layers;
     std::vector<uint32_t> extra_solid_gids;  // solid-gids: from the script
+    std::vector<uint32_t> extra_one_way_gids;  // one-way-gids: from the script
 
     // The tileset a gid (flip bits ignored) belongs to: the largest firstgid ≤ gid.
     const Tileset* tileset_for(uint32_t gid) const;
@@ -116,6 +119,10 @@ struct Tilemap {
     bool gid_solid(uint32_t gid) const;
     // Solid when any layer makes it so (semantics §7).
     bool cell_solid(int64_t col, int64_t row) const;
+    // A one-way platform by its tileset's metadata or extra_one_way_gids
+    // (solid wins, for a gid and for a cell whose layers disagree).
+    bool gid_one_way(uint32_t gid) const;
+    bool cell_one_way(int64_t col, int64_t row) const;
     // The physics grid over the bounding box of every layer.
     TileGrid solid_grid() const;
 };
@@ -153,6 +160,7 @@ Tilemap parse_tilemap(std::string_view text, const std::string& path,
 // solid_gids. Sizes are checked as a loaded map's (map_size_problem, with
 // max_cells). Throws std::invalid_argument on a bad size or a size mismatch.
 Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
-                     std::vector<uint32_t> solid_gids, int64_t max_cells = kMaxMapCells);
+                     std::vector<uint32_t> solid_gids, int64_t max_cells = kMaxMapCells,
+                     std::vector<uint32_t> one_way_gids = {});
 
 }  // namespace ds

@@ -324,6 +324,43 @@
 (test-assert (= 112 (entity-ref (resolve-tile-collisions-y '(#:x 0 #:y 120.5 #:width 16 #:height 16 #:vy 6.5)
                                                            floor-scene 16) #:y)))
 
+;;; ---------------------------------------------------------------- one-way cells (semantics §9)
+;; A 10×20 map whose row 8, y ∈ [128, 144), is gid 2: one-way platforms.
+(define one-way-scene
+  (make-scene tilemap: (make-tilemap 10 20 16 16
+                                     (append (make-list 80 0) (make-list 10 2) (make-list 110 0))
+                                     '(1) '(2))))
+(test-equal "the map says which cells are one-way" '(#t #f)
+  (list (tilemap-cell-one-way? (scene-tilemap one-way-scene) 3 8)
+        (tilemap-cell-solid? (scene-tilemap one-way-scene) 3 8)))
+;; Fell from 106 to 120: feet were at 122 ≤ 128, the platform's top → y = 112.
+(test-equal "landing from above" '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 14) one-way-scene 16))
+(test-equal "feet exactly on the top when the move began" '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y '(#:x 0 #:y 113 #:width 16 #:height 16 #:vy 1) one-way-scene 16))
+(test-equal "swept: a fall of 60 px from above still lands" '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0)
+  (resolve-tile-collisions-y '(#:x 0 #:y 160 #:width 16 #:height 16 #:vy 60) one-way-scene 16))
+(let ((e '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 6)))
+  (test-eq "feet below the top when the move began (130 > 128): falls on through" e
+    (resolve-tile-collisions-y e one-way-scene 16)))
+(let ((e '(#:x 0 #:y 130 #:width 16 #:height 16 #:vy -10)))
+  (test-eq "rising through from below" e (resolve-tile-collisions-y e one-way-scene 16)))
+(let ((e '(#:x 16 #:y 120 #:width 16 #:height 16 #:vx 5)))
+  (test-eq "from the side: no wall" e (resolve-tile-collisions-x e one-way-scene 16)))
+(let ((e '(#:x 0 #:y 120 #:width 16 #:height 16 #:vy 14 #:drop-through? #t)))
+  (test-eq "dropping through" e (resolve-tile-collisions-y e one-way-scene 16)))
+(define (stands? e) (entity-ref (detect-on-solid e one-way-scene 16) #:on-ground?))
+(test-equal "standing on one: on the ground" #t
+  (stands? '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0 #:gravity? #t)))
+(test-equal "feet less than 1 px in" #t
+  (stands? '(#:x 0 #:y 112.5 #:width 16 #:height 16 #:vy 0 #:gravity? #t)))
+(test-equal "feet 1 px in (a frame after dropping): not" #f
+  (stands? '(#:x 0 #:y 113 #:width 16 #:height 16 #:vy 1 #:gravity? #t)))
+(test-equal "rising: not" #f
+  (stands? '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy -3 #:gravity? #t)))
+(test-equal "dropping through: not" #f
+  (stands? '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:drop-through? #t)))
+
 ;;; ---------------------------------------------------------------- detect-on-solid
 ;; "Not itself" means not eq?: a flat solid box listed twice in its own scene
 ;; would otherwise stand on its own copy (feet 2 = its top 0 + 2, within 4).

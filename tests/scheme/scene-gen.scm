@@ -11,7 +11,9 @@
 ;;; (xoshiro128**, seeded by splitmix64) on exact integers, so a seed names the
 ;;; same scene on every machine and Guile version. A tilemap spec is
 ;;; (cols rows tw th cells) with CELLS a vector of gids (1 solid, 0 empty, 2 not
-;;; solid).
+;;; solid). In maps whose cols + rows is odd, gid 2 is a one-way platform
+;;; (semantics §9): decided by the spec, not drawn, so every seed keeps the
+;;; scene it had before one-way cells existed.
 ;;;
 ;;; What a scene holds (weights are approximate):
 ;;; - 1–4 entities (45%), 5–16 (37%), 17–40 (12%), 41–100 (5%), 101–200 (1%).
@@ -197,14 +199,17 @@
          (ts (tile-size r)))
     (list cols rows (car ts) (cdr ts) (make-cells r cols rows))))
 
+(define (one-way-gids cols rows) (if (odd? (+ cols rows)) '(2) '()))
+
 (define (tilemap-spec->tilemap spec)
-  (and spec (apply (lambda (cols rows tw th cells) (make-tilemap cols rows tw th cells '(1)))
+  (and spec (apply (lambda (cols rows tw th cells)
+                     (make-tilemap cols rows tw th cells '(1) (one-way-gids cols rows)))
                    spec)))
 
 (define (sparse-tilemap cols rows tw th cells)
   (let ((v (make-vector (* cols rows) 0)))
     (for-each (lambda (c) (vector-set! v (car c) (cdr c))) cells)
-    (make-tilemap cols rows tw th v '(1))))
+    (make-tilemap cols rows tw th v '(1) (one-way-gids cols rows))))
 
 ;;; The non-empty cells of a spec's vector, as ((index . gid) ...).
 (define (spec-cells spec)
@@ -288,7 +293,7 @@
      (list (cons #:x (coord r x)) (cons #:y (coord r y)) (cons #:width (size r))
            (cons #:height (size r)) (cons #:vx (velocity r)) (cons #:vy (velocity r))
            (cons #:ay (velocity r)) (cons #:gravity? (flag r)) (cons #:on-ground? (flag r))
-           (cons #:solid? (flag r)) (cons #:immovable? (flag r))
+           (cons #:solid? (flag r)) (cons #:immovable? (flag r)) (cons #:drop-through? (flag r))
            (cons #:skip-pipelines (skip-list r))
            (cons #:group-local-x (velocity r)) (cons #:group-local-y (velocity r))))))
 
