@@ -230,6 +230,45 @@ SCM tilemap_cell_one_way_p(SCM m, SCM col, SCM row) {
     return scm_from_bool(tilemap_handle(m).grid.one_way(scm_to_int64(col), scm_to_int64(row)));
 }
 
+// A new map with one cell changed; the old map is untouched (scenes are
+// values: rewinding to a scene that held it still finds the old tile). The
+// copy's grid has a revision of its own, so no settled body sleeps through
+// the edit.
+SCM tilemap_set_tile(SCM m, SCM col, SCM row, SCM gid, SCM layer) {
+    Failure f;
+    if (!check_map(m, "tilemap-set-tile", f)) raise(f);
+    check_cell(col, row, f);
+    const MapHandle& old = tilemap_handle(m);
+    uint32_t g = 0;
+    if (!from_scm(gid, g, Arg("gid"), f)) raise(f);
+    const size_t layers = old.map.layers.size();
+    size_t l = 0;
+    if (!SCM_UNBNDP(layer) && !(layers > 0 && scm_is_unsigned_integer(layer, 0, layers - 1)))
+        fail(f, "out-of-range", scm_list_1(layer), "no tile layer ~S");
+    else if (!SCM_UNBNDP(layer)) l = scm_to_size_t(layer);
+    if (!f && !old.map.gid_known(g)) fail(f, "out-of-range", scm_list_1(gid), "gid ~S belongs to none of the map's tilesets");
+    if (f) raise(f);
+    const int64_t c = scm_to_int64(col), r = scm_to_int64(row);
+    const TileLayer& target = old.map.layers[l];
+    if (c < target.origin_col || r < target.origin_row || c - target.origin_col >= target.width ||
+        r - target.origin_row >= target.height) {
+        fail(f, "out-of-range", scm_list_3(col, row, scm_from_size_t(l)), "cell (~S, ~S) is outside tile layer ~S");
+        raise(f);
+    }
+    SCM result = SCM_BOOL_F;
+    {
+        std::unique_ptr<MapHandle> handle;
+        guarded(f, "tilemap-set-tile", [&] {
+            handle = std::make_unique<MapHandle>(old);
+            handle->map.set_gid(l, c, r, g);
+            handle->grid.set_cell(c, r, handle->map.cell_kind(c, r));
+        });
+        if (handle) result = wrap(std::move(handle));
+    }
+    if (f) raise(f);
+    return result;
+}
+
 SCM tilemap_solid_extent(SCM m) {
     Failure f;
     if (!check_map(m, "tilemap-solid-extent", f)) raise(f);
@@ -294,6 +333,9 @@ void register_tilemap_procedures() {
     define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "Tile height in px.");
     define_procedure<3, 0, 0, tilemap_cell_solid_p>("tilemap-cell-solid?",
         "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+    define_procedure<4, 1, 0, tilemap_set_tile>("tilemap-set-tile",
+        "(tilemap-set-tile tm col row gid [layer]): a new map whose cell (col, row) of tile layer "
+        "number layer (0) holds gid (0 clears it), solidity and all; tm is unchanged.");
     define_procedure<3, 0, 0, tilemap_cell_one_way_p>("tilemap-cell-one-way?",
         "(tilemap-cell-one-way? tm col row): whether that cell is a one-way platform, which stops "
         "bodies only from above.");

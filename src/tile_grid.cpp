@@ -47,10 +47,14 @@ TileGrid& TileGrid::operator=(TileGrid&& o) noexcept {
 }
 
 void TileGrid::set_solid(int64_t col, int64_t row, bool solid) {
+    set_cell(col, row, solid ? kSolidCell : kEmptyCell);
+}
+
+void TileGrid::set_cell(int64_t col, int64_t row, uint8_t kind) {
     const int64_t c = col - origin_col_, r = row - origin_row_;
     if (c < 0 || r < 0 || c >= cols_ || r >= rows_)
-        throw std::out_of_range("tile grid: set_solid outside the grid");
-    solid_[static_cast<size_t>(r * cols_ + c)] = solid ? kSolidCell : kEmptyCell;
+        throw std::out_of_range("tile grid: set_cell outside the grid");
+    solid_[static_cast<size_t>(r * cols_ + c)] = kind == kEmptyCell || kind == kOneWayCell ? kind : kSolidCell;
     revision_.bump();
 }
 

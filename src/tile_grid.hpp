@@ -78,6 +78,8 @@ public:
     // bumps the revision. The grid does not grow: a cell outside it is
     // std::out_of_range.
     void set_solid(int64_t col, int64_t row, bool solid);
+    // The same for any kind of cell (kEmptyCell, kSolidCell, kOneWayCell).
+    void set_cell(int64_t col, int64_t row, uint8_t kind);
 
     int cols() const { return cols_; }
     int rows() const { return rows_; }

@@ -3,7 +3,7 @@
   #:use-module (downstroke native)
   #:re-export (make-tilemap tilemap? tilemap-width tilemap-height
                tilemap-tile-width tilemap-tile-height tilemap-cell-solid?
-               tilemap-cell-one-way?
+               tilemap-cell-one-way? tilemap-set-tile
                tilemap-solid-extent
                tilemap-objects tilemap-gid)
   #:export (load-tilemap))

@@ -120,6 +120,27 @@ bool Tilemap::cell_one_way(int64_t col, int64_t row) const {
     return false;
 }
 
+uint8_t Tilemap::cell_kind(int64_t col, int64_t row) const {
+    if (cell_solid(col, row)) return kSolidCell;
+    return cell_one_way(col, row) ? kOneWayCell : kEmptyCell;
+}
+
+bool Tilemap::gid_known(uint32_t gid) const {
+    gid &= kGidMask;
+    if (gid == 0 || tilesets.empty()) return true;
+    const Tileset* ts = tileset_for(gid);
+    return ts && (ts->tile_count == 0 || gid - ts->firstgid < static_cast<uint32_t>(ts->tile_count));
+}
+
+void Tilemap::set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid) {
+    if (layer >= layers.size()) throw std::out_of_range("tilemap: no tile layer " + std::to_string(layer));
+    TileLayer& l = layers[layer];
+    const int64_t c = col - l.origin_col, r = row - l.origin_row;
+    if (c < 0 || r < 0 || c >= l.width || r >= l.height)
+        throw std::out_of_range("tilemap: cell outside the layer");
+    l.cells[static_cast<size_t>(r * l.width + c)] = gid;
+}
+
 TileGrid Tilemap::solid_grid() const {
     Bounds b;
     for (const TileLayer& l : layers) b.add(l);

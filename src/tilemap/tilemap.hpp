@@ -125,6 +125,15 @@ struct Tilemap {
     bool cell_one_way(int64_t col, int64_t row) const;
     // The physics grid over the bounding box of every layer.
     TileGrid solid_grid() const;
+    // What the grid holds for a cell: kSolidCell, kOneWayCell or kEmptyCell.
+    uint8_t cell_kind(int64_t col, int64_t row) const;
+    // Whether a gid (flip bits ignored) may stand in a layer: 0, any gid of a
+    // map without tilesets (made in memory), else one of a tileset's tiles.
+    bool gid_known(uint32_t gid) const;
+    // Puts a raw gid into a cell of tile layer `layer`; std::out_of_range
+    // outside the layer. The grid is the caller's to update (cell_kind):
+    // TileGrid::set_cell in place, or on a copy.
+    void set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid);
 };
 
 // A malformed or unreadable map. what() names the file, and the line where
