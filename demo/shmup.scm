@@ -2,7 +2,7 @@
 ;;;
 ;;; No map, no physics pass: the ship moves by plain arithmetic ('left /
 ;;; 'right held), bullets and the enemy formation move with apply-velocity.
-;;; Pressing 'a fires a bullet; a bullet overlapping an enemy (aabb-overlap?)
+;;; Pressing 'a fires a bullet; a bullet overlapping an enemy (scene-pairs)
 ;;; removes both and scores the enemy's #:points. Bullets are not solid:
 ;;; they pass through nothing and are checked by hand, as the physics doc
 ;;; advises.
@@ -65,10 +65,6 @@
 (define (kind-of k) (lambda (e) (eq? (entity-ref e #:kind) k)))
 
 ;;; ------------------------------------------------------------ the game
-(define (overlaps? a b)
-  (aabb-overlap? (entity-ref a #:x 0) (entity-ref a #:y 0) (entity-ref a #:width 0) (entity-ref a #:height 0)
-                 (entity-ref b #:x 0) (entity-ref b #:y 0) (entity-ref b #:width 0) (entity-ref b #:height 0)))
-
 (define (steer-ship input ship)
   (let* ((dx (+ (if (input-held? input 'left) (- ship-speed) 0)
                 (if (input-held? input 'right) ship-speed 0)))
@@ -125,23 +121,28 @@
     (when fire?
       (play-sound 'shot)
       (note! game (list 'fired (entity-ref (car new-bullets) #:id) 'x (entity-ref (car new-bullets) #:x))))
-    ;; Each bullet takes the first enemy it overlaps.
-    (let loop ((bullets bullets) (enemies enemies) (kept '()) (score (entity-ref ship #:score)))
+    ;; Each bullet takes the first enemy it overlaps that no earlier bullet
+    ;; took: the pair query lists (bullet . enemy) by bullet, then by enemy.
+    (let loop ((pairs (scene-pairs (make-scene entities: (append bullets enemies))
+                                   '(#:kind . bullet) '(#:kind . enemy)))
+               (spent '()) (hit '()) (score (entity-ref ship #:score)))
       (cond
-       ((null? bullets)
-        (let ((kept (remove (lambda (b) (<= (+ (entity-ref b #:y) (entity-ref b #:height)) 0)) kept)))
+       ((null? pairs)
+        (let ((kept (remove (lambda (b) (or (memq b spent) (<= (+ (entity-ref b #:y) (entity-ref b #:height)) 0)))
+                            bullets)))
           (game-scene-set! game (update-scene scene entities:
                                               (cons (entity-set ship #:score score)
-                                                    (append enemies (reverse kept)))))))
-       ((find (lambda (e) (overlaps? (car bullets) e)) enemies)
-        => (lambda (hit)
-             (play-sound 'boom)
-             (note! game (list 'hit (entity-ref hit #:id) 'by (entity-ref (car bullets) #:id)))
-             (set! explosions (cons (list (entity-ref hit #:x) (entity-ref hit #:y)
-                                          (+ (game-frame game) explosion-frames))
-                                    explosions))
-             (loop (cdr bullets) (delete hit enemies eq?) kept (+ score (entity-ref hit #:points)))))
-       (else (loop (cdr bullets) enemies (cons (car bullets) kept) score))))))
+                                                    (append (remove (lambda (e) (memq e hit)) enemies) kept))))))
+       ((or (memq (caar pairs) spent) (memq (cdar pairs) hit))
+        (loop (cdr pairs) spent hit score))
+       (else
+        (let ((bullet (caar pairs)) (enemy (cdar pairs)))
+          (play-sound 'boom)
+          (note! game (list 'hit (entity-ref enemy #:id) 'by (entity-ref bullet #:id)))
+          (set! explosions (cons (list (entity-ref enemy #:x) (entity-ref enemy #:y)
+                                       (+ (game-frame game) explosion-frames))
+                                 explosions))
+          (loop (cdr pairs) (cons bullet spent) (cons enemy hit) (+ score (entity-ref enemy #:points)))))))))
 
 (define (centred-x text scale) (quotient (- screen-width (* 6 scale (string-length text))) 2))
 

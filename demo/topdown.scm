@@ -4,7 +4,7 @@
 ;;; acceleration, gravity and ground steps pass it by; 'up 'down 'left 'right
 ;;; set #:vx / #:vy and the tile collisions stop it at the walls. The player
 ;;; and the coins come from the map's object layer; walking over a coin
-;;; (aabb-overlap?) collects it.
+;;; (found with scene-query-rect) collects it.
 ;;;
 ;;; Keys (in a window): the arrows or WASD walk (diagonals too), Return
 ;;; starts again, Escape quits.
@@ -60,10 +60,6 @@
   (let ((entities (entities-at frame))) (and entities (car entities))))
 
 ;;; ------------------------------------------------------------ the game
-(define (overlaps? a b)
-  (aabb-overlap? (entity-ref a #:x 0) (entity-ref a #:y 0) (entity-ref a #:width 0) (entity-ref a #:height 0)
-                 (entity-ref b #:x 0) (entity-ref b #:y 0) (entity-ref b #:width 0) (entity-ref b #:height 0)))
-
 (define (axis-intent input minus plus speed)
   (+ (if (input-held? input minus) (- speed) 0) (if (input-held? input plus) speed 0)))
 
@@ -118,7 +114,9 @@
          (speed (entity-ref player #:speed 3))
          (vx (axis-intent input 'left 'right speed))
          (vy (axis-intent input 'up 'down speed))
-         (taken (filter (lambda (c) (overlaps? player c)) coins)))
+         (taken (scene-query-rect scene (entity-ref player #:x) (entity-ref player #:y)
+                                  (entity-ref player #:width) (entity-ref player #:height)
+                                  '(#:type . coin))))
     (report-walls! game player)
     (for-each (lambda (c)
                 (play-sound 'coin)
