@@ -1,6 +1,7 @@
 // The spatial queries of (downstroke query) and the tile queries, as native
 // procedures: decode the entities' boxes, ask the core (query.hpp), hand back
 // the very entity objects that matched, in list order.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -21,6 +22,7 @@ struct QueryScratch {
     std::vector<Box> a, b;
     std::vector<uint32_t> found;
     std::vector<int32_t> a_in_b, b_in_a;
+    std::vector<std::pair<uintptr_t, int32_t>> index;  // addresses of one list, sorted
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     PairQueryScratch pair_scratch;
     std::vector<RayHit> hits;
@@ -126,16 +128,20 @@ SCM select(SCM entities, SCM key, SCM value) {
 }
 
 // position in `within` of each element of `of` (eq?), or -1; all -1 when the
-// lists share nothing, which is the common case (bullets × enemies).
-void shared_positions(SCM of, SCM within, std::vector<int32_t>& out) {
-    out.assign(static_cast<size_t>(scm_ilength(of)), -1);
-    SCM table = scm_c_make_hash_table(0);
+// lists share nothing, which is the common case (bullets × enemies). The
+// addresses are only compared: both lists keep their objects alive for the
+// call, and Guile's collector does not move objects.
+void shared_positions(SCM of, SCM within, std::vector<std::pair<uintptr_t, int32_t>>& index,
+                      std::vector<int32_t>& out) {
+    index.clear();
     int32_t k = 0;
-    for (SCM l = within; scm_is_pair(l); l = SCM_CDR(l), ++k) scm_hashq_set_x(table, SCM_CAR(l), scm_from_int32(k));
-    size_t i = 0;
-    for (SCM l = of; scm_is_pair(l); l = SCM_CDR(l), ++i) {
-        SCM at = scm_hashq_ref(table, SCM_CAR(l), SCM_BOOL_F);
-        if (scm_is_true(at)) out[i] = scm_to_int32(at);
+    for (SCM l = within; scm_is_pair(l); l = SCM_CDR(l), ++k) index.emplace_back(SCM_UNPACK(SCM_CAR(l)), k);
+    std::sort(index.begin(), index.end());
+    out.clear();
+    for (SCM l = of; scm_is_pair(l); l = SCM_CDR(l)) {
+        const uintptr_t a = SCM_UNPACK(SCM_CAR(l));
+        const auto it = std::lower_bound(index.begin(), index.end(), std::pair<uintptr_t, int32_t>{a, -1});
+        out.push_back(it != index.end() && it->first == a ? it->second : -1);
     }
 }
 
@@ -143,8 +149,8 @@ SCM pairs(SCM as, SCM bs) {
     Failure f{"scene-pairs"};
     QueryScratch& s = scratch();
     if (decode_boxes(as, Arg("first group"), s.a, f) && decode_boxes(bs, Arg("second group"), s.b, f)) {
-        shared_positions(as, bs, s.a_in_b);
-        shared_positions(bs, as, s.b_in_a);
+        shared_positions(as, bs, s.index, s.a_in_b);
+        shared_positions(bs, as, s.index, s.b_in_a);
         s.pairs.clear();
         guarded(f, nullptr, [&] { overlapping_pairs(s.a, s.b, {s.a_in_b, s.b_in_a}, s.pair_scratch, s.pairs); });
     }
