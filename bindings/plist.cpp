@@ -86,14 +86,43 @@ bool decode(Flag, SCM, SCM v, bool& out, uint32_t field, Decoded& d, Failure&) {
 bool decode(Skips, SCM key, SCM v, uint16_t& out, uint32_t, Decoded&, Failure& f) {
     return decode_skips(key, v, out, f);
 }
-bool decode(Tag, SCM, SCM v, int64_t& out, uint32_t, Decoded&, Failure&) {
+// The pairs and vector slots an #:id or #:group-id may hold. identity_tag
+// compares ids with equal?, which never ends on two circular lists and
+// recurses once per nesting level: a bound on the cells keeps each
+// comparison short and refuses every cyclic id, while real ids (a symbol, a
+// string, a short list such as (enemy 3)) are far smaller.
+constexpr int kMaxIdCells = 1024;
+
+// Whether v holds at most `budget` pairs and vector slots (spent as counted).
+bool id_within(SCM v, int& budget) {
+    if (scm_is_pair(v)) {
+        for (; scm_is_pair(v); v = SCM_CDR(v))
+            if (--budget < 0 || !id_within(SCM_CAR(v), budget)) return false;
+        return true;  // an improper tail is an atom
+    }
+    if (scm_is_vector(v))
+        for (size_t i = 0, n = scm_c_vector_length(v); i < n; ++i)
+            if (--budget < 0 || !id_within(scm_c_vector_ref(v, i), budget)) return false;
+    return true;
+}
+
+bool decode_identity(SCM key, SCM v, int64_t& out, Failure& f) {
+    int budget = kMaxIdCells;
+    if (!id_within(v, budget)) {
+        fail(f, "wrong-type-arg", scm_list_3(key, scm_from_int(kMaxIdCells), v),
+             "entity key ~S: expected an id of at most ~S pairs and vector slots (never a circular list), got ~S");
+        return false;
+    }
     out = identity_tag(v);
     return true;
 }
-bool decode(Id, SCM, SCM v, int64_t& out, uint32_t, Decoded& d, Failure&) {
+
+bool decode(Tag, SCM key, SCM v, int64_t& out, uint32_t, Decoded&, Failure& f) {
+    return decode_identity(key, v, out, f);
+}
+bool decode(Id, SCM key, SCM v, int64_t& out, uint32_t, Decoded& d, Failure& f) {
     d.id = v;
-    out = identity_tag(v);
-    return true;
+    return decode_identity(key, v, out, f);
 }
 
 SCM encode(Num n) { return num_to_scm(n); }

@@ -39,6 +39,8 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f);
 // per distinct non-immediate, non-symbol id ever seen — strings, big or
 // inexact numbers, lists …; symbols, keywords and small integers cost
 // nothing. As with any hash-table key, an id must not be mutated once used.
+// decode_entity refuses an id of more than kMaxIdCells (plist.cpp) pairs and vector
+// slots (every circular one) before it gets here: equal? would not end.
 int64_t identity_tag(SCM value);
 
 struct Edit {

@@ -9,9 +9,9 @@
 // sanitizer report, a C++ exception reaching Guile (an abort) or a hang is a
 // finding.
 //
-// Circular tails (plists, #:skip-pipelines lists, entity lists) hang the
-// native walks until those check for cycles (docs/limits.org, "Lists"):
-// they are generated only with DS_FUZZ_CIRCULAR=1 in the environment.
+// Circular tails (plists, #:skip-pipelines lists, entity lists) are built
+// too: the native walks must refuse them (docs/limits.org, "Lists").
+// DS_FUZZ_CIRCULAR=0 leaves them out, to tell a cycle finding from another.
 // DS_FUZZ_SHOW=1 prints each entity list built and what a frame made of it,
 // to see what a failing input is (tools/fuzz.sh replay plist FILE).
 #include <libguile.h>
@@ -61,7 +61,7 @@ constexpr int kMaxDepth = 2;
 struct Natives {
     SCM step_entities, single[5], tile_steps[2], detect_on_solid, list_steps[3];
     SCM tilemap;  // 8×4 cells of 16 px, the bottom row solid
-    bool circular = false;
+    bool circular = true;
     bool show = false;
 };
 Natives natives;
@@ -99,7 +99,7 @@ SCM number(Recipe& in) {
 SCM value(Recipe& in, int depth);
 
 // Ties the last pair of a list (or plist) to its end: () mostly, else an atom
-// (a dotted tail) or, with DS_FUZZ_CIRCULAR, one of the list's own pairs.
+// (a dotted tail) or, unless DS_FUZZ_CIRCULAR=0, one of the list's own pairs.
 SCM close_list(Recipe& in, SCM head, SCM last, int length) {
     if (scm_is_false(last)) return head;
     const uint8_t how = in.byte() % 8;
@@ -195,9 +195,9 @@ SCM call(SCM proc, SCM args) {
     return scm_c_catch(SCM_BOOL_T, apply_call, &c, refused, nullptr, nullptr, nullptr);
 }
 
-bool env_is_1(const char* name) {
+bool env_is(const char* name, const char* wanted) {
     const char* v = std::getenv(name);
-    return v && std::strcmp(v, "1") == 0;
+    return v && std::strcmp(v, wanted) == 0;
 }
 
 // Writes `what`: value (cycles as datum labels) to stdout.
@@ -287,8 +287,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     natives.list_steps[1] = native(m, "sync-groups");
     natives.list_steps[2] = native(m, "%scene-hash-entities");
     natives.tilemap = make_tilemap(m);
-    natives.circular = env_is_1("DS_FUZZ_CIRCULAR");
-    natives.show = env_is_1("DS_FUZZ_SHOW");
+    natives.circular = !env_is("DS_FUZZ_CIRCULAR", "0");
+    natives.show = env_is("DS_FUZZ_SHOW", "1");
     return 0;
 }
 

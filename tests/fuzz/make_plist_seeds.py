@@ -2,8 +2,8 @@
 """Writes the plist target's seed recipes (seeds/plist/) in the byte language
 fuzz_plist.cpp reads: typical entities (a falling box, a player on the ground,
 a pushed pair, a group), so fuzzing starts from plists that reach every step;
-and (pending/plist/) the circular lists the native walks hang on until they
-check for cycles, next to the one the fuzzer found. Run it after changing that
+and (regressions/plist/) the circular lists the native walks once hung on,
+next to the one the fuzzer found. Run it after changing that
 language; the files are committed."""
 import os
 import struct
@@ -47,6 +47,12 @@ def circular_skips():
     return bytes([1]) + key("skip-pipelines") + bytes([6, 2, 1, 0, 1, 1, 7, 0]) + bytes([1, 0])
 
 
+def circular_id():
+    # key 15 (#:id), a list of two symbols tied back to its first pair, as
+    # in circular_skips(): a second entity with an equal one made equal? loop
+    return bytes([1]) + key("id") + bytes([6, 2, 1, 0, 1, 1, 7, 0]) + bytes([1, 0])
+
+
 SEEDS = {
     "falling-box": scene(entity(x=10, y=0, width=8, height=8, vy=1, gravityQ=True)),
     "player-on-ground": scene(entity(x=16, y=40, width=12, height=16, vx=2, gravityQ=True, on_groundQ=True)),
@@ -56,13 +62,14 @@ SEEDS = {
                    entity(x=0, y=0, width=4, height=4, group_id=1, group_local_x=5, group_local_y=-2)),
 }
 
-PENDING = {
+CIRCULAR = {
     "circular-skip-pipelines": scene(circular_skips()),
     "circular-entity-list": scene(entity(x=1), entity(y=2), tail=bytes([7, 0])),
+    "timeout-circular-id": scene(circular_id(), circular_id()),
 }
 
 root = os.path.dirname(os.path.abspath(__file__))
-for folder, files in (("seeds", SEEDS), ("pending", PENDING)):
+for folder, files in (("seeds", SEEDS), ("regressions", CIRCULAR)):
     here = os.path.join(root, folder, "plist")
     os.makedirs(here, exist_ok=True)
     for name, data in files.items():

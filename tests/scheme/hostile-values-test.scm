@@ -130,6 +130,32 @@
 (test-equal "a long proper #:skip-pipelines without gravity still falls" 1
   (entity-ref (apply-gravity (list #:gravity? #t #:vy 0 #:skip-pipelines (make-list 100 'jump)) #f 16) #:vy))
 
+;;; ---------------------------------------------------------------- circular ids
+;; Ids are compared with equal?, which never ends on two circular lists: the
+;; second of two entities with such ids used to hang the decoder (found by
+;; the plist fuzzer, tests/fuzz/regressions/plist/timeout-circular-id).
+(test-assert "step-scene, two entities with circular #:id"
+  (refused? 'wrong-type-arg
+            (lambda () (step-scene (make-scene entities: (list (list #:x 0 #:id (circular 'a 'b))
+                                                               (list #:x 9 #:id (circular 'a 'b)))) 16))
+            "step-scene" "#:id" "1024 pairs" "circular list"))
+(test-assert "apply-gravity, an #:id holding a circular list"
+  (refused? 'wrong-type-arg
+            (lambda () (apply-gravity (list #:gravity? #t #:id (list 'boss (circular 1 2))) #f 16))
+            "apply-gravity" "#:id" "circular list"))
+(test-assert "sync-groups, a circular #:group-id"
+  (refused? 'wrong-type-arg
+            (lambda () (sync-groups (list (list #:x 0 #:group-id (circular 'g)))))
+            "sync-groups" "#:group-id" "circular list"))
+(test-assert "scene-hash, a vector #:id past 1024 slots"
+  (refused? 'wrong-type-arg
+            (lambda () (scene-hash (make-scene entities: (list (list #:x 0 #:id (make-vector 1025 0))))))
+            "scene-hash" "#:id" "1024 pairs"))
+(test-equal "an #:id of 1024 pairs is still an id" (iota 1024)
+  (entity-ref (car (resolve-entity-collisions (list (list #:x 0 #:id (iota 1024))
+                                                    (list #:x 99 #:id (iota 1024)))))
+              #:id))
+
 ;;; ---------------------------------------------------------------- circular entity lists
 (define scene-with (@@ (downstroke world) %scene-with-entities))
 (test-assert "resolve-entity-collisions, a circular entity list"

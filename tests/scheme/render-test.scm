@@ -189,6 +189,19 @@
                                                              scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 1 #:height 1 #:sprite "hero"))))
                                                   (string-append dir "/x.png"))))
              "#:sprite" "\"hero\""))
+;; Drawing walks every entity natively too (issue 19): a cycle is refused.
+(define (ring . xs) (let ((l (list-copy xs))) (set-cdr! (last-pair l) l) l))
+(define (drawing-error scene)
+  (error-text (lambda () (game-capture (make-game width: 8 height: 8 scene: scene) (string-append dir "/ring.png")))))
+(test-equal "a circular plist is refused by game-draw"
+  "In procedure game-draw: entity 0: expected a keyword plist, got a circular or improper list\n"
+  (drawing-error (make-scene entities: (list (ring #:x 1 #:y 2)))))
+(test-equal "a circular entity list is refused by game-draw"
+  "In procedure game-draw: entities: expected a proper list, got ((#:x 0) . #0#)\n"
+  (drawing-error ((@@ (downstroke world) %scene-with-entities) (make-scene) (ring '(#:x 0)))))
+(test-equal "two circular #:id values are refused by game-draw"
+  "In procedure game-draw: entity key #:id: expected an id of at most 1024 pairs and vector slots (never a circular list), got (a . #0#)\n"
+  (drawing-error (make-scene entities: (list (list #:x 0 #:id (ring 'a)) (list #:x 4 #:id (ring 'a))))))
 (define no-image (load-tilemap (string-append data "/maps/render/no-image.tmx")))
 (test-assert "a map whose image is missing loads (physics needs no images)" (tilemap? no-image))
 (test-assert "… and drawing it names the missing file"

@@ -201,6 +201,23 @@
 (close-port flood)
 (test-equal "the game still serves the others" "5\n" (answer other "(+ 2 3)"))
 
+;; A 16 MB line (no newline): discarded as it arrives, so the server closes
+;; the connection at 1 MiB while the client still writes; its write then
+;; fails (EPIPE), and what the server said is still there to read.
+(define torrent (open-client served-path))
+(define torrent-write
+  (catch 'system-error
+    (lambda () (display (make-string (* 16 1024 1024) #\b) torrent) (force-output torrent) 'written)
+    (lambda (key . args) (system-error-errno (cons key args)))))
+(test-equal "a 16 MB line: the server stops reading it (the client's write fails)" EPIPE torrent-write)
+;; Read up to the message's end only: closing with input unread, the server
+;; resets the connection, so a read past what it sent fails (ECONNRESET).
+(test-equal "and says why before it closes"
+  "\ndownstroke: input line longer than 1048576 bytes discarded; closing the connection\n"
+  (read-until torrent "closing the connection\n"))
+(close-port torrent)
+(test-equal "the game serves on after the 16 MB line" "8\n" (answer other "(+ 4 4)"))
+
 ;;; Output waiting for a client is bounded too.
 (define talker (open-client served-path))
 (send! talker "(display (make-string (* 5 1024 1024) #\\x))")
