@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "convert.hpp"
+#include "list_walk.hpp"
 #include "plist.hpp"
 #include "query.hpp"
 #include "registry.hpp"
@@ -20,7 +21,7 @@ namespace {
 // plain data: the entities themselves stay in the caller's lists.
 struct QueryScratch {
     std::vector<Box> a, b;
-    std::vector<uint32_t> found;
+    std::vector<uint32_t> found, found_b;  // positions in the caller's list
     std::vector<int32_t> a_in_b, b_in_a;
     std::vector<std::pair<uintptr_t, int32_t>> index;  // addresses of one list, sorted
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
@@ -38,16 +39,17 @@ struct HitKeys {
 };
 HitKeys hit_keys;
 
-bool proper_list(SCM list, Arg a, Failure& f) {
+bool proper_list(SCM list, const char* what, Failure& f) {
     if (scm_ilength(list) >= 0) return true;  // Floyd's check: circular and dotted lists fail
-    fail_arg(f, a, list, "a proper list of entities");
+    if (circular<1>(list)) fail_circular(f, what, "a list of entities", list);
+    else fail_arg(f, Arg(what), list, "a proper list of entities");
     return false;
 }
 
 // The boxes of a list of entities, in order.
-bool decode_boxes(SCM entities, Arg a, std::vector<Box>& out, Failure& f) {
+bool decode_boxes(SCM entities, const char* what, std::vector<Box>& out, Failure& f) {
     out.clear();
-    if (!proper_list(entities, a, f)) return false;
+    if (!proper_list(entities, what, f)) return false;
     for (SCM l = entities; scm_is_pair(l); l = SCM_CDR(l)) {
         Decoded d;
         if (!decode_entity(SCM_CAR(l), d, f)) return false;
@@ -82,7 +84,7 @@ SCM query_rect(SCM entities, SCM x, SCM y, SCM w, SCM h) {
     double v[4];
     QueryScratch& s = scratch();
     if (finite_args({{x, "x"}, {y, "y"}, {w, "width"}, {h, "height"}}, v, f) &&
-        decode_boxes(entities, Arg("entities"), s.a, f)) {
+        decode_boxes(entities, "entities", s.a, f)) {
         s.found.clear();
         guarded(f, nullptr, [&] { ds::query_rect(s.a, {v[0], v[1], v[2], v[3]}, s.found); });
     }
@@ -94,7 +96,7 @@ SCM query_point(SCM entities, SCM x, SCM y) {
     Failure f{"scene-query-point"};
     double v[2];
     QueryScratch& s = scratch();
-    if (finite_args({{x, "x"}, {y, "y"}}, v, f) && decode_boxes(entities, Arg("entities"), s.a, f)) {
+    if (finite_args({{x, "x"}, {y, "y"}}, v, f) && decode_boxes(entities, "entities", s.a, f)) {
         s.found.clear();
         guarded(f, nullptr, [&] { ds::query_point(s.a, v[0], v[1], s.found); });
     }
@@ -106,7 +108,7 @@ SCM query_point(SCM entities, SCM x, SCM y) {
 SCM select(SCM entities, SCM key, SCM value) {
     Failure f{"scene-select"};
     if (!scm_is_keyword(key)) fail_arg(f, Arg("key"), key, "a keyword");
-    else if (proper_list(entities, Arg("entities"), f)) {
+    else if (proper_list(entities, "entities", f)) {
         std::vector<uint32_t>& found = scratch().found;
         found.clear();
         uint32_t k = 0;
@@ -148,7 +150,7 @@ void shared_positions(SCM of, SCM within, std::vector<std::pair<uintptr_t, int32
 SCM pairs(SCM as, SCM bs) {
     Failure f{"scene-pairs"};
     QueryScratch& s = scratch();
-    if (decode_boxes(as, Arg("first group"), s.a, f) && decode_boxes(bs, Arg("second group"), s.b, f)) {
+    if (decode_boxes(as, "first group", s.a, f) && decode_boxes(bs, "second group", s.b, f)) {
         shared_positions(as, bs, s.index, s.a_in_b);
         shared_positions(bs, as, s.index, s.b_in_a);
         s.pairs.clear();
@@ -158,6 +160,50 @@ SCM pairs(SCM as, SCM bs) {
     SCM va = scm_vector(as), vb = scm_vector(bs), head = SCM_EOL, *tail = &head;
     for (const auto& [i, j] : s.pairs) {
         *tail = scm_cons(scm_cons(SCM_SIMPLE_VECTOR_REF(va, i), SCM_SIMPLE_VECTOR_REF(vb, j)), SCM_EOL);
+        tail = SCM_CDRLOC(*tail);
+    }
+    return head;
+}
+
+// The value under `key` in a validated plist, or SCM_UNDEFINED.
+SCM value_of_key(SCM plist, SCM key) {
+    for (SCM p = plist; scm_is_pair(p); p = SCM_CDDR(p))
+        if (scm_is_eq(SCM_CAR(p), key)) return SCM_CADR(p);
+    return SCM_UNDEFINED;
+}
+bool chosen(SCM plist, SCM key, SCM value) {
+    const SCM v = value_of_key(plist, key);
+    return !SCM_UNBNDP(v) && scm_is_true(scm_equal_p(v, value));
+}
+
+// scene-pairs with both groups chosen by (key . value): one walk of the list
+// decodes each entity once and files it under either group, or both.
+SCM pairs_by_key(SCM entities, SCM key_a, SCM value_a, SCM key_b, SCM value_b) {
+    Failure f{"scene-pairs"};
+    QueryScratch& s = scratch();
+    if (!scm_is_keyword(key_a)) fail_arg(f, Arg("where-a key"), key_a, "a keyword");
+    else if (!scm_is_keyword(key_b)) fail_arg(f, Arg("where-b key"), key_b, "a keyword");
+    else if (proper_list(entities, "entities", f)) {
+        s.a.clear(), s.b.clear(), s.a_in_b.clear(), s.b_in_a.clear(), s.found.clear(), s.found_b.clear();
+        uint32_t k = 0;
+        for (SCM l = entities; scm_is_pair(l); l = SCM_CDR(l), ++k) {
+            Decoded d;
+            if (!decode_entity(SCM_CAR(l), d, f)) break;
+            const bool in_a = chosen(SCM_CAR(l), key_a, value_a), in_b = chosen(SCM_CAR(l), key_b, value_b);
+            const Box box{d.body.x.v, d.body.y.v, d.body.w.v, d.body.h.v};
+            if (in_a) s.a.push_back(box), s.found.push_back(k), s.a_in_b.push_back(in_b ? static_cast<int32_t>(s.b.size()) : -1);
+            if (in_b) s.b.push_back(box), s.found_b.push_back(k), s.b_in_a.push_back(in_a ? static_cast<int32_t>(s.a.size() - 1) : -1);
+        }
+        if (!f) {
+            s.pairs.clear();
+            guarded(f, nullptr, [&] { overlapping_pairs(s.a, s.b, {s.a_in_b, s.b_in_a}, s.pair_scratch, s.pairs); });
+        }
+    }
+    if (f) raise(f);
+    SCM all = scm_vector(entities), head = SCM_EOL, *tail = &head;
+    for (const auto& [i, j] : s.pairs) {
+        *tail = scm_cons(scm_cons(SCM_SIMPLE_VECTOR_REF(all, s.found[i]), SCM_SIMPLE_VECTOR_REF(all, s.found_b[j])),
+                         SCM_EOL);
         tail = SCM_CDRLOC(*tail);
     }
     return head;
@@ -179,7 +225,7 @@ SCM raycast(SCM entities, SCM tilemap, SCM x0, SCM y0, SCM x1, SCM y1, SCM all) 
     const TileGrid* grid = nullptr;
     QueryScratch& s = scratch();
     if (finite_args({{x0, "x0"}, {y0, "y0"}, {x1, "x1"}, {y1, "y1"}}, v, f) && grid_from_scm(tilemap, grid, f) &&
-        decode_boxes(entities, Arg("entities"), s.a, f)) {
+        decode_boxes(entities, "entities", s.a, f)) {
         if (v[0] == v[2] && v[1] == v[3]) {
             fail(f, "out-of-range", scm_list_2(x0, y0), "a ray of zero length, from (~S, ~S) to itself");
         } else {
@@ -286,6 +332,8 @@ void register_query_procedures() {
     define_procedure<3, 0, 0, query_point>("%query-point", WrapperDoc{"(entities x y)", "scene-query-point", query});
     define_procedure<3, 0, 0, select>("%select", WrapperDoc{"(entities key value)", "scene-select", query});
     define_procedure<2, 0, 0, pairs>("%pairs", WrapperDoc{"(as bs)", "scene-pairs", query});
+    define_procedure<5, 0, 0, pairs_by_key>("%pairs-by-key",
+        WrapperDoc{"(entities key-a value-a key-b value-b)", "scene-pairs", query});
     define_procedure<7, 0, 0, raycast>("%raycast",
         WrapperDoc{"(entities tilemap x0 y0 x1 y1 all?)", "scene-raycast", query});
     define_procedure<5, 0, 0, tilemap_solid_cells>("tilemap-solid-cells",

@@ -53,8 +53,12 @@ optionally only those WHERE chooses."
 (see scene-select), by a's then b's list order. An entity never pairs with
 itself, and two entities both chosen by both sides are paired once."
   (let ((entities (entities-of 'scene-pairs scene)))
-    (%pairs (choose 'scene-pairs entities where-a)
-            (choose 'scene-pairs entities where-b))))
+    (check-where 'scene-pairs where-a)
+    (check-where 'scene-pairs where-b)
+    (if (and (pair? where-a) (pair? where-b))
+        (%pairs-by-key entities (car where-a) (cdr where-a) (car where-b) (cdr where-b))
+        (%pairs (choose 'scene-pairs entities where-a)
+                (choose 'scene-pairs entities where-b)))))
 
 (define* (scene-raycast scene x0 y0 x1 y1 #:optional where #:key all?)
   "Cast the segment from (X0, Y0) towards (X1, Y1) (the end not included)

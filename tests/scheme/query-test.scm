@@ -32,6 +32,14 @@
 (test-equal "bullets × enemies" (list (cons b a)) (scene-pairs scene '(#:kind . bullet) '(#:kind . enemy)))
 (test-equal "everything × everything: each pair once, nobody with itself" (list (cons a b))
   (scene-pairs scene #f #f))
+(let* ((p (box 0 0 10 10 #:kind 'enemy)) (q (box 5 5 10 10 #:kind 'enemy)) (r (box 8 0 4 4 #:kind 'enemy))
+       (s (make-scene entities: (list p q r))))
+  (test-equal "one group against itself, by key: each pair once, by list order"
+    (list (cons p q) (cons p r))
+    (scene-pairs s '(#:kind . enemy) '(#:kind . enemy)))
+  (test-equal "the same through predicates"
+    (scene-pairs s '(#:kind . enemy) '(#:kind . enemy))
+    (scene-pairs s (lambda (e) #t) (lambda (e) #t))))
 
 ;; Random scenes against the plain double loop over aabb-overlap?.
 (define (random-scene seed n)
