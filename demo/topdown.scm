@@ -4,7 +4,9 @@
 ;;; acceleration, gravity and ground steps pass it by; 'up 'down 'left 'right
 ;;; set #:vx / #:vy and the tile collisions stop it at the walls. The player
 ;;; and the coins come from the map's object layer; walking over a coin
-;;; (found with scene-query-rect) collects it.
+;;; (found with scene-query-rect) collects it. A guard patrols the bottom of
+;;; the room and turns where a ray (scene-raycast) finds a wall just ahead;
+;;; it is not solid and does the player no harm.
 ;;;
 ;;; Keys (in a window): the arrows or WASD walk (diagonals too), Return
 ;;; starts again, Escape quits.
@@ -28,6 +30,7 @@
 (define player-standing (sprite 0))
 (define player-walking (sprite 1))
 (define coin-picture (sprite 10))
+(define guard-pictures (vector (sprite 3) (sprite 4)))
 
 (load-demo-sounds! 'coin)
 
@@ -49,6 +52,14 @@
 
 (define coins0
   (map (lambda (o) (append (object->entity o) (list #:sprite coin-picture))) (objects-of-type 'coin)))
+
+;;; The guard walks along rows 12–13, between the block and the bottom wall.
+(define guard0
+  (list #:id 'guard #:type 'guard #:x 100 #:y 196 #:width 12 #:height 12 #:vx 2 #:vy 0
+        #:gravity? #f #:sprite (vector-ref guard-pictures 0)))
+
+(define (entities-of-type scene type)
+  (filter (lambda (e) (eq? (entity-ref e #:type) type)) (scene-entities scene)))
 
 ;;; ------------------------------------------------------------ bookkeeping
 (define demo-script "topdown.scm")
@@ -99,7 +110,7 @@
   (set! blocked '(#f . #f))
   (set! start-frame (+ (game-frame game) 1))
   (game-scene-set! game (update-scene (game-scene game)
-                                      entities: (cons (dress player0 0 0 0) coins0))))
+                                      entities: (cons (dress player0 0 0 0) (append coins0 (list guard0))))))
 
 (define (update game dt)
   (if (input-pressed? (game-input game) 'start)
@@ -110,7 +121,7 @@
   (let* ((input (game-input game))
          (scene (game-scene game))
          (player (car (scene-entities scene)))
-         (coins (cdr (scene-entities scene)))
+         (coins (entities-of-type scene 'coin))
          (speed (entity-ref player #:speed 3))
          (vx (axis-intent input 'left 'right speed))
          (vy (axis-intent input 'up 'down speed))
@@ -128,14 +139,31 @@
            (player (entity-set (entity-set player #:vx vx) #:vy vy))
            (player (dress player vx vy (game-frame game))))
       (game-scene-set! game (update-scene scene entities:
-                                          (cons player (remove (lambda (c) (memq c taken)) coins)))))))
+                                          (cons player (append (remove (lambda (c) (memq c taken)) coins)
+                                                               (map (lambda (g) (patrol game scene g))
+                                                                    (entities-of-type scene 'guard)))))))))
+
+(define guard-sight 8)                  ; px past its front edge a guard looks for a wall
+
+(define (patrol game scene guard)
+  ;; A ray from the middle of the guard's front edge, against the walls only
+  ;; (no entity is chosen), finds a wall within guard-sight: turn round.
+  (let* ((vx (entity-ref guard #:vx)) (x (entity-ref guard #:x)) (w (entity-ref guard #:width))
+         (front (if (positive? vx) (+ x w) x))
+         (eye-y (+ (entity-ref guard #:y) (quotient (entity-ref guard #:height) 2)))
+         (wall (scene-raycast scene front eye-y (+ front (if (positive? vx) guard-sight (- guard-sight))) eye-y
+                              (lambda (e) #f)))
+         (vx (if wall (- vx) vx)))
+    (when wall (note! game (list 'turn (entity-ref guard #:id) 'x x)))
+    (entity-set (entity-set (entity-set guard #:vx vx) #:flip-x? (negative? vx))
+                #:sprite (vector-ref guard-pictures (modulo (quotient (game-frame game) 8) 2)))))
 
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
 (define (draw-hud! game)
   ;; The player and the coins are drawn by the engine from their #:sprite.
   (let* ((entities (scene-entities (game-scene game)))
-         (left (length (cdr entities)))
+         (left (length (filter (lambda (e) (eq? (entity-ref e #:type) 'coin)) entities)))
          (total (length coins0))
          (width (game-width game)))
     (draw-label (format #f "SCORE ~a" (entity-ref (car entities) #:score 0)) 4 4 'white)
@@ -158,7 +186,7 @@
       (let ((p (car entities)))
         (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)  score ~a  coins left ~a~%"
                 frame (entity-ref p #:x) (entity-ref p #:y) (entity-ref p #:vx) (entity-ref p #:vy)
-                (entity-ref p #:score) (length (cdr entities)))))))
+                (entity-ref p #:score) (length (entities-of-type (game-scene game) 'coin)))))))
 
 ;;; Built-in input: right to the inner wall, down to the bottom wall, left,
 ;;; up, then diagonally across the room and over to the last coin.
@@ -183,7 +211,8 @@
 
 (define game
   (make-game title: "Downstroke — top-down" width: 320 height: 240 frame-delay: 16
-             scene: (make-scene entities: (cons player0 coins0) tilemap: room camera-target: 'player)
+             scene: (make-scene entities: (cons player0 (append coins0 (list guard0))) tilemap: room
+                                camera-target: 'player)
              update: update render: render
              input-script: input-script))
 

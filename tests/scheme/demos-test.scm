@@ -175,7 +175,13 @@ demos' top-level names stay in that module."
     '((17 coin coin1) (73 coin coin2) (147 coin coin3) (210 coin coin4) (325 coin coin5))
     (filter (lambda (e) (eq? (cadr e) 'coin)) (events-of topdown)))
   (test-equal "score: four coins of 10 and one of 50" 90 (entity-ref (car (entities-of topdown)) #:score))
-  (test-equal "no coins left" '(player) (map (lambda (e) (entity-ref e #:id)) (entities-of topdown)))
+  (test-equal "no coins left: the player and the guard remain" '(player guard)
+    (map (lambda (e) (entity-ref e #:id)) (entities-of topdown)))
+  ;; It walks 2 px a frame from x = 100 and looks 8 px past its front edge:
+  ;; the east wall (x = 304) is seen from x = 286, the west one (x = 16) from 22.
+  (test-equal "the guard turns where a ray finds a wall ahead"
+    '((92 turn guard x 286) (224 turn guard x 22) (356 turn guard x 286))
+    (filter (lambda (e) (eq? (cadr e) 'turn)) (events-of topdown)))
   (test-equal "a 'coin sound for each" '(17 73 147 210 325) (map car (game-sounds (game-of topdown))))
   (test-assert "walked over the grass at cell (5, 5) (not solid)"
     (any (lambda (k) (let ((x (entity-ref (t-at k) #:x)) (y (entity-ref (t-at k) #:y)))
