@@ -151,6 +151,10 @@ arbitrary code execution."
                                       (lambda () #t) (lambda () #f) (lambda () #t))
                               "w")))
     (set-port-encoding! port "UTF-8")
+    ;; Block-buffered: unbuffered, printing a value made one call per
+    ;; character, so any value past about 75 KB ran into the time limit.
+    ;; flush! forces it out before each send.
+    (setvbuf port 'block 4096)
     port))
 
 (define (say! c text)

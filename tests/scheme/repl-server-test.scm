@@ -117,6 +117,9 @@
 
 (test-equal "an expression's value" "3\n" (answer m "(+ 1 2)"))
 (test-equal "meta-commands work (,use)" "" (reply m ",use (ice-9 ftw)"))
+(test-equal "a 1 MB value arrives whole within the 0.5 s limit (the output port is buffered)"
+  (+ 1000000 3)                         ; the quotes and the newline
+  (string-length (answer m "(make-string 1000000 #\\a)")))
 
 ;;; Connections leave nothing behind.
 (define (fd-count) (value m "(length (scandir \"/proc/self/fd\"))"))
