@@ -60,7 +60,28 @@ bool lands_on(const Body& upper, const Body& rester) {
 
 }  // namespace
 
+namespace {
+
+// A one-way body (semantics §9) is a platform only for a body coming down
+// on it: not rising, not dropping through, its feet before the frame's move
+// (y − vy + h) at or above the platform's top before its own (y − vy).
+bool lands_from_above(const Body& m, const Body& o) {
+    return m.vy.v >= 0 && !m.drop_through && (m.y - m.vy + m.h).v <= (o.y - o.vy).v;
+}
+
+}  // namespace
+
 void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
+    if (a.one_way || b.one_way) {  // it lands, or the two pass through each other
+        if (a.one_way && b.one_way) return;
+        Body& m = a.one_way ? b : a;
+        const Body& o = a.one_way ? a : b;
+        if (!m.immovable && lands_from_above(m, o)) {
+            m.y = o.y - m.h;
+            m.vy = Num::integer(0);
+        }
+        return;
+    }
     if (a.immovable && b.immovable) return;
     const double ox = overlap(a.x, a.w, b.x, b.w);
     const double oy = overlap(a.y, a.h, b.y, b.h);

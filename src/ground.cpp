@@ -30,12 +30,18 @@ bool spans_meet(const Body& b, const Supporter& o) { return b.x.v < o.x + o.w &&
 
 }  // namespace
 
+// A one-way body (semantics §9) holds up only a body that is not rising
+// and not dropping through.
+bool may_stand_on(const Body& b, const Supporter& o) {
+    return !o.one_way || (b.vy.v >= 0 && !b.drop_through);
+}
+
 bool rests_on(const Body& b, const Supporter& o) {
-    return o.vy == 0 && o.y == b.y.v + b.h.v && spans_meet(b, o);
+    return o.vy == 0 && o.y == b.y.v + b.h.v && spans_meet(b, o) && may_stand_on(b, o);
 }
 
 bool entity_supports(const Body& b, const Supporter& o) {
-    if (!spans_meet(b, o)) return false;
+    if (!spans_meet(b, o) || !may_stand_on(b, o)) return false;
     return std::fabs((b.y.v + b.h.v) - o.y) <= kOnSolidTolerance &&
            std::fabs(b.vy.v - o.vy) <= kOnSolidTolerance;
 }

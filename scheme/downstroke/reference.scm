@@ -319,7 +319,13 @@ within the tolerance of E's feet, moving at nearly E's vertical speed."
        (< (num e #:x) (num+ (num o #:x) (num o #:width)))
        (< (num o #:x) (num+ (num e #:x) (num e #:width)))
        (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num o #:y))) *on-solid-tolerance*)
-       (<= (abs (num- (num e #:vy) (num o #:vy))) *on-solid-tolerance*)))
+       (<= (abs (num- (num e #:vy) (num o #:vy))) *on-solid-tolerance*)
+       (may-stand-on? e o)))
+
+(define (may-stand-on? e o)
+  "A one-way O (§9) holds up only an E that is not rising nor dropping through."
+  (or (not (flag o #:one-way?))
+      (and (>= (num e #:vy) 0) (not (flag e #:drop-through?)))))
 
 ;;; Resting contacts (beyond the seed; the resting-contacts? parameter): a
 ;;; still body whose feet are exactly on a solid tile's top, or on the top of
@@ -338,7 +344,8 @@ within the tolerance of E's feet, moving at nearly E's vertical speed."
        (zero? (num o #:vy))
        (= (num o #:y) (num+ (num e #:y) (num e #:height)))
        (< (num e #:x) (num+ (num o #:x) (num o #:width)))
-       (< (num o #:x) (num+ (num e #:x) (num e #:width)))))
+       (< (num o #:x) (num+ (num e #:x) (num e #:width)))
+       (may-stand-on? e o)))
 
 (define (rests? e tm holders slot)
   "Whether E, about to take gravity, rests: still, and on a tile or on one of
@@ -443,13 +450,27 @@ the larger half when everything is an exact integer."
 (define (above? upper lower)
   (< (centre2 (y upper) (h upper)) (centre2 (y lower) (h lower))))
 
+(define (lands-from-above? em m o)
+  "M (the box of entity EM) comes down on the one-way O: not rising, not
+dropping through, its feet before the frame's move at or above O's top
+before its own."
+  (and (>= (vector-ref m 5) 0) (not (flag em #:drop-through?))
+       (<= (num+ (num- (y m) (vector-ref m 5)) (h m)) (num- (y o) (vector-ref o 5)))))
+
 (define (resolve-pair! ea a a-rests eb b b-rests)
   "A resting body (resting contacts) holds up one whose centre is above its
 own, as an immovable body would."
   (let ((a-fixed (flag ea #:immovable?)) (b-fixed (flag eb #:immovable?))
         (ox (overlap (x a) (w a) (x b) (w b)))
         (oy (overlap (y a) (h a) (y b) (h b))))
-    (cond ((and a-fixed b-fixed) #t)
+    (cond ((or (flag ea #:one-way?) (flag eb #:one-way?))   ; §9: it lands, or they pass
+           (unless (and (flag ea #:one-way?) (flag eb #:one-way?))
+             (let* ((a-one-way (flag ea #:one-way?))
+                    (em (if a-one-way eb ea)) (m (if a-one-way b a)) (o (if a-one-way a b)))
+               (when (and (not (flag em #:immovable?)) (lands-from-above? em m o))
+                 (vector-set! m 1 (num- (y o) (h m)))
+                 (vector-set! m 5 0)))))
+          ((and a-fixed b-fixed) #t)
           (a-fixed (push-off-immovable! b a ox oy))
           (b-fixed (push-off-immovable! a b ox oy))
           ((and a-rests (above? b a)) (push-off-immovable! b a ox oy))

@@ -361,6 +361,28 @@
 (test-equal "dropping through: not" #f
   (stands? '(#:x 0 #:y 112 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:drop-through? #t)))
 
+;;; ---------------------------------------------------------------- one-way bodies (semantics §9)
+(define ledge '(#:x 0 #:y 100 #:width 64 #:height 8 #:solid? #t #:immovable? #t #:one-way? #t))
+;; Feet before the move: 90 − 8 + 16 = 98, at or above the ledge's top (100): it lands.
+(test-equal "landing on a one-way body from above"
+  (list ledge '(#:x 10 #:y 84 #:width 16 #:height 16 #:vy 0 #:solid? #t))
+  (resolve-entity-collisions (list ledge '(#:x 10 #:y 90 #:width 16 #:height 16 #:vy 8 #:solid? #t))))
+(let ((es (list ledge '(#:x 10 #:y 95 #:width 16 #:height 16 #:vy -6 #:solid? #t))))
+  (test-equal "rising through it" es (resolve-entity-collisions es)))
+(let ((es (list '(#:x 10 #:y 95 #:width 16 #:height 16 #:vy 2 #:solid? #t) ledge)))
+  (test-equal "feet already below its top (95 − 2 + 16 = 109 > 100): passing" es (resolve-entity-collisions es)))
+(let ((es (list ledge '(#:x 10 #:y 90 #:width 16 #:height 16 #:vy 8 #:solid? #t #:drop-through? #t))))
+  (test-equal "dropping through it" es (resolve-entity-collisions es)))
+(let ((es (list ledge (list-copy ledge))))
+  (test-equal "two one-way bodies pass through each other" es (resolve-entity-collisions es)))
+(define (stands-on-ledge? e) (entity-ref (detect-on-solid e (make-scene entities: (list ledge)) 16) #:on-ground?))
+(test-equal "standing on it: on the ground" #t
+  (stands-on-ledge? '(#:x 10 #:y 84 #:width 16 #:height 16 #:vy 0 #:gravity? #t)))
+(test-equal "rising past it: not" #f
+  (stands-on-ledge? '(#:x 10 #:y 84 #:width 16 #:height 16 #:vy -2 #:gravity? #t)))
+(test-equal "dropping through: not" #f
+  (stands-on-ledge? '(#:x 10 #:y 84 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:drop-through? #t)))
+
 ;;; ---------------------------------------------------------------- detect-on-solid
 ;; "Not itself" means not eq?: a flat solid box listed twice in its own scene
 ;; would otherwise stand on its own copy (feet 2 = its top 0 + 2, within 4).

@@ -350,6 +350,15 @@
                 (cons #:skip-pipelines 'gravity) (cons #:y 1+2i) (cons #:x +inf.0)
                 (cons #:vy +nan.0) (cons #:skip-pipelines '(gravity "tweens")))))
 
+;;; Solid immovable bodies exactly 8 px high are one-way ledges (semantics
+;;; §9). Decided from what was drawn, never drawn itself, so every seed keeps
+;;; the scene it had before one-way bodies existed, bar the flag.
+(define (one-way-ledge e)
+  (if (and (eq? #t (entity-ref e #:solid? #f)) (entity-ref e #:immovable? #f)
+           (eqv? 8 (entity-ref e #:height #f)))
+      (append e (list #:one-way? #t))
+      e))
+
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
@@ -361,7 +370,7 @@
          (slots (shuffle r (append group-slots (make-list (- n (length group-slots)) #f)))))
     (let loop ((slots slots) (boxes '()) (ids '()) (acc '()))
       (if (null? slots)
-          (let ((entities (reverse acc)))
+          (let ((entities (map one-way-ledge (reverse acc))))
             (values (if (and scene-gen-invalid? (chance r 1 30))
                         (let* ((i (ri r (length entities))) (p (invalid-pair r)))
                           (append (take entities i)
