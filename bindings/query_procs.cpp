@@ -104,6 +104,13 @@ SCM query_point(SCM entities, SCM x, SCM y) {
     return pick(entities, s.found);
 }
 
+// Whether a validated plist's first value under `key` (as entity-ref reads
+// it) is equal? to `value`; an absent key matches nothing.
+bool chosen(SCM plist, SCM key, SCM value) {
+    const SCM v = plist_get(plist, key, SCM_UNDEFINED);
+    return !SCM_UNBNDP(v) && scm_is_true(scm_equal_p(v, value));
+}
+
 // The entities whose value under `key` is equal? to `value`.
 SCM select(SCM entities, SCM key, SCM value) {
     Failure f{"scene-select"};
@@ -118,11 +125,7 @@ SCM select(SCM entities, SCM key, SCM value) {
                 fail_arg(f, Arg("entity"), e, "an entity plist");
                 break;
             }
-            for (SCM p = e; scm_is_pair(p); p = SCM_CDDR(p))
-                if (scm_is_eq(SCM_CAR(p), key)) {  // the first occurrence counts, as in entity-ref
-                    if (scm_is_true(scm_equal_p(SCM_CADR(p), value))) found.push_back(k);
-                    break;
-                }
+            if (chosen(e, key, value)) found.push_back(k);
         }
         if (!f) return pick(entities, found);
     }
@@ -163,17 +166,6 @@ SCM pairs(SCM as, SCM bs) {
         tail = SCM_CDRLOC(*tail);
     }
     return head;
-}
-
-// The value under `key` in a validated plist, or SCM_UNDEFINED.
-SCM value_of_key(SCM plist, SCM key) {
-    for (SCM p = plist; scm_is_pair(p); p = SCM_CDDR(p))
-        if (scm_is_eq(SCM_CAR(p), key)) return SCM_CADR(p);
-    return SCM_UNDEFINED;
-}
-bool chosen(SCM plist, SCM key, SCM value) {
-    const SCM v = value_of_key(plist, key);
-    return !SCM_UNBNDP(v) && scm_is_true(scm_equal_p(v, value));
 }
 
 // scene-pairs with both groups chosen by (key . value): one walk of the list
@@ -256,7 +248,8 @@ bool map_arg(SCM map, const MapHandle*& out, Failure& f) {
     return false;
 }
 
-int64_t cell_at(double v, int tile) { return static_cast<int64_t>(std::floor(v / tile)); }
+// The cell of a world coordinate, clamped as physics clamps (tile_grid.hpp).
+int64_t cell_at(double v, int tile) { return cell_of(Num::flonum(v), tile); }
 
 SCM tilemap_solid_cells(SCM map, SCM x, SCM y, SCM w, SCM h) {
     Failure f{"tilemap-solid-cells"};
@@ -264,12 +257,10 @@ SCM tilemap_solid_cells(SCM map, SCM x, SCM y, SCM w, SCM h) {
     double v[4];
     if (map_arg(map, m, f) && finite_args({{x, "x"}, {y, "y"}, {w, "width"}, {h, "height"}}, v, f)) {
         const TileGrid& g = m->grid;
-        // The cells a box [x, x+w) × [y, y+h) covers, clipped to the grid.
-        if (!(v[2] > 0 && v[3] > 0)) return SCM_EOL;
-        const CellRange cols = g.clip_cols({cell_at(v[0], g.tile_width()),
-                                            static_cast<int64_t>(std::ceil((v[0] + v[2]) / g.tile_width())) - 1});
-        const CellRange rows = g.clip_rows({cell_at(v[1], g.tile_height()),
-                                            static_cast<int64_t>(std::ceil((v[1] + v[3]) / g.tile_height())) - 1});
+        // The cells a box [x, x+w) × [y, y+h) covers (none when a size is
+        // not positive), clipped to the grid.
+        const CellRange cols = g.clip_cols(cells_of(Num::flonum(v[0]), Num::flonum(v[2]), g.tile_width()));
+        const CellRange rows = g.clip_rows(cells_of(Num::flonum(v[1]), Num::flonum(v[3]), g.tile_height()));
         SCM head = SCM_EOL, *tail = &head;
         for (int64_t r = rows.first; r <= rows.last; ++r)
             for (int64_t c = cols.first; c <= cols.last; ++c)
