@@ -13,8 +13,10 @@ bool tile_supports(const Body& b, const TileGrid& grid) {
     // dropping through, with its feet at most kOneWayFooting into the cell.
     const bool on_top = b.vy.v >= 0 && !b.drop_through &&
                         (b.y + b.h).v - static_cast<double>(row) * grid.tile_height() < kOneWayFooting;
-    for (int64_t c = cols.first; c <= cols.last; ++c)
-        if (grid.solid(c, row) || (on_top && grid.one_way(c, row))) return true;
+    for (int64_t c = cols.first; c <= cols.last; ++c) {
+        const uint8_t cell = grid.cell(c, row);
+        if (cell == kSolidCell || (on_top && cell == kOneWayCell)) return true;
+    }
     return false;
 }
 

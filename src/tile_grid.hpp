@@ -88,19 +88,17 @@ public:
     int64_t origin_col() const { return origin_col_; }
     int64_t origin_row() const { return origin_row_; }
 
-    bool solid(int64_t col, int64_t row) const {
+    // What a cell holds: kEmptyCell (also outside the grid), kSolidCell or
+    // kOneWayCell. One lookup, for loops that test both kinds.
+    uint8_t cell(int64_t col, int64_t row) const {
         col -= origin_col_;
         row -= origin_row_;
-        if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return false;
-        return solid_[static_cast<size_t>(row * cols_ + col)] == kSolidCell;
+        if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return kEmptyCell;
+        return solid_[static_cast<size_t>(row * cols_ + col)];
     }
+    bool solid(int64_t col, int64_t row) const { return cell(col, row) == kSolidCell; }
     // A one-way platform (semantics §9): it stops bodies only from above.
-    bool one_way(int64_t col, int64_t row) const {
-        col -= origin_col_;
-        row -= origin_row_;
-        if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return false;
-        return solid_[static_cast<size_t>(row * cols_ + col)] == kOneWayCell;
-    }
+    bool one_way(int64_t col, int64_t row) const { return cell(col, row) == kOneWayCell; }
 
     // The part of a column (row) range that lies inside the grid: physics
     // never walks cells that cannot be solid, however large the box or move.

@@ -78,8 +78,9 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     const double feet_before = (b.y - a.move + b.h).v;
     const double th = grid->tile_height();
     resolve_axis(a, rows, cols, [&](int64_t r, int64_t c) {
-        return grid->solid(c, r) ||
-               (may_land && grid->one_way(c, r) && feet_before <= static_cast<double>(r) * th);
+        const uint8_t cell = grid->cell(c, r);
+        return cell == kSolidCell ||
+               (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th);
     });
     return true;
 }

@@ -113,16 +113,13 @@ bool Tilemap::gid_one_way(uint32_t gid) const {
     return ts && ts->tile_one_way(gid - ts->firstgid);
 }
 
-bool Tilemap::cell_one_way(int64_t col, int64_t row) const {
-    if (cell_solid(col, row)) return false;
-    for (const TileLayer& layer : layers)
-        if (layer.solidity == LayerSolidity::FromTiles && gid_one_way(layer.raw_gid(col, row))) return true;
-    return false;
-}
+bool Tilemap::cell_one_way(int64_t col, int64_t row) const { return cell_kind(col, row) == kOneWayCell; }
 
 uint8_t Tilemap::cell_kind(int64_t col, int64_t row) const {
     if (cell_solid(col, row)) return kSolidCell;
-    return cell_one_way(col, row) ? kOneWayCell : kEmptyCell;
+    for (const TileLayer& layer : layers)
+        if (layer.solidity == LayerSolidity::FromTiles && gid_one_way(layer.raw_gid(col, row))) return kOneWayCell;
+    return kEmptyCell;
 }
 
 bool Tilemap::gid_known(uint32_t gid) const {
