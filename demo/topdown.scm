@@ -163,7 +163,7 @@
 (define (draw-hud! game)
   ;; The player and the coins are drawn by the engine from their #:sprite.
   (let* ((entities (scene-entities (game-scene game)))
-         (left (length (filter (lambda (e) (eq? (entity-ref e #:type) 'coin)) entities)))
+         (left (length (entities-of-type (game-scene game) 'coin)))
          (total (length coins0))
          (width (game-width game)))
     (draw-label (format #f "SCORE ~a" (entity-ref (car entities) #:score 0)) 4 4 'white)

@@ -14,12 +14,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/command_line.hpp"
 #include "common/guile_boot.hpp"
 #include "common/org_file.hpp"
 #include "common/run_info.hpp"
@@ -210,15 +210,14 @@ int query_main(int argc, char** argv) {
     std::string org = "docs/benchmarks.org";
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
+        if (a == "--frames" && i + 1 < argc) frames = count_arg(a, argv[++i], 1);
         else if (a == "--org" && i + 1 < argc) org = argv[++i];
         else {
             std::fprintf(stderr, "usage: downstroke-bench query [--frames F] [--org FILE]\n");
             return 2;
         }
     }
-    std::string command = "downstroke-bench";
-    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+    const std::string command = command_line(argc, argv);
     const int64_t start = now_ns();
     const std::string map_path = "demo/maps/platformer.tmx";
     const ds::Tilemap map = ds::load_tilemap(map_path);
@@ -229,7 +228,8 @@ int query_main(int argc, char** argv) {
     const Result np = native_pairs(frames), sp = scheme_pairs(frames, 0);
     const int loop_frames = std::max(1, frames / 10);  // about 0.1 s a frame
     const Result sl = scheme_pairs(loop_frames, 1);
-    const Result nr = native_rays(frames, grid), sr = scheme_rays(std::max(1, frames / 4), grid, map_path);
+    const int ray_frames = std::max(1, frames / 4);  // 10,000 Scheme calls a frame
+    const Result nr = native_rays(frames, grid), sr = scheme_rays(ray_frames, grid, map_path);
     RunInfo info = collect_run_info(command);
     info.total_s = (now_ns() - start) / 1e9;
 
@@ -240,7 +240,7 @@ int query_main(int argc, char** argv) {
          "=build/bin/downstroke-bench query= (=bench/query/=) on "
       << info.cpu << ", " << info.cores << " cores, " << info.date << ", " << info.build_type
       << ". Per frame: the median and min of " << frames << " frames (the\n"
-         "Scheme loop: " << loop_frames << "; Scheme rays: " << std::max(1, frames / 4)
+         "Scheme loop: " << loop_frames << "; Scheme rays: " << ray_frames
       << "); found is the last frame's count of pairs or hits.\n\n"
       << "| case | median ms | min ms | found | note |\n|-\n"
       << row("pairs, native core (" + std::to_string(kBullets) + " × " + std::to_string(kEnemies) + " boxes)", np, "=overlapping_pairs=")
