@@ -8,7 +8,8 @@
 // - bullets × enemies: 2,000 moving 4×4 bullets against 500 moving 16×16
 //   enemies in a 1280×720 field; the pair query against the same loop
 //   written with aabb-overlap? in Scheme;
-// - rays: 10,000 segments of up to 200 px a frame on demo/maps/platformer.tmx.
+// - rays: 10,000 segments of up to 200 px a frame on the 60×15 platformer
+//   level (bench/maps/platformer-60x15.tmx, the demo map as it was).
 // Writes the "Queries" section of docs/benchmarks.org.
 #include "query/queries.hpp"
 
@@ -219,7 +220,7 @@ int query_main(int argc, char** argv) {
     }
     const std::string command = command_line(argc, argv);
     const int64_t start = now_ns();
-    const std::string map_path = "demo/maps/platformer.tmx";
+    const std::string map_path = DS_BENCH_SOURCE_DIR "/bench/maps/platformer-60x15.tmx";
     const ds::Tilemap map = ds::load_tilemap(map_path);
     const ds::TileGrid grid = map.solid_grid();
     ensure_guile();

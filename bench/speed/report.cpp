@@ -158,7 +158,7 @@ each body goes through the same motion whatever N is.
   all directions, in an arena with a 1-tile border and short 1-tile-thick
   inner walls (48 tiles of open margin around the spawn area). Swept tile
   collision over long moves.
-- platformer :: =demo/maps/platformer.tmx= (60×15 tiles, loaded with the
+- platformer :: =bench/maps/platformer-60x15.tmx= (the demo level's first 60×15 tiles, loaded with the
   tilemap loader / =load-tilemap=) with N bots (12×16, gravity, not solid)
   dropped from the top rows, patrolling at vx ±2.
 

@@ -174,15 +174,17 @@ Scene bullets(int n) {
     return s;
 }
 
-// platformer: demo/maps/platformer.tmx with 12×16 gravity bots (not solid)
+// platformer: the demo platformer's first 60×15 level, frozen in
+// bench/maps/platformer-60x15.tmx (so figures stay comparable as the demo
+// grows), with 12×16 gravity bots (not solid)
 // dropped from the top rows, patrolling at vx ±2 and turning round at walls.
 Scene platformer(int n) {
     Scene s;
-    s.map_path = DS_BENCH_MAPS_DIR "/platformer.tmx";
+    s.map_path = DS_BENCH_SOURCE_DIR "/bench/maps/platformer-60x15.tmx";
     const ds::Tilemap map = ds::load_tilemap(s.map_path);
     const ds::TileGrid grid = map.solid_grid();
     if (grid.tile_width() != grid.tile_height())
-        throw std::runtime_error("platformer.tmx: tiles are not square");
+        throw std::runtime_error("platformer-60x15.tmx: tiles are not square");
     s.cols = grid.cols();
     s.rows = grid.rows();
     s.tile = grid.tile_width();
