@@ -232,8 +232,9 @@ SCM tilemap_cell_one_way_p(SCM m, SCM col, SCM row) {
 
 // A new map with one cell changed; the old map is untouched (scenes are
 // values: rewinding to a scene that held it still finds the old tile). The
-// copy's grid has a revision of its own, so no settled body sleeps through
-// the edit.
+// copy shares the old map's cells but for the edited chunk of the layer and
+// of the grid, and its grid has a revision of its own, so no settled body
+// sleeps through the edit.
 SCM tilemap_set_tile(SCM m, SCM col, SCM row, SCM gid, SCM layer) {
     Failure f;
     if (!check_map(m, "tilemap-set-tile", f)) raise(f);
@@ -259,9 +260,8 @@ SCM tilemap_set_tile(SCM m, SCM col, SCM row, SCM gid, SCM layer) {
     {
         std::unique_ptr<MapHandle> handle;
         guarded(f, "tilemap-set-tile", [&] {
-            handle = std::make_unique<MapHandle>(old);
-            handle->map.set_gid(l, c, r, g);
-            handle->grid.set_cell(c, r, handle->map.cell_kind(c, r));
+            handle = std::make_unique<MapHandle>(old);  // shares all but the edited chunks
+            set_tile(handle->map, handle->grid, l, c, r, g);
         });
         if (handle) result = wrap(std::move(handle));
     }
