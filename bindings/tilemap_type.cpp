@@ -236,15 +236,20 @@ SCM tilemap_cell_one_way_p(SCM m, SCM col, SCM row) {
 // of the grid, and its grid has a revision of its own, so no settled body
 // sleeps through the edit.
 SCM tilemap_set_tile(SCM m, SCM col, SCM row, SCM gid, SCM layer) {
-    Failure f;
-    if (!check_map(m, "tilemap-set-tile", f)) raise(f);
+    Failure f{"tilemap-set-tile"};
+    if (!is_tilemap(m)) {
+        fail_arg(f, "tm", m, "a tilemap");
+        raise(f);
+    }
     check_cell(col, row, f);
     const MapHandle& old = tilemap_handle(m);
     uint32_t g = 0;
     if (!from_scm(gid, g, Arg("gid"), f)) raise(f);
     const size_t layers = old.map.layers.size();
     size_t l = 0;
-    if (!SCM_UNBNDP(layer) && !(layers > 0 && scm_is_unsigned_integer(layer, 0, layers - 1)))
+    if (!SCM_UNBNDP(layer) && !scm_is_unsigned_integer(layer, 0, SIZE_MAX))
+        fail_arg(f, "layer", layer, "a tile layer number (an exact integer from 0)");
+    else if (!SCM_UNBNDP(layer) && !(layers > 0 && scm_is_unsigned_integer(layer, 0, layers - 1)))
         fail(f, "out-of-range", scm_list_1(layer), "no tile layer ~S");
     else if (!SCM_UNBNDP(layer)) l = scm_to_size_t(layer);
     if (!f && !old.map.gid_known(g)) fail(f, "out-of-range", scm_list_1(gid), "gid ~S belongs to none of the map's tilesets");
