@@ -9,6 +9,7 @@
 //   downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]
 //   downstroke-bench draw [--frames F] [--warmup W] [--rounds R] [--org FILE]
 //   downstroke-bench query [--frames F] [--org FILE]
+//   downstroke-bench tile-edit [--rounds R] [--org FILE]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -22,12 +23,14 @@
 #include "speed/isolate.hpp"
 #include "speed/options.hpp"
 #include "speed/speed.hpp"
+#include "tile_edit/tile_edits.hpp"
 
 int main(int argc, char** argv) {
     try {
         if (argc > 1 && std::string(argv[1]) == "child") return bench::child_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "accuracy") return bench::accuracy_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "query") return bench::query_main(argc, argv);
+        if (argc > 1 && std::string(argv[1]) == "tile-edit") return bench::tile_edit_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "draw") {
 #if DS_BENCH_HAVE_RENDER
             return bench::draw_main(argc, argv);
@@ -43,7 +46,7 @@ int main(int argc, char** argv) {
         }
         if (opts.mode == "soak") return bench::soak(opts);
         if (opts.mode != "speed") {
-            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw query)\n", opts.mode.c_str());
+            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw query tile-edit)\n", opts.mode.c_str());
             return 2;
         }
         return bench::speed(opts);

@@ -68,12 +68,22 @@ struct Skips {};
 struct Tag {};
 struct Id {};
 
+// A bignum the decoded double holds exactly, such as 2^64, is not lossy: it
+// is written back as itself (num_to_scm), so a frame that writes it and
+// restores it leaves the plist as it was, as the step-by-step composition
+// does. This is also what remember() (batch.cpp) assumes of an entity it
+// wrote: were such a bignum lossy when decoded afresh but not when taken
+// from the cache, step-scene's identity would hang on whether some other
+// native call had reused the cache slot in between.
+bool held_exactly(SCM v, Num n) { return n.exact && scm_is_true(scm_num_eq_p(v, num_to_scm(n))); }
+
 bool decode(Number, SCM key, SCM v, Num& out, uint32_t field, Decoded& d, Failure& f) {
     // A boolean flag is never lossy (decode(Flag…)): watching #:on-ground? #f
     // would make a frame that flips it and flips it back (sub-frames) rewrite
     // the plist for nothing.
-    if (!SCM_I_INUMP(v) && !SCM_REALP(v)) d.lossy |= static_cast<uint16_t>(field);
-    return decode_number(key, v, out, f);
+    if (!decode_number(key, v, out, f)) return false;
+    if (!SCM_I_INUMP(v) && !SCM_REALP(v) && !held_exactly(v, out)) d.lossy |= static_cast<uint16_t>(field);
+    return true;
 }
 bool decode(Flag, SCM, SCM v, bool& out, uint32_t field, Decoded& d, Failure&) {
     // A flag a step writes that holds a truthy non-boolean (#:on-ground? 'yes)

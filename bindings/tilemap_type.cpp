@@ -232,18 +232,24 @@ SCM tilemap_cell_one_way_p(SCM m, SCM col, SCM row) {
 
 // A new map with one cell changed; the old map is untouched (scenes are
 // values: rewinding to a scene that held it still finds the old tile). The
-// copy's grid has a revision of its own, so no settled body sleeps through
-// the edit.
+// copy shares the old map's cells but for the edited chunk of the layer and
+// of the grid, and its grid has a revision of its own, so no settled body
+// sleeps through the edit.
 SCM tilemap_set_tile(SCM m, SCM col, SCM row, SCM gid, SCM layer) {
-    Failure f;
-    if (!check_map(m, "tilemap-set-tile", f)) raise(f);
+    Failure f{"tilemap-set-tile"};
+    if (!is_tilemap(m)) {
+        fail_arg(f, "tm", m, "a tilemap");
+        raise(f);
+    }
     check_cell(col, row, f);
     const MapHandle& old = tilemap_handle(m);
     uint32_t g = 0;
     if (!from_scm(gid, g, Arg("gid"), f)) raise(f);
     const size_t layers = old.map.layers.size();
     size_t l = 0;
-    if (!SCM_UNBNDP(layer) && !(layers > 0 && scm_is_unsigned_integer(layer, 0, layers - 1)))
+    if (!SCM_UNBNDP(layer) && !scm_is_unsigned_integer(layer, 0, SIZE_MAX))
+        fail_arg(f, "layer", layer, "a tile layer number (an exact integer from 0)");
+    else if (!SCM_UNBNDP(layer) && !(layers > 0 && scm_is_unsigned_integer(layer, 0, layers - 1)))
         fail(f, "out-of-range", scm_list_1(layer), "no tile layer ~S");
     else if (!SCM_UNBNDP(layer)) l = scm_to_size_t(layer);
     if (!f && !old.map.gid_known(g)) fail(f, "out-of-range", scm_list_1(gid), "gid ~S belongs to none of the map's tilesets");
@@ -259,9 +265,8 @@ SCM tilemap_set_tile(SCM m, SCM col, SCM row, SCM gid, SCM layer) {
     {
         std::unique_ptr<MapHandle> handle;
         guarded(f, "tilemap-set-tile", [&] {
-            handle = std::make_unique<MapHandle>(old);
-            handle->map.set_gid(l, c, r, g);
-            handle->grid.set_cell(c, r, handle->map.cell_kind(c, r));
+            handle = std::make_unique<MapHandle>(old);  // shares all but the edited chunks
+            set_tile(handle->map, handle->grid, l, c, r, g);
         });
         if (handle) result = wrap(std::move(handle));
     }

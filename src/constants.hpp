@@ -17,6 +17,15 @@ constexpr double kOnSolidTolerance = 4.0;  // *on-solid-tolerance*, px and px/fr
 // falling (gravity makes vy at least 1), and must not stand there again.
 constexpr double kOneWayFooting = 1.0;
 
+// ---- storage
+// Tile-layer gids and solid-grid cells live in chunks of this many cells
+// (a power of two: the hot cell read is a shift and a mask), shared between
+// a map and its edited copies (shared_cells.hpp). An edit copies one chunk
+// (4 KiB of grid, 16 KiB of gids) and a table of one pointer per chunk (245
+// for a 1000² map); smaller chunks make that table, larger ones the chunk
+// copy, the bigger cost.
+constexpr int kCellChunkShift = 12;
+
 // ---- limits that refuse input
 // Sub-frames per frame (make-game substeps:, step-scene #:substeps): beyond
 // this a frame costs more than any game wants, and a typo such as 1e6 would

@@ -20,13 +20,14 @@ uint64_t GridRevision::next() { return last_revision.fetch_add(1, std::memory_or
 TileGrid::TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8_t> solid,
                    int64_t origin_col, int64_t origin_row)
     : cols_(cols), rows_(rows), tile_w_(tile_w), tile_h_(tile_h), origin_col_(origin_col),
-      origin_row_(origin_row), solid_(std::move(solid)) {
+      origin_row_(origin_row) {
     if (cols < 0 || rows < 0 || tile_w <= 0 || tile_h <= 0)
         throw std::invalid_argument("tile grid: sizes must be positive");
-    if (solid_.size() != static_cast<size_t>(cols) * static_cast<size_t>(rows))
+    if (solid.size() != static_cast<size_t>(cols) * static_cast<size_t>(rows))
         throw std::invalid_argument("tile grid: solid mask is not cols*rows long");
-    for (uint8_t& c : solid_)
+    for (uint8_t& c : solid)
         if (c != kEmptyCell && c != kOneWayCell) c = kSolidCell;
+    solid_ = SharedCells<uint8_t>(solid);
 }
 
 TileGrid::TileGrid(TileGrid&& o) noexcept { *this = std::move(o); }

@@ -12,6 +12,7 @@
 
 #include "constants.hpp"
 #include "number.hpp"
+#include "shared_cells.hpp"
 
 namespace ds {
 
@@ -64,7 +65,8 @@ public:
     // whose chunks start left of or above the origin).
     TileGrid(int cols, int rows, int tile_w, int tile_h, std::vector<uint8_t> solid,
              int64_t origin_col = 0, int64_t origin_row = 0);
-    // A copy is a grid of its own: same cells, a new revision. A moved-from
+    // A copy is a grid of its own: same cells (sharing their chunks until
+    // either grid is edited), a new revision. A moved-from
     // grid is left empty (0 × 0), with a new revision too.
     TileGrid(const TileGrid&) = default;
     TileGrid& operator=(const TileGrid&) = default;
@@ -110,7 +112,7 @@ private:
 
     int cols_ = 0, rows_ = 0, tile_w_ = 1, tile_h_ = 1;
     int64_t origin_col_ = 0, origin_row_ = 0;
-    std::vector<uint8_t> solid_;
+    SharedCells<uint8_t> solid_;  // row-major, one kind per cell
     GridRevision revision_;
 };
 

@@ -36,6 +36,8 @@ std::string usage() {
            "       downstroke-bench soak [--frames N] [--org FILE]   memory of each demo over N frames\n"
            "       downstroke-bench accuracy [--quick] [--org FILE] [--png FILE]   run time against error\n"
            "       downstroke-bench draw [--frames F] [--warmup W] [--rounds R] [--org FILE]   one drawn frame\n"
+           "       downstroke-bench query [--frames F] [--org FILE]   spatial queries per frame\n"
+           "       downstroke-bench tile-edit [--rounds R] [--org FILE]   one tile edit\n"
            "speed options:\n"
            "  --scene S[,S…]   rain crowd rest bullets platformer (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"

@@ -175,9 +175,9 @@ size_t draw_map(Canvas& c, TileArt& art, const Tilemap& map, int64_t cx, int64_t
         const CellWindow w = visible_cells(layer, map.tile_width, map.tile_height, cx, cy, c.width(),
                                            c.height(), over_w, over_h);
         for (int64_t row = w.row0; row < w.row1; ++row) {
-            const uint32_t* cells = layer.cells.data() + (row - layer.origin_row) * layer.width;
+            const size_t first = static_cast<size_t>((row - layer.origin_row) * layer.width - layer.origin_col);
             for (int64_t col = w.col0; col < w.col1; ++col) {
-                const uint32_t gid = cells[col - layer.origin_col];
+                const uint32_t gid = layer.cells[first + static_cast<size_t>(col)];
                 if (!gid) continue;
                 SDL_Surface* pic = art.tile(gid);
                 if (!pic) continue;

@@ -138,6 +138,16 @@ void Tilemap::set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid) {
     l.cells[static_cast<size_t>(r * l.width + c)] = gid;
 }
 
+void set_tile(Tilemap& map, TileGrid& grid, size_t layer, int64_t col, int64_t row, uint32_t gid) {
+    if (!map.gid_known(gid))
+        throw std::invalid_argument("set_tile: gid " + std::to_string(gid & kGidMask) +
+                                    " belongs to none of the map's tilesets");
+    if (grid.clip_cols({col, col}).empty() || grid.clip_rows({row, row}).empty())
+        throw std::out_of_range("set_tile: cell outside the grid");
+    map.set_gid(layer, col, row, gid);
+    grid.set_cell(col, row, map.cell_kind(col, row));
+}
+
 TileGrid Tilemap::solid_grid() const {
     Bounds b;
     for (const TileLayer& l : layers) b.add(l);

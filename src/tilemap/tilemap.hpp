@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../shared_cells.hpp"
 #include "../tile_grid.hpp"
 #include "map_bounds.hpp"
 
@@ -77,7 +78,9 @@ struct TileLayer {
     std::string name;
     int64_t origin_col = 0, origin_row = 0;  // map cell of cells[0]
     int width = 0, height = 0;
-    std::vector<uint32_t> cells;  // row-major raw gids, 0 = empty
+    // Row-major raw gids, 0 = empty; a copied layer shares them until one
+    // of the two is edited.
+    SharedCells<uint32_t> cells;
     Properties properties;
     LayerSolidity solidity = LayerSolidity::FromTiles;
     bool visible = true;
@@ -135,6 +138,15 @@ struct Tilemap {
     // TileGrid::set_cell in place, or on a copy.
     void set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid);
 };
+
+// Edits a map and its physics grid in place: cell (col, row) of tile layer
+// `layer` holds the raw gid `gid` (0 clears it), and the grid's cell becomes
+// what the map now makes it (cell_kind), which gives the grid a new revision
+// so that no settled body sleeps through the edit. `grid` is the map's
+// solid_grid() (or a copy edited alike). Throws, with map and grid
+// untouched: std::out_of_range for a cell outside the layer or the grid,
+// std::invalid_argument for a gid of none of the map's tilesets (gid_known).
+void set_tile(Tilemap& map, TileGrid& grid, size_t layer, int64_t col, int64_t row, uint32_t gid);
 
 // A malformed or unreadable map. what() names the file, and the line where
 // the XML parser gave one.

@@ -477,15 +477,16 @@ void read_chunks(const XmlFile& f, const XMLElement* data, Encoding enc, const T
     l.origin_row = s.r0;
     l.width = static_cast<int>(s.c1 - s.c0);
     l.height = static_cast<int>(s.r1 - s.r0);
-    l.cells.assign(static_cast<size_t>(s.area()), 0);
+    std::vector<uint32_t> block(static_cast<size_t>(s.area()), 0);
     for (const ChunkHead& ch : s.heads) {
         const std::vector<uint32_t> cells =
             decode_cells(f, ch.el, enc, ch.w, ch.h, chunk_name(ch.x, ch.y, l.name));
         check_gids(f, ch.el, map, cells, ch.w, ch.x, ch.y, l.name);
         for (int r = 0; r < ch.h; ++r)
             std::copy_n(cells.begin() + static_cast<ptrdiff_t>(r) * ch.w, ch.w,
-                        l.cells.begin() + (ch.y - s.r0 + r) * l.width + (ch.x - s.c0));
+                        block.begin() + (ch.y - s.r0 + r) * l.width + (ch.x - s.c0));
     }
+    l.cells = block;
 }
 
 // A finite map's layer covers exactly the map (Tiled: "always the same as
@@ -528,8 +529,9 @@ void read_tile_layer(const XmlFile& f, const XMLElement* e, GroupState g, Tilema
         read_chunks(f, data, enc, map, l);
     } else {
         std::tie(l.width, l.height) = finite_layer_size(f, e, map, l.name);
-        l.cells = decode_cells(f, data, enc, l.width, l.height, "layer '" + l.name + "'");
-        check_gids(f, data, map, l.cells, l.width, 0, 0, l.name);
+        const std::vector<uint32_t> cells = decode_cells(f, data, enc, l.width, l.height, "layer '" + l.name + "'");
+        check_gids(f, data, map, cells, l.width, 0, 0, l.name);
+        l.cells = cells;
     }
     map.layers.push_back(std::move(l));
 }

@@ -55,7 +55,7 @@
 ;;;                                    collide (resolve-entity-collisions walks the
 ;;;                                    pairs backwards), tween (step-tweens adds 1 ms),
 ;;;                                    raise (apply-velocity-x raises when |vx| > 100)
-(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1) (srfi srfi-9) (ice-9 format))
+(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1) (srfi srfi-9) (srfi srfi-11) (ice-9 format))
 
 (load "support.scm")
 (load "scene-gen.scm")
@@ -503,6 +503,21 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
                              (scene-entities (cdr n)) (scene-entities (cdr r)))))
            (and d (apply mm d))))))
 
+;;; Both sides' scenes with FRAME's tile edits (scene-gen's tile-edits, drawn
+;;; from the native side's entities) made to the map: the same new map on
+;;; both sides, as (values native reference). Without edits, NS and RS.
+(define edit-log '())                      ; this run's edits: ((frame edit …) …), last first
+
+(define (edit-scenes seed frame ns rs)
+  (let ((edits (tile-edits seed frame (scene-tilemap ns) (scene-entities ns))))
+    (when (= frame 0) (set! edit-log '()))
+    (if (null? edits)
+        (values ns rs)
+        (let ((m (edit-tilemap (scene-tilemap ns) edits)))
+          (set! edit-log (cons (cons frame edits) edit-log))
+          (count! 'tilemap-set-tile (length edits) (length edits) 0)
+          (values (update-scene ns #:tilemap m) (update-scene rs #:tilemap m))))))
+
 ;;; Step SCENE for frames 0 … LAST (#f: frame-count − 1) on both sides.
 ;;; Returns (mismatch . native-final-entities); the mismatch is #f when all
 ;;; agree. With STEPS? the single-step checks run on the chosen frames.
@@ -511,7 +526,9 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
     (let loop ((frame 0) (ns scene) (rs scene))
       (if (> frame last)
           (cons #f (scene-entities ns))
-          (let* ((dt (scene-dt seed frame))
+          (let*-values (((ns rs) (edit-scenes seed frame ns rs))
+                        ((dt) (scene-dt seed frame)))
+           (let* (
                  (m (and steps? (check-frame? frame) (check-steps ns dt frame))))
             (if m
                 (cons m #f)
@@ -521,7 +538,7 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
                   (count1! 'step-scene (and (ok? n) (not (eq? (cdr n) ns))) (not (or (ok? n) (ok? r))))
                   (cond (m (cons m ns))         ; ns: the input of the failing frame
                         ((not (ok? n)) (cons #f #f))   ; both raised: agreement, stop
-                        (else (loop (+ frame 1) (cdr n) (cdr r)))))))))))
+                        (else (loop (+ frame 1) (cdr n) (cdr r))))))))))))
 
 ;;; ---------------------------------------------------------------- shrinking
 (define shrink-budget 3000)                 ; predicate calls per shrink
@@ -614,6 +631,9 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
         (err "  native:    ~s~%" (mismatch-nval m))
         (err "  reference: ~s~%" (mismatch-rval m))
         (err "  before:    ~s~%" (mismatch-before m))
+        (unless (null? edit-log)
+          (err "  tile edits before frames ((frame (col row gid) ...) ...), made on both sides (edit-tilemap):~%    ~s~%"
+               (reverse edit-log)))
         (err "  re-run:    DS_DIFF_SEED=~a DS_DIFF_SCENES=1 XDG_CACHE_HOME=build/cache build/bin/downstroke \
 tests/scheme/run-suite.scm tests/scheme/differential-test.scm~%" seed)
         (let* ((small (shrink m seed mode spec))
@@ -746,7 +766,7 @@ answered #t), in how many of the ~a runs, and how many both sides refused:~%" (*
                       (format #t "  ~26a ~8d checks ~8d changed  ~5d runs ~6d both raised~%"
                               step (vector-ref v 0) (vector-ref v 1) (vector-ref v 3)
                               (vector-ref v 2)))))
-                step-names)
+                (append step-names '(tilemap-set-tile)))
       (force-output (current-output-port)))))
 
 ;;; ---------------------------------------------------------------- sub-frames, resting contacts
@@ -761,13 +781,14 @@ mismatch, as (frame . mismatch); #f when all FRAME-COUNT frames agree."
   (parameterize ((resting-contacts? rest?))
     (let loop ((frame 0) (ns scene) (rs scene))
       (and (< frame frame-count)
-           (let* ((dt (scene-dt seed frame))
-                  (n (attempt (lambda () ((nat 'step-scene) ns dt #:substeps k))))
-                  (r (attempt (lambda () ((ref 'step-scene) rs dt #:substeps k))))
-                  (m (scene-diff ns rs n r frame)))
-             (cond (m (cons frame m))
-                   ((not (ok? n)) #f)
-                   (else (loop (+ frame 1) (cdr n) (cdr r)))))))))
+           (let*-values (((ns rs) (edit-scenes seed frame ns rs))
+                         ((dt) (scene-dt seed frame)))
+             (let* ((n (attempt (lambda () ((nat 'step-scene) ns dt #:substeps k))))
+                    (r (attempt (lambda () ((ref 'step-scene) rs dt #:substeps k))))
+                    (m (scene-diff ns rs n r frame)))
+               (cond (m (cons frame m))
+                     ((not (ok? n)) #f)
+                     (else (loop (+ frame 1) (cdr n) (cdr r))))))))))
 
 (when (and reference-ok? (module-variable reference 'resting-contacts?))
   (do ((seed 1 (+ seed 1))) ((> seed variant-count))

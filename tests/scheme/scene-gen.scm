@@ -6,6 +6,9 @@
 ;;; (tilemap-spec->tilemap S)   a tilemap from a spec (#f → #f)
 ;;; (sparse-tilemap cols rows tw th '((index . gid) ...))
 ;;;                             a tilemap from its non-empty cells; reproducers print this
+;;; (tile-edits SEED FRAME TILEMAP ENTITIES)
+;;;                             the cells to change before FRAME, as ((col row gid) ...)
+;;; (edit-tilemap TILEMAP EDITS) a tilemap with those edits made
 ;;;
 ;;; Everything is a pure function of the seed: the generator has its own PRNG
 ;;; (xoshiro128**, seeded by splitmix64) on exact integers, so a seed names the
@@ -411,6 +414,47 @@
                  (id (entity-ref entity #:id)))
             (loop (cdr slots) (cons (cons x y) boxes) (if id (cons id ids) ids)
                   (cons entity acc)))))))
+
+;;; ---------------------------------------------------------------- tile edits
+;;; The cells to change in TILEMAP before FRAME of scene SEED, as ((col row
+;;; gid) …): on frames 4, 10, 16, … 1–3 edits, each at the cell under the
+;;; feet of one of ENTITIES (the frame's input; where a body rests, an edit
+;;; matters most) or, one time in three, anywhere in the map. A solid cell
+;;; is cleared (gid 0) or, one time in four, made one-way (gid 2); any other
+;;; becomes solid (gid 1) or one-way. Drawn from a stream of their own
+;;; (negative salts: the scene and its dt use 0, 1, 2 + frame), so every
+;;; seed keeps the scene it had before edits existed.
+(define edit-period 6)
+
+(define (tile-edits seed frame tilemap entities)
+  (if (not (and tilemap (= 4 (modulo frame edit-period))))
+      '()
+      (let* ((r (make-rng seed (- -1 frame)))
+             (cols (tilemap-width tilemap)) (rows (tilemap-height tilemap))
+             (tw (tilemap-tile-width tilemap)) (th (tilemap-tile-height tilemap)))
+        (define (feet e)                  ; (col . row) under e's feet, or #f
+          (false-if-exception
+           (let ((x (entity-ref e #:x)) (y (entity-ref e #:y))
+                 (w (entity-ref e #:width 0)) (h (entity-ref e #:height 0)))
+             (and (real? x) (real? y) (real? w) (real? h)
+                  (let ((c (inexact->exact (floor (/ (+ x (/ w 2)) tw))))
+                        (row (inexact->exact (floor (/ (+ y h) th)))))
+                    (and (< -1 c cols) (< -1 row rows) (cons c row)))))))
+        (define (cell)
+          (or (and (pair? entities) (not (chance r 1 3)) (feet (pick r entities)))
+              (cons (ri r cols) (ri r rows))))
+        (let loop ((k (rr r 1 3)) (acc '()))
+          (if (= k 0)
+              (reverse acc)
+              (let* ((c (cell))
+                     (gid (if (tilemap-cell-solid? tilemap (car c) (cdr c))
+                              (if (chance r 1 4) 2 0)
+                              (if (chance r 1 3) 2 1))))
+                (loop (- k 1) (cons (list (car c) (cdr c) gid) acc))))))))
+
+;;; TILEMAP with EDITS ((col row gid) …) applied.
+(define (edit-tilemap tilemap edits)
+  (fold (lambda (e m) (apply tilemap-set-tile m e)) tilemap edits))
 
 (define (generate-scene seed)
   (call-with-values (lambda () (generate-scene-parts seed))
