@@ -21,6 +21,11 @@ void write_generated(const std::string& file, const std::string& begin_marker, c
             before = old.substr(0, b);
             const auto eol = old.find('\n', e);
             after = eol == std::string::npos ? "" : old.substr(eol + 1);
+        } else if (!old.empty()) {
+            // A file without this section keeps everything it holds: the
+            // section goes at its end (other benches write the same file).
+            before = old + (old.back() == '\n' ? "\n" : "\n\n");
+            after.clear();
         }
     }
     std::ofstream o(file);

@@ -8,8 +8,10 @@ namespace bench {
 
 // Writes `generated` (which starts with the BEGIN line and ends after the END
 // line) into `file`: in place of the old block when the file has both
-// markers, keeping everything before and after; otherwise as a new document
-// fresh_before + generated + fresh_after. Throws when the file cannot be written.
+// markers, keeping everything before and after; at the end of a file that
+// lacks them (nothing in it is lost); and as the new document
+// fresh_before + generated + fresh_after when there is no file or it is
+// empty. Throws when the file cannot be written.
 void write_generated(const std::string& file, const std::string& begin_marker, const std::string& end_marker,
                      const std::string& generated, const std::string& fresh_before,
                      const std::string& fresh_after = "");

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "common/org_file.hpp"
@@ -29,13 +28,6 @@ std::string org_row(const std::vector<std::string>& cells) {
     std::string s = "|";
     for (const std::string& c : cells) s += " " + cell(c) + " |";
     return s + "\n";
-}
-
-std::string read_all(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 std::string section(const Document& d) {
@@ -137,8 +129,7 @@ void write_org(const std::string& file, const Document& doc) {
     // Without the markers the file is kept whole and the section goes after
     // it: docs/benchmarks.org belongs to the speed mode, which keeps
     // whatever follows its own block.
-    const std::string old = read_all(file);
-    write_generated(file, kBegin, kEnd, section(doc), old.empty() ? "#+title: Benchmarks\n\n" : old + "\n");
+    write_generated(file, kBegin, kEnd, section(doc), "#+title: Benchmarks\n\n");
 }
 
 }  // namespace bench::draw
