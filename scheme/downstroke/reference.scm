@@ -634,7 +634,9 @@ crushable body with the key that is not crushed, #f)."
     (unless (= (length start) (length entities))
       (fail 'carry-riders "expected the scene to hold as many entities as the list (~S), got ~S"
             (length entities) (length start)))
-    (carry-among (clear-crushed entities) start scene)))
+    ;; Crushed again after being cleared: the entity itself, as on the native side.
+    (same-or (map keep-if-unchanged (carry-among (clear-crushed entities) start scene) entities)
+             entities)))
 
 ;;; ---------------------------------------------------------------- easing (§6)
 ;;; Penner's curves as easings.net writes them; the ends are pinned to 0 and 1.
