@@ -1,7 +1,9 @@
 #include "carry.hpp"
 
+#include <cmath>
+
+#include "constants.hpp"
 #include "contacts.hpp"
-#include "detail/ground_index.hpp"
 #include "tiles.hpp"
 
 namespace ds {
@@ -43,6 +45,16 @@ void carry_one(Body& b, Displacement d, const TileGrid* grid, CollisionMode mode
     if (carry_y(b, d.dy, grid, mode) && d.dy.v < 0) b.crushed = true;
 }
 
+// r stood on the carrier c: overlapping it horizontally, its feet within
+// the tolerance of c's top; on a one-way c, not rising nor dropping
+// through. Not their speeds, as ground detection compares: push-apart
+// zeroes a rider's vy every frame, whatever the carrier's.
+bool rides(const Body& r, const Body& c) {
+    return r.x.v < c.x.v + c.w.v && c.x.v < r.x.v + r.w.v &&
+           std::fabs((r.y.v + r.h.v) - c.y.v) <= kOnSolidTolerance &&
+           (!c.one_way || (r.vy.v >= 0 && !r.drop_through));
+}
+
 bool overlaps_solid_cell(const Body& b, const TileGrid& grid) {
     const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
     const CellRange rows = grid.clip_rows(cells_of(b.y, b.h, grid.tile_height()));
@@ -66,12 +78,10 @@ void carry_riders(std::span<Body> bodies, std::span<const Body> start,
     for (const size_t c : carriers) {
         const Displacement d = displacement(bodies[c], start[c]);
         if (!d.moved()) continue;
-        // Who stood on it is read from the (sub-)frame start, by the entity
-        // rule of ground detection, so the carry does not depend on the order
-        // of the per-entity steps.
-        const Supporter top = Supporter::of(start[c]);
+        // Who stood on it is read from the (sub-)frame start, so the carry
+        // does not depend on the order of the per-entity steps.
         for (const size_t r : members) {
-            if (scratch.ridden[r] || !may_ride(bodies[r]) || !entity_supports(start[r], top)) continue;
+            if (scratch.ridden[r] || !may_ride(bodies[r]) || !rides(start[r], start[c])) continue;
             scratch.ridden[r] = 1;
             carry_one(bodies[r], d, grid, mode);
         }

@@ -312,15 +312,11 @@ not dropping through, its feet less than *one-way-footing* into the cell."
               (tilemap-solid-extent tm))))
 
 (define (entity-supports? e o)
-  "O holds E up: solid, not a ghost, and E stands on it."
+  "O holds E up: solid, not a ghost, overlapping horizontally, its top
+within the tolerance of E's feet, moving at nearly E's vertical speed."
   (and (flag o #:solid?)
        (not (skips? o 'entity-collisions))
-       (stands-on? e o)))
-
-(define (stands-on? e o)
-  "E stands on O: overlapping horizontally, O's top within the tolerance of
-E's feet, moving at nearly E's vertical speed."
-  (and (< (num e #:x) (num+ (num o #:x) (num o #:width)))
+       (< (num e #:x) (num+ (num o #:x) (num o #:width)))
        (< (num o #:x) (num+ (num e #:x) (num e #:width)))
        (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num o #:y))) *on-solid-tolerance*)
        (<= (abs (num- (num e #:vy) (num o #:vy))) *on-solid-tolerance*)
@@ -555,6 +551,15 @@ likewise y."
   (cons (num- (num now #:x) (num then #:x)) (num- (num now #:y) (num then #:y))))
 (define (moved? d) (not (and (zero? (car d)) (zero? (cdr d)))))
 
+(define (rides? e c)
+  "E stood on the carrier C: overlapping it horizontally, its feet within
+the tolerance of C's top; on a one-way C, not rising nor dropping through.
+Not their speeds: push-apart zeroes a rider's vy each frame, whatever C's."
+  (and (< (num e #:x) (num+ (num c #:x) (num c #:width)))
+       (< (num c #:x) (num+ (num e #:x) (num e #:width)))
+       (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num c #:y))) *on-solid-tolerance*)
+       (may-stand-on? e c)))
+
 (define (crush e) (put e #:crushed? (flag e #:crushed?) #t))
 
 (define (clear-crushed entities)
@@ -590,7 +595,7 @@ no earlier carrier."
          (when (and (carrier? (vector-ref now c)) (moved? d))
            (for-each (lambda (r)
                        (when (and (not (vector-ref ridden r)) (may-ride? (vector-ref now r))
-                                  (stands-on? (vector-ref then r) (vector-ref then c)))
+                                  (rides? (vector-ref then r) (vector-ref then c)))
                          (vector-set! ridden r #t)
                          (vector-set! now r (carry-one (vector-ref now r) scene d))))
                      slots))))

@@ -98,9 +98,7 @@ TEST_CASE("a rider lifted into a ceiling is crushed, and uncrushed when it is no
     const auto g = grid({"....", "....", "....", "....", "####", "....", "....", "...."});
     World w;
     w.grid = &g;
-    Body r = rider(10, 84);
-    r.vy = I(-6);
-    w.bodies = {carrier(0, 100, 0, -6), r};
+    w.bodies = {carrier(0, 100, 0, -6), rider(10, 84)};  // the rider's vy 0 is not the carrier's
     Frame f;
     f.step(w, FrameOptions{});
     CHECK(w.bodies[1].crushed);
@@ -125,6 +123,17 @@ TEST_CASE("a body a carrier pushes into a wall is crushed") {
     f.step(w, FrameOptions{});
     CHECK_EXACT(w.bodies[1].x, 34);  // pushed clear of the platform, into the wall
     CHECK(w.bodies[1].crushed);
+}
+
+TEST_CASE("a platform moving down by its velocity keeps its rider on it") {
+    World w;
+    w.bodies = {carrier(0, 100, 0, 6), rider(10, 84)};
+    Frame f;
+    for (int k = 1; k <= 10; ++k) {
+        f.step(w, FrameOptions{});
+        CHECK_EXACT(w.bodies[1].y, 84 + 6 * k);
+        CHECK_EXACT(w.bodies[1].vy, 0);
+    }
 }
 
 TEST_CASE("a body on two carriers rides only the first") {
