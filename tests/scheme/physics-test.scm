@@ -825,6 +825,8 @@
     '(12 84 0 #t) (keys-of (rider-after (list platform rider) 1) '(#:x #:y #:vx #:on-ground?)))
   (test-equal "… and stays on it"
     '(30 84 0 #t) (keys-of (rider-after (list platform rider) 10) '(#:x #:y #:vx #:on-ground?)))
+  (test-equal "a rider walking on it moves by its own vx and the carrier's"
+    '(40 84 1) (keys-of (rider-after (list platform (entity-set rider #:vx 1)) 10) '(#:x #:y #:vx)))
   (test-equal "carry-riders alone: the displacement since the frame-start scene"
     '(12 85) (keys-of (cadr (carry-riders (list (entity-set platform #:x 2) (entity-set rider #:y 85))
                                           (make-scene #:entities (list platform rider)) 16))
