@@ -65,7 +65,7 @@ against the solid tiles; a rider lifted into a solid cell gets #:crushed? #t
 
 (define* (step-scene scene dt #:key (substeps 1))
   "SCENE after one whole engine pass (the default-engine-update composition:
-tweens, then motion, tiles, ground, push-apart and groups), done in one
+tweens, then motion, tiles, ground, carriers, push-apart and groups), done in one
 native call. With SUBSTEPS k > 1 (beyond the seed), everything after the
 tweens runs as k sub-frames of 1/k frame each: velocities and gravity
 advance by a k-th, in flonums, and the motion converges to the continuous

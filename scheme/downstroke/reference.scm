@@ -1,4 +1,4 @@
-;;; (downstroke reference) — the physics rules of semantics §1–§6 in plain Scheme.
+;;; (downstroke reference) — the physics rules of semantics §1–§6, §9 and §11 in plain Scheme.
 ;;;
 ;;; An executable specification: the same procedures as (downstroke physics),
 ;;; written for reading, not for speed, and sharing nothing with the native
@@ -777,7 +777,8 @@ and call its on-complete."
   "One default-engine-update pass: tweens; then SUBSTEPS sub-frames (one, the
 seed's frame, by default), each taking every entity through the per-entity
 steps, all reading the scene as it was at the start of the sub-frame (the
-first: of the frame, before the tweens), then push-apart, then groups."
+first: of the frame, before the tweens), then the carriers, push-apart
+and the crushing of what they pushed (§11), then groups."
   (unless (and (exact-integer? substeps) (<= 1 substeps 1024))
     (fail 'step-scene "substeps: expected an exact integer from 1 to ~S, got ~S" 1024 substeps))
   (let* ((start (scene-entities scene))
