@@ -4,6 +4,7 @@
 
 #include "args.hpp"
 #include "batch.hpp"
+#include "carry.hpp"
 #include "contacts.hpp"
 #include "detail/contact_scratch.hpp"
 #include "convert.hpp"
@@ -118,6 +119,47 @@ SCM resolve_entity_collisions_n(SCM entities) {
 }
 SCM sync_groups_n(SCM entities) { return bulk_step<sync_groups_alone>("sync-groups", entities); }
 
+// The carry step alone (semantics §11): `start` is the frame-start scene's
+// entities, body for body the list before this frame's per-entity steps.
+void carry_batch(Batch& now, Batch& then, const TileGrid* grid, CollisionMode mode) {
+    thread_local std::vector<size_t> members, carriers;
+    thread_local CarryScratch scratch;
+    members.clear();
+    carriers.clear();
+    for (size_t i = 0; i < now.size(); ++i) {
+        if (!now.bodies[i].collides()) continue;
+        members.push_back(i);
+        if (is_carrier(now.bodies[i])) carriers.push_back(i);
+    }
+    clear_crushed(now.bodies, members);
+    carry_riders(now.bodies, then.bodies, carriers, members, grid, mode, scratch);
+}
+
+SCM carry_riders_n(SCM entities, SCM tilemap, SCM start, SCM mode) {
+    Failure f{"carry-riders"};
+    SCM result = entities;
+    scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
+    guarded(f, nullptr, [&] {
+        const TileGrid* grid = nullptr;
+        CollisionMode m{};
+        Batch& now = lease_batch();
+        Batch& then = lease_batch();
+        if (!grid_from_scm(tilemap, grid, f) || !mode_from_scm(mode, m, f) ||
+            !decode_batch(entities, now, f) || !decode_batch(start, then, f))
+            return;
+        if (then.size() != now.size()) {
+            fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(now.size()), scm_from_size_t(then.size())),
+                 "expected the scene to hold as many entities as the list (~S), got ~S");
+            return;
+        }
+        carry_batch(now, then, grid, m);
+        result = encode_batch(entities, now, f);
+    });
+    scm_dynwind_end();
+    if (f) raise(f);
+    return result;
+}
+
 SCM aabb_overlap_p(SCM x1, SCM y1, SCM w1, SCM h1, SCM x2, SCM y2, SCM w2, SCM h2) {
     Failure f{"aabb-overlap?"};
     const SCM args[8] = {x1, y1, w1, h1, x2, y2, w2, h2};
@@ -151,6 +193,8 @@ void register_entity_procedures() {
         "Push overlapping solid entities apart: one pass over the pairs in list order.");
     define_procedure<1, 0, 0, sync_groups_n>("sync-groups",
         "Place every group member at its origin's position plus its local offset.");
+    define_procedure<4, 0, 0, carry_riders_n>("%carry-riders",
+        WrapperDoc{"(entities tilemap start-entities mode)", "carry-riders", physics});
     define_procedure<8, 0, 0, aabb_overlap_p>("aabb-overlap?",
         "(aabb-overlap? x1 y1 w1 h1 x2 y2 w2 h2): strict overlap of two boxes.");
 }

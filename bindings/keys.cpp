@@ -35,7 +35,7 @@ void init_keys() {
         storage.slot_key[slot] = storage.key[k];
         storage.slot_index[slot] = k;
     }
-    for (int bit = 0; bit < 9; ++bit)
+    for (int bit = 0; bit < kSkipCount; ++bit)
         storage.skip_symbol[bit] = keep(scm_from_utf8_symbol(skip_name(static_cast<uint16_t>(1u << bit))));
     storage.swept = keep(scm_from_utf8_symbol("swept"));
     storage.discrete = keep(scm_from_utf8_symbol("discrete"));

@@ -26,7 +26,7 @@ static_assert(kPhysKeyCount <= 32, "Decoded::present holds one bit per PhysKey")
 
 struct Keys {
     SCM key[kPhysKeyCount];
-    SCM skip_symbol[9];  // by bit index of ds::Skip
+    SCM skip_symbol[kSkipCount];  // by bit index of ds::Skip
     SCM swept, discrete;
 
     // Which physics key a keyword (or any object) is, or kNotPhysics: one

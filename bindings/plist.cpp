@@ -50,7 +50,7 @@ bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
             fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
             return false;
         }
-        for (int bit = 0; bit < 9; ++bit)
+        for (int bit = 0; bit < kSkipCount; ++bit)
             if (scm_is_eq(sym, keys->skip_symbol[bit])) mask |= static_cast<uint16_t>(1u << bit);
     }
     if (!scm_is_null(p)) {

@@ -16,7 +16,7 @@ constexpr SkipName kSkipNames[] = {
     {"velocity-x", kSkipVelocityX},       {"velocity-y", kSkipVelocityY},
     {"tile-collisions-x", kSkipTileX},    {"tile-collisions-y", kSkipTileY},
     {"on-solid", kSkipOnSolid},           {"entity-collisions", kSkipEntityCollisions},
-    {"tweens", kSkipTweens},
+    {"tweens", kSkipTweens},              {"carry", kSkipCarry},
 };
 
 }  // namespace

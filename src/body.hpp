@@ -18,7 +18,9 @@ enum Skip : uint16_t {
     kSkipOnSolid = 1u << 6,
     kSkipEntityCollisions = 1u << 7,
     kSkipTweens = 1u << 8,
+    kSkipCarry = 1u << 9,  // not carried by a carrier (semantics §11)
 };
+constexpr int kSkipCount = 10;  // the Skip bits above
 
 // Returns the bit for a skip symbol's name, or 0 for a name physics does not know.
 uint16_t skip_bit(const char* name);

@@ -191,6 +191,8 @@ void Frame::Impl::census(std::span<const Body> bodies, std::span<const uint8_t> 
 
 void Frame::Impl::begin_census(size_t n, bool take) {
     members_.clear();
+    carriers_.clear();
+    crushed_ = false;
     grouped_ = 0;
     supporters_taken_ = take;
     if (take) clear_supporters(n);
@@ -200,6 +202,10 @@ void Frame::Impl::enlist(const Body& b, size_t i) {
     if (b.collides()) {
         members_.push_back(i);
         if (supporters_taken_) add_supporter(b, i);
+        if (b.carries | b.crushed) {
+            if (is_carrier(b)) carriers_.push_back(i);
+            crushed_ |= b.crushed;
+        }
     }
     grouped_ += b.group != 0;
 }
@@ -248,12 +254,19 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         // The census may have taken the frame-start supporters already.
         if (round > 0 || !supporters_taken_)
             take_supporters(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
+        const bool carrying = !carriers_.empty();
+        // A body crushed last frame is not crushed any more unless this frame
+        // crushes it again (the key is present: no first write to log).
+        if (round == 0 && crushed_) clear_crushed(bodies, members_);
+        if (carrying) start_carry(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
         step_bodies(bodies, grid, opts, round, writes);
         auto t0 = Clock::now();
+        if (carrying) carry(bodies, grid, opts, writes);
         if (members_.size() >= 2)
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, [&](std::span<Body> bs) {
                 resolve_entity_collisions_among(contacts_, bs, members_, resting_);
             });
+        if (carrying) crush(bodies, grid, writes);
         const auto solid = static_cast<uint64_t>(supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
         push = {push.processed + solid, push.skipped + bodies.size() - solid, push.ms + ms_since(t0)};
@@ -265,6 +278,25 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         groups = {groups.processed + grouped_, groups.skipped + bodies.size() - grouped_,
                   groups.ms + ms_since(t0)};
     }
+}
+
+void Frame::Impl::start_carry(std::span<const Body> start) {
+    // The bodies move in place: the carriers' and riders' (sub-)frame-start
+    // values are copied out first (the span may be the bodies themselves).
+    carry_start_.assign(start.begin(), start.end());
+}
+
+void Frame::Impl::carry(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                        std::span<FirstWrites> writes) {
+    logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldCrushed, [&](std::span<Body> bs) {
+        carry_riders(bs, carry_start_, carriers_, members_, grid, opts.mode, carry_scratch_);
+        note_in_way(bs, carry_start_, carriers_, members_, carry_scratch_);
+    });
+}
+
+void Frame::Impl::crush(std::span<Body> bodies, const TileGrid* grid, std::span<FirstWrites> writes) {
+    logged_bulk(bodies, writes, kFieldCrushed,
+                [&](std::span<Body> bs) { crush_in_way(bs, grid, carry_scratch_); });
 }
 
 void Frame::Impl::plan_sleep(const World& world, const FrameOptions& opts) {

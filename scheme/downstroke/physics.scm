@@ -7,7 +7,7 @@
             resting-contacts?
             step-tweens apply-acceleration apply-gravity apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
-            resolve-tile-collisions-y detect-on-solid step-scene))
+            resolve-tile-collisions-y detect-on-solid carry-riders step-scene))
 
 ;; The rules' numbers, from the core (src/constants.hpp): one home for each.
 (define *gravity* %gravity)
@@ -55,9 +55,17 @@
   "Set #:on-ground? from the tiles under ENTITY and the scene's solid entities."
   (%detect-on-solid entity (tilemap-of scene) (entities-of scene)))
 
+(define (carry-riders entities scene dt)
+  "The carry step (semantics §11): SCENE is the frame-start scene (its
+entities are ENTITIES before this frame's per-entity steps). Each moving
+#:carries? platform moves its riders by its own displacement, resolved
+against the solid tiles; a rider lifted into a solid cell gets #:crushed? #t
+(and a crushable body with the key that is not crushed, #f)."
+  (%carry-riders entities (tilemap-of scene) (entities-of scene) (collision-mode)))
+
 (define* (step-scene scene dt #:key (substeps 1))
   "SCENE after one whole engine pass (the default-engine-update composition:
-tweens, then motion, tiles, ground, push-apart and groups), done in one
+tweens, then motion, tiles, ground, carriers, push-apart and groups), done in one
 native call. With SUBSTEPS k > 1 (beyond the seed), everything after the
 tweens runs as k sub-frames of 1/k frame each: velocities and gravity
 advance by a k-th, in flonums, and the motion converges to the continuous

@@ -1,4 +1,4 @@
-;;; (downstroke reference) — the physics rules of semantics §1–§6 in plain Scheme.
+;;; (downstroke reference) — the physics rules of semantics §1–§6, §9 and §11 in plain Scheme.
 ;;;
 ;;; An executable specification: the same procedures as (downstroke physics),
 ;;; written for reading, not for speed, and sharing nothing with the native
@@ -19,7 +19,7 @@
             step-tweens apply-acceleration apply-gravity apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
             resolve-tile-collisions-y detect-on-solid resolve-entity-collisions
-            sync-groups aabb-overlap? step-scene))
+            sync-groups aabb-overlap? carry-riders step-scene))
 
 (define *gravity* 1)
 (define *jump-force* 15)
@@ -537,6 +537,112 @@ likewise y."
              (as-double v))))
     (overlaps? (vector (r x1) (r y1) (r w1) (r h1)) (vector (r x2) (r y2) (r w2) (r h2)))))
 
+;;; ---------------------------------------------------------------- carriers (§11)
+;;; A moving carrier carries the bodies that stood on it when the (sub-)frame
+;;; began; the bodies it pushes into solid cells, and the riders it lifts
+;;; into them, are crushed.
+
+(define (collides? e) (and (flag e #:solid?) (not (skips? e 'entity-collisions))))
+(define (carrier? e) (and (flag e #:carries?) (flag e #:immovable?) (collides? e)))
+(define (crushable? e) (and (not (flag e #:immovable?)) (collides? e)))
+(define (may-ride? e) (and (crushable? e) (not (skips? e 'carry))))
+
+(define (displacement now then)
+  (cons (num- (num now #:x) (num then #:x)) (num- (num now #:y) (num then #:y))))
+(define (moved? d) (not (and (zero? (car d)) (zero? (cdr d)))))
+
+(define (rides? e c)
+  "E stood on the carrier C: overlapping it horizontally, its feet within
+the tolerance of C's top; on a one-way C, not rising nor dropping through.
+Not their speeds: push-apart zeroes a rider's vy each frame, whatever C's."
+  (and (< (num e #:x) (num+ (num c #:x) (num c #:width)))
+       (< (num c #:x) (num+ (num e #:x) (num e #:width)))
+       (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num c #:y))) *on-solid-tolerance*)
+       (may-stand-on? e c)))
+
+(define (crush e) (put e #:crushed? (flag e #:crushed?) #t))
+
+(define (clear-crushed entities)
+  "No body enters a frame crushed: #:crushed? #t becomes #f on crushable ones."
+  (map-keeping (lambda (e) (if (and (crushable? e) (flag e #:crushed?)) (put e #:crushed? #t #f) e))
+               entities))
+
+(define (carry-along e scene d pos-key vel-key resolve)
+  "E moved by D along one axis as that axis's tile step would move it with
+velocity D, its own velocity untouched: (entity . stopped-by-a-cell?)."
+  (if (zero? d)
+      (cons e #f)
+      (let* ((pos (num e pos-key))
+             (moved (resolve (entity-set (entity-set e pos-key (num+ pos d)) vel-key d) scene #f)))
+        (cons (put e pos-key pos (num moved pos-key)) (zero? (num moved vel-key))))))
+
+(define (carry-one e scene d)
+  (let* ((e (car (carry-along e scene (car d) #:x #:vx tiles-x)))
+         (stopped (carry-along e scene (cdr d) #:y #:vy tiles-y)))
+    (if (and (cdr stopped) (< (cdr d) 0)) (crush (car stopped)) (car stopped))))
+
+(define (carry-among entities start scene)
+  "Each moving carrier of ENTITIES, in list order, carries the bodies that
+stood on it in START (the same entities at the (sub-)frame start) and ride
+no earlier carrier."
+  (let* ((now (list->vector entities))
+         (then (list->vector start))
+         (slots (iota (vector-length now)))
+         (ridden (make-vector (vector-length now) #f)))
+    (for-each
+     (lambda (c)
+       (let ((d (displacement (vector-ref now c) (vector-ref then c))))
+         (when (and (carrier? (vector-ref now c)) (moved? d))
+           (for-each (lambda (r)
+                       (when (and (not (vector-ref ridden r)) (may-ride? (vector-ref now r))
+                                  (rides? (vector-ref then r) (vector-ref then c)))
+                         (vector-set! ridden r #t)
+                         (vector-set! now r (carry-one (vector-ref now r) scene d))))
+                     slots))))
+     slots)
+    (same-or (vector->list now) entities)))
+
+(define (in-way entities start)
+  "The slots of the crushable entities a moving carrier (not one-way)
+overlaps: the bodies push-apart is about to push out of its way."
+  (let ((pushers (filter-map (lambda (e s) (and (carrier? e) (not (flag e #:one-way?))
+                                                (moved? (displacement e s)) (box e)))
+                             entities start)))
+    (filter-map (lambda (e i) (and (crushable? e) (any (lambda (p) (overlaps? (box e) p)) pushers) i))
+                entities (iota (length entities)))))
+
+(define (overlaps-solid-cell? e tm)
+  (apply (lambda (col0 row0 cols rows)
+           (let ((cs (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm)) col0 cols))
+                 (rs (clip (cells-of (num e #:y) (num e #:height) (tilemap-tile-height tm)) row0 rows)))
+             (any (lambda (r) (any (lambda (c) (tilemap-cell-solid? tm c r)) (range->list cs 1)))
+                  (range->list (and cs rs) 1))))
+         (tilemap-solid-extent tm)))
+
+(define (crush-in-way entities slots tm)
+  "After push-apart: the pushed SLOTS now overlapping a solid cell are crushed."
+  (if (or (not tm) (null? slots))
+      entities
+      (same-or (map (lambda (e i) (if (and (memv i slots) (overlaps-solid-cell? e tm)) (crush e) e))
+                    entities (iota (length entities)))
+               entities)))
+
+(define (carry-riders entities scene dt)
+  "The carry step: SCENE is the frame-start scene (its entities are
+ENTITIES before this frame's per-entity steps). Each moving #:carries?
+platform moves its riders by its own displacement, resolved against the
+solid tiles; a rider lifted into a solid cell gets #:crushed? #t (and a
+crushable body with the key that is not crushed, #f)."
+  (check-all 'carry-riders entities)
+  (let ((start (if scene (scene-entities scene) '())))
+    (check-all 'carry-riders start)
+    (unless (= (length start) (length entities))
+      (fail 'carry-riders "expected the scene to hold as many entities as the list (~S), got ~S"
+            (length entities) (length start)))
+    ;; Crushed again after being cleared: the entity itself, as on the native side.
+    (same-or (map keep-if-unchanged (carry-among (clear-crushed entities) start scene) entities)
+             entities)))
+
 ;;; ---------------------------------------------------------------- easing (§6)
 ;;; Penner's curves as easings.net writes them; the ends are pinned to 0 and 1.
 
@@ -671,7 +777,8 @@ and call its on-complete."
   "One default-engine-update pass: tweens; then SUBSTEPS sub-frames (one, the
 seed's frame, by default), each taking every entity through the per-entity
 steps, all reading the scene as it was at the start of the sub-frame (the
-first: of the frame, before the tweens), then push-apart, then groups."
+first: of the frame, before the tweens), then the carriers, push-apart
+and the crushing of what they pushed (§11), then groups."
   (unless (and (exact-integer? substeps) (<= 1 substeps 1024))
     (fail 'step-scene "substeps: expected an exact integer from 1 to ~S, got ~S" 1024 substeps))
   (let* ((start (scene-entities scene))
@@ -690,8 +797,9 @@ first: of the frame, before the tweens), then push-apart, then groups."
 
 (define (sub-frame scene dt h round supporting entities)
   "One (sub-)frame of ENTITIES after the tweens; SUPPORTING is the scene
-ground detection and resting read (its holders, by slot)."
+ground detection, resting and the carriers read (its holders, by slot)."
   (let* ((tm (scene-tilemap scene))
+         (entities (if (= round 0) (clear-crushed entities) entities))
          (supporters (holders supporting))
          (rest? (resting-contacts?))
          (stepped
@@ -707,5 +815,8 @@ ground detection and resting read (its holders, by slot)."
                         (e (on-solid e tm supporters (lambda (i o) (= i slot)))))
                    (cons e rests)))
                entities (iota (length entities))))
-         (moved (same-or (map car stepped) entities)))
-    (sync-groups (push-apart moved (map cdr stepped)))))
+         (moved (same-or (map car stepped) entities))
+         (carrying (any carrier? moved))
+         (carried (if carrying (carry-among moved supporting scene) moved))
+         (pushed (push-apart carried (map cdr stepped))))
+    (sync-groups (if carrying (crush-in-way pushed (in-way carried supporting) tm) pushed))))

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "../carry.hpp"
 #include "../frame.hpp"
 #include "../settle.hpp"
 #include "contact_scratch.hpp"
@@ -40,6 +41,12 @@ struct Frame::Impl {
                      std::span<const Body> scene, std::span<FirstWrites> writes);
     void take_supporters(std::span<const Body> scene);
     bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
+    // The carriers' steps around push-apart (semantics §11), in frames that
+    // have a carrier or a crushed body.
+    void start_carry(std::span<const Body> start);
+    void carry(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+               std::span<FirstWrites> writes);
+    void crush(std::span<Body> bodies, const TileGrid* grid, std::span<FirstWrites> writes);
     // One step over a block of active_; adds to the step's processed count
     // and, from t0 to its return value (now), to its time.
     template <class MayWrite, class Step>
@@ -63,6 +70,10 @@ struct Frame::Impl {
     std::vector<size_t> members_;
     std::vector<size_t> slotted_;  // the bodies support_slot_ gave a slot to
     uint64_t grouped_ = 0;
+    std::vector<size_t> carriers_;        // the members that are carriers, in list order
+    bool crushed_ = false;                // some crushable member enters the frame crushed
+    std::vector<Body> carry_start_;       // the bodies at the (sub-)frame start, for the carry
+    CarryScratch carry_scratch_;
     bool supporters_taken_ = false;  // by the census, for the first sub-frame
     std::vector<uint8_t> resting_;   // by body, this sub-frame: rested (resting contacts)
     std::vector<Body> bulk_before_;  // for logging what a bulk step wrote

@@ -83,7 +83,7 @@
   '(step-tweens apply-acceleration apply-gravity apply-velocity-x apply-velocity-y
     apply-velocity resolve-tile-collisions-x resolve-tile-collisions-y detect-on-solid
     resolve-entity-collisions sync-groups aabb-overlap? *gravity* *jump-force*
-    *on-solid-tolerance* collision-mode resting-contacts? step-scene))
+    *on-solid-tolerance* collision-mode resting-contacts? carry-riders step-scene))
 
 ;;; Per-entity steps, checked on every entity of the frame's input.
 (define per-entity-steps
@@ -104,6 +104,7 @@
 (define (composed-step-scene iface)
   (let ((stages (map (lambda (name) (module-ref iface name)) frame-stages))
         (detect (module-ref iface 'detect-on-solid))
+        (carry (module-ref iface 'carry-riders))
         (collide (module-ref iface 'resolve-entity-collisions))
         (sync (module-ref iface 'sync-groups)))
     (lambda (scene dt)
@@ -118,7 +119,7 @@
                            (e (detect e others dt)))
                       (loop (cdr es) (cons (car es) before) (cons e acc))))))
              (result (map (lambda (new old) (if (same? new old) old new))
-                          (sync (collide stepped)) entities)))
+                          (sync (collide (carry stepped scene dt))) entities)))
         (if (every eq? result entities) scene (update-scene scene #:entities result))))))
 
 ;;; A module whose bindings are physics' with OVERRIDES ((name . value) ...),
@@ -405,9 +406,9 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
           (cdr checked))))
 
 ;;; Run bulk STEP on ENTITIES on both sides: (native-outcome . mismatch-or-#f).
-(define (check-bulk-step step where entities frame)
-  (let* ((n (attempt (lambda () ((nat step) entities))))
-         (r (attempt (lambda () ((ref step) entities))))
+(define* (check-bulk-step step where entities frame #:optional (args '()))
+  (let* ((n (attempt (lambda () (apply (nat step) entities args))))
+         (r (attempt (lambda () (apply (ref step) entities args))))
          (d (cond ((and (not (ok? n)) (not (ok? r))) #f)
                   ((not (and (ok? n) (ok? r))) (list #f "<error>" (shown n) (shown r)))
                   ((and check-identity? (not (eq? (eq? (cdr n) entities) (eq? (cdr r) entities))))
@@ -469,11 +470,15 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
      (let loop ((stages frame-stages) (es entities) (after "the frame's input"))
        (if (null? stages)
            (let* ((where (string-append "after " after))
-                  (c (check-bulk-step 'resolve-entity-collisions where es frame)))
-             (or (cdr c)
-                 (check-pairs where es frame)
-                 (let ((es2 (if (ok? (car c)) (cdar c) es)))
-                   (cdr (check-bulk-step 'sync-groups "after resolve-entity-collisions" es2 frame)))))
+                  (carried (check-bulk-step 'carry-riders where es frame (list scene dt))))
+             ;; carry-riders hands back its argument on scenes without carriers.
+             (or (cdr carried)
+                 (let* ((es (if (ok? (car carried)) (cdar carried) es))
+                        (c (check-bulk-step 'resolve-entity-collisions where es frame)))
+                   (or (cdr c)
+                       (check-pairs where es frame)
+                       (let ((es2 (if (ok? (car c)) (cdar c) es)))
+                         (cdr (check-bulk-step 'sync-groups "after resolve-entity-collisions" es2 frame)))))))
            (let ((c (check-step-over (car stages) (string-append "after " after) es scene dt frame)))
              (or (cdr c) (loop (cdr stages) (car c) (symbol->string (car stages)))))))
      ;; The bulk steps and aabb-overlap? on the frame's input.

@@ -823,4 +823,104 @@
     (test-eq "… comes back as itself the next frame" m1 again)
     (test-eq "… also when other steps ran between the frames" m1 after-others)))
 
+;;; ---------------------------------------------------------------- carriers (semantics §11)
+(define (carrier . keys)
+  (append keys '(#:width 64 #:height 16 #:solid? #t #:immovable? #t #:carries? #t)))
+(define rider '(#:x 10 #:y 84 #:width 16 #:height 16 #:vx 0 #:vy 0 #:solid? #t #:gravity? #t))
+(define (tweened-carrier props . opts)
+  (let ((p (carrier #:x 0 #:y 100)))
+    (entity-set p #:tween (apply make-tween p #:props props #:duration 1000 opts))))
+(define (frames-of scene n)   ; n frames of 100 ms
+  (let loop ((i 0) (s scene)) (if (= i n) s (loop (+ i 1) (step-scene s 100)))))
+(define (keys-of e keys) (map (lambda (k) (entity-ref e k)) keys))
+(define (rider-after entities n . tilemap)
+  (cadr (scene-entities (frames-of (apply make-scene #:entities entities
+                                          (if (null? tilemap) '() (list #:tilemap (car tilemap))))
+                                   n))))
+
+(let ((platform (carrier #:x 0 #:y 100 #:vx 2)))
+  (test-equal "a rider moves with its carrier in the same frame"
+    '(12 84 0 #t) (keys-of (rider-after (list platform rider) 1) '(#:x #:y #:vx #:on-ground?)))
+  (test-equal "… and stays on it"
+    '(30 84 0 #t) (keys-of (rider-after (list platform rider) 10) '(#:x #:y #:vx #:on-ground?)))
+  (test-equal "a rider walking on it moves by its own vx and the carrier's"
+    '(40 84 1) (keys-of (rider-after (list platform (entity-set rider #:vx 1)) 10) '(#:x #:y #:vx)))
+  (test-equal "carry-riders alone: the displacement since the frame-start scene"
+    '(12 85) (keys-of (cadr (carry-riders (list (entity-set platform #:x 2) (entity-set rider #:y 85))
+                                          (make-scene #:entities (list platform rider)) 16))
+                      '(#:x #:y)))
+  (test-equal "with sub-frames, each carries its share"
+    12.0 (entity-ref (cadr (scene-entities (step-scene (make-scene #:entities (list platform rider))
+                                                       16 #:substeps 2)))
+                     #:x)))
+(test-equal "a platform tweened upwards lifts its rider"
+  '(80.0 44) (list (entity-ref (rider-after (list (tweened-carrier '((#:y . 60))) rider) 1) #:y)
+                   (entity-ref (rider-after (list (tweened-carrier '((#:y . 60))) rider) 10) #:y)))
+(test-equal "one tweened downwards keeps its rider on it, frame by frame"
+  '((88.0 #t) (104.0 #t) (124 #t))
+  (map (lambda (n) (keys-of (rider-after (list (tweened-carrier '((#:y . 140))) rider) n)
+                            '(#:y #:on-ground?)))
+       '(1 5 10)))
+(test-equal "a platform moving down by its velocity keeps its rider on it"
+  '((90 0) (144 0))   ; its vy stays 0: push-apart lands it on the platform every frame
+  (map (lambda (n) (keys-of (rider-after (list (carrier #:x 0 #:y 100 #:vy 6) rider) n) '(#:y #:vy)))
+       '(1 10)))
+(test-equal "… and one moving up by its velocity lifts it"
+  '((78 0) (24 0))
+  (map (lambda (n) (keys-of (rider-after (list (carrier #:x 0 #:y 100 #:vy -6) rider) n) '(#:y #:vy)))
+       '(1 10)))
+(test-equal "a yoyo tween carries its rider there and back (the platformer's lift)"
+  '(74.0 9.999999999999993)     ; the carrier's per-frame flonum steps, added up
+  (map (lambda (n) (entity-ref (rider-after (list (tweened-carrier '((#:x . 64)) #:yoyo? #t #:repeat -1)
+                                                  rider)
+                                            n)
+                               #:x))
+       '(10 20)))
+;; A wall: column 3 (x ∈ [48, 64)), rows 0–5; the platform passes under it.
+(let ((wall (grid-map 10 10 (map (lambda (r) (cons 3 r)) (iota 6))))
+      (platform (carrier #:x 0 #:y 100 #:vx 6))
+      (rider (entity-set rider #:x 20)))
+  (test-equal "a rider carried into a wall stops flush with it"
+    '(32 84 0) (keys-of (rider-after (list platform rider) 3 wall) '(#:x #:y #:vx)))
+  (test-equal "… and the platform goes on without it: it falls"
+    '(78 32 105 6 #f)
+    (let ((es (scene-entities (frames-of (make-scene #:entities (list platform rider) #:tilemap wall) 13))))
+      (cons (entity-ref (car es) #:x) (keys-of (cadr es) '(#:x #:y #:vy #:on-ground?))))))
+(let ((platform '(#:x 0 #:y 80 #:width 20 #:height 16 #:vx 14 #:solid? #t #:immovable? #t #:carries? #t))
+      (box '(#:x 30 #:y 80 #:width 16 #:height 16 #:solid? #t)))
+  (test-equal "a platform moving into a box pushes it out of the way"
+    '(#:x 34 #:y 80 #:width 16 #:height 16 #:solid? #t)
+    (rider-after (list platform box) 1))
+  ;; The floor, row 6 (y ∈ [96, 112)), and the wall, column 3 (x ∈ [48, 64)).
+  (let ((floor+wall (grid-map 10 10 (append (row 6 10) (map (lambda (r) (cons 3 r)) (iota 6))))))
+    (test-equal "… into a wall, where it is crushed"
+      '(34 80 #t) (keys-of (rider-after (list platform box) 1 floor+wall) '(#:x #:y #:crushed?)))
+    (test-equal "… and not any more once the platform stops"
+      '(30 #f)
+      (keys-of (rider-after (list (entity-set platform #:vx 0) (entity-set box #:crushed? #t)) 1 floor+wall)
+               '(#:x #:crushed?)))))
+;; A ceiling, row 4 (y ∈ [64, 80)).
+(let ((ceiling (grid-map 10 10 (row 4 10))))
+  (test-equal "a rider lifted into a ceiling is crushed"
+    '(78 #t) (keys-of (rider-after (list (carrier #:x 0 #:y 100 #:vy -6) rider) 1 ceiling)
+                      '(#:y #:crushed?))))
+(let* ((platform '(#:x 0 #:y 100 #:width 64 #:height 16 #:vx 2 #:solid? #t #:immovable? #t))
+       (s (make-scene #:entities (list platform (append rider '(#:on-ground? #t))))))
+  (test-equal "without #:carries? the platform leaves its rider behind"
+    '(10 84) (keys-of (cadr (scene-entities (step-scene s 16))) '(#:x #:y)))
+  (test-eq "… the rider coming back as itself" (cadr (scene-entities s))
+    (cadr (scene-entities (step-scene s 16)))))
+(let ((s (make-scene #:entities (list (carrier #:x 0 #:y 100) (append rider '(#:on-ground? #t))))))
+  (test-eq "a still carrier changes nothing" s (step-scene s 16)))
+(let ((platform (carrier #:x 0 #:y 100 #:vx 2)))
+  (test-equal "a rider skipping 'carry stays behind"
+    10 (entity-ref (rider-after (list platform (entity-set rider #:skip-pipelines '(carry))) 1) #:x))
+  (test-equal "a body on two carriers rides the first"
+    12 (entity-ref (cadr (scene-entities
+                          (step-scene (make-scene #:entities (list platform rider (carrier #:x 20 #:y 100 #:vx -3)))
+                                      16)))
+                   #:x)))
+(test-error "carry-riders wants the frame-start scene of the same entities" #t
+  (carry-riders (list rider) (make-scene #:entities '()) 16))
+
 (test-end "physics")

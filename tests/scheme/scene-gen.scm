@@ -362,6 +362,17 @@
       (append e (list #:one-way? #t))
       e))
 
+;;; A moving immovable platform (the platform role's widths, a speed or a
+;;; tween) carries its riders (semantics §11). Decided from what was drawn,
+;;; as one-way-ledge is, so no scene's draws move.
+(define (carrier-platform e)
+  (define (moving? v) (and (real? v) (not (zero? v))))
+  (if (and (eq? #t (entity-ref e #:solid? #f)) (entity-ref e #:immovable? #f)
+           (memv (entity-ref e #:width #f) '(32 48 64 128))
+           (or (moving? (entity-ref e #:vx 0)) (moving? (entity-ref e #:vy 0)) (entity-ref e #:tween #f)))
+      (append e (list #:carries? #t))
+      e))
+
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
@@ -373,7 +384,7 @@
          (slots (shuffle r (append group-slots (make-list (- n (length group-slots)) #f)))))
     (let loop ((slots slots) (boxes '()) (ids '()) (acc '()))
       (if (null? slots)
-          (let ((entities (map one-way-ledge (reverse acc))))
+          (let ((entities (map (compose carrier-platform one-way-ledge) (reverse acc))))
             (values (if (and scene-gen-invalid? (chance r 1 30))
                         (let* ((i (ri r (length entities))) (p (invalid-pair r)))
                           (append (take entities i)

@@ -1,0 +1,112 @@
+#include "carry.hpp"
+
+#include <cmath>
+
+#include "constants.hpp"
+#include "contacts.hpp"
+#include "tiles.hpp"
+
+namespace ds {
+
+namespace {
+
+struct Displacement {
+    Num dx, dy;
+    bool moved() const { return dx.v != 0 || dy.v != 0; }
+};
+
+Displacement displacement(const Body& now, const Body& then) { return {now.x - then.x, now.y - then.y}; }
+
+// b moved by d along one axis as that axis's tile step would move it with
+// velocity d (its own velocity untouched); returns whether a solid cell
+// stopped it.
+bool carry_x(Body& b, Num d, const TileGrid* grid, CollisionMode mode) {
+    if (d.v == 0) return false;
+    Body moved = b;
+    moved.x = b.x + d;
+    moved.vx = d;
+    resolve_tile_collisions_x(moved, grid, mode);
+    b.x = moved.x;
+    return moved.vx.v == 0;
+}
+
+bool carry_y(Body& b, Num d, const TileGrid* grid, CollisionMode mode) {
+    if (d.v == 0) return false;
+    Body moved = b;
+    moved.y = b.y + d;
+    moved.vy = d;
+    resolve_tile_collisions_y(moved, grid, mode);
+    b.y = moved.y;
+    return moved.vy.v == 0;
+}
+
+void carry_one(Body& b, Displacement d, const TileGrid* grid, CollisionMode mode) {
+    carry_x(b, d.dx, grid, mode);
+    if (carry_y(b, d.dy, grid, mode) && d.dy.v < 0) b.crushed = true;
+}
+
+// r stood on the carrier c: overlapping it horizontally, its feet within
+// the tolerance of c's top; on a one-way c, not rising nor dropping
+// through. Not their speeds, as ground detection compares: push-apart
+// zeroes a rider's vy every frame, whatever the carrier's.
+bool rides(const Body& r, const Body& c) {
+    return r.x.v < c.x.v + c.w.v && c.x.v < r.x.v + r.w.v &&
+           std::fabs((r.y.v + r.h.v) - c.y.v) <= kOnSolidTolerance &&
+           (!c.one_way || (r.vy.v >= 0 && !r.drop_through));
+}
+
+bool overlaps_solid_cell(const Body& b, const TileGrid& grid) {
+    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    const CellRange rows = grid.clip_rows(cells_of(b.y, b.h, grid.tile_height()));
+    for (int64_t r = rows.first; r <= rows.last; ++r)
+        for (int64_t c = cols.first; c <= cols.last; ++c)
+            if (grid.cell(c, r) == kSolidCell) return true;
+    return false;
+}
+
+}  // namespace
+
+void clear_crushed(std::span<Body> bodies, std::span<const size_t> members) {
+    for (const size_t i : members)
+        if (is_crushable(bodies[i])) bodies[i].crushed = false;
+}
+
+void carry_riders(std::span<Body> bodies, std::span<const Body> start,
+                  std::span<const size_t> carriers, std::span<const size_t> members,
+                  const TileGrid* grid, CollisionMode mode, CarryScratch& scratch) {
+    scratch.ridden.assign(bodies.size(), 0);
+    for (const size_t c : carriers) {
+        const Displacement d = displacement(bodies[c], start[c]);
+        if (!d.moved()) continue;
+        // Who stood on it is read from the (sub-)frame start, so the carry
+        // does not depend on the order of the per-entity steps.
+        for (const size_t r : members) {
+            if (scratch.ridden[r] || !may_ride(bodies[r]) || !rides(start[r], start[c])) continue;
+            scratch.ridden[r] = 1;
+            carry_one(bodies[r], d, grid, mode);
+        }
+    }
+}
+
+void note_in_way(std::span<const Body> bodies, std::span<const Body> start,
+                 std::span<const size_t> carriers, std::span<const size_t> members,
+                 CarryScratch& scratch) {
+    scratch.in_way.clear();
+    for (const size_t m : members) {
+        if (!is_crushable(bodies[m])) continue;
+        for (const size_t c : carriers)
+            if (!bodies[c].one_way && displacement(bodies[c], start[c]).moved() &&
+                aabb_overlap(bodies[m], bodies[c])) {
+                scratch.in_way.push_back(m);
+                break;
+            }
+    }
+}
+
+void crush_in_way(std::span<Body> bodies, const TileGrid* grid, const CarryScratch& scratch) {
+    if (grid == nullptr) return;
+    for (const size_t m : scratch.in_way)
+        if (overlaps_solid_cell(bodies[m], *grid)) bodies[m].crushed = true;
+}
+
+}  // namespace ds
