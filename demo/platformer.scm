@@ -7,8 +7,16 @@
 ;;; engine-update; the camera follows the player (camera-target: 'player).
 ;;; Reaching the goal object of the map plays 'goal.
 ;;;
-;;; Keys (in a window): Left/Right or A/D run, Z or Space jumps, Return
-;;; starts again, Escape quits.
+;;; Beyond the first pit: a one-way plank (tiles with the tileset property
+;;; one-way) that the player jumps up through and lands on, and drops down
+;;; from with Down held (#:drop-through?); blocks that break when the
+;;; player's head hits them from below (tilemap-set-tile, and the scene takes
+;;; the new map); and a lift (the map's "lift" object: an immovable solid
+;;; with #:carries? #t, moving by #:vx and turned at the ends of its run by
+;;; the game) that carries the player over a pit too wide to jump.
+;;;
+;;; Keys (in a window): Left/Right or A/D run, Z or Space jumps, Down or S
+;;; drops through a plank, Return starts again, Escape quits.
 ;;;
 ;;; Run: build/bin/downstroke demo/platformer.scm
 ;;; Headless: it plays the built-in input script below for `demo-frames'
@@ -32,8 +40,10 @@
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
 (define goal-flag (sprite 11))
+(define lift-piece (sprite 12))         ; a 16×8 piece, in the bottom half of its 16×16 frame
+(define breakable-gid 22)               ; level-tiles.tsx's tile 1 (make_maps.py)
 
-(load-demo-sounds! 'jump 'goal)
+(load-demo-sounds! 'jump 'goal 'boom)
 
 (define (map-object name)
   (or (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects level))
@@ -46,7 +56,19 @@
   (let ((spawn (map-object "player")))
     (list #:id 'player #:x (entity-ref spawn #:x) #:y (entity-ref spawn #:y)
           #:width (entity-ref spawn #:width) #:height (entity-ref spawn #:height)
-          #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f)))
+          #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f
+          ;; Solid so that the lift's push-apart and carrying take it along.
+          #:solid? #t)))
+
+(define lift0
+  (let ((spawn (map-object "lift")))
+    (list #:id 'lift #:x (entity-ref spawn #:x) #:y (entity-ref spawn #:y)
+          #:width (entity-ref spawn #:width) #:height (entity-ref spawn #:height)
+          #:vx (entity-ref spawn #:speed) #:vy 0
+          #:solid? #t #:immovable? #t #:carries? #t)))
+
+(define lift-from-x (entity-ref lift0 #:x))
+(define lift-to-x (entity-ref (map-object "lift") #:to-x))
 
 ;;; ------------------------------------------------------------ bookkeeping
 (define demo-script "platformer.scm")
@@ -57,12 +79,17 @@
 (define (player-at frame)
   "The player as it was at the end of FRAME, or #f when FRAME is not one of
 the last 1000."
-  (entities-at frame))
+  (let ((entities (entities-at frame))) (and entities (car entities))))
+
+(define (lift-at frame)
+  "The lift as it was at the end of FRAME, or #f."
+  (entity-at frame 'lift))
 
 ;;; ------------------------------------------------------------ the game
 (define was-on-ground? #f)
 (define was-blocked? #f)
 (define last-wanted 0)                  ; the #:vx asked for last frame
+(define last-vy 0)                      ; the player's #:vy at the end of last frame
 (define reached-goal? #f)
 (define start-frame 0)                  ; the frame the run (re)started at
 (define goal-frame #f)                  ; the frame the goal was reached at
@@ -85,25 +112,59 @@ running on the ground."
   (set! was-on-ground? #f)
   (set! was-blocked? #f)
   (set! last-wanted 0)
+  (set! last-vy 0)
   (set! reached-goal? #f)
   (set! start-frame (+ (game-frame game) 1))
   (set! goal-frame #f)
-  (game-scene-set! game (update-scene (game-scene game) entities: (list (dress player0 0 #f 0)))))
+  (game-scene-set! game (update-scene (game-scene game) entities: (list (dress player0 0 #f 0) lift0)
+                                      tilemap: level)))
 
 (define (overlaps? a b)
   (aabb-overlap? (entity-ref a #:x 0) (entity-ref a #:y 0) (entity-ref a #:width 0) (entity-ref a #:height 0)
                  (entity-ref b #:x 0) (entity-ref b #:y 0) (entity-ref b #:width 0) (entity-ref b #:height 0)))
+
+(define (steer-lift lift)
+  ;; Back and forth between the ends of its run: physics moved it this frame,
+  ;; so the speed set here is the next frame's.
+  (let ((x (entity-ref lift #:x)) (speed (abs (entity-ref lift #:vx))))
+    (cond ((>= x lift-to-x) (entity-set lift #:vx (- speed)))
+          ((<= x lift-from-x) (entity-set lift #:vx speed))
+          (else lift))))
+
+(define (cells-above-head player tiles)
+  "The (col . row) cells of the row just above PLAYER's head that its box
+spans, on the map TILES."
+  (let* ((tw (tilemap-tile-width tiles)) (th (tilemap-tile-height tiles))
+         (x (entity-ref player #:x)) (w (entity-ref player #:width))
+         (row (floor (/ (- (entity-ref player #:y) 1) th))))
+    (map (lambda (col) (cons col row))
+         (iota (- (ceiling (/ (+ x w) tw)) (floor (/ x tw))) (floor (/ x tw))))))
+
+(define (break-blocks tiles cells)
+  "(map . count): the map TILES with each breakable block among CELLS
+removed, and how many there were."
+  (fold (lambda (cell acc)
+          (let ((m (car acc)) (col (car cell)) (row (cdr cell)))
+            (if (and (< -1 col (tilemap-width m)) (< -1 row (tilemap-height m))
+                     (= (tilemap-gid m 0 col row) breakable-gid))
+                (cons (tilemap-set-tile m col row 0) (+ (cdr acc) 1))
+                acc)))
+        (cons tiles 0) cells))
 
 (define (update game dt)
   (if (input-pressed? (game-input game) 'start)
       (restart! game)
       (play! game dt)))
 
+(define (entity-find entities id)
+  (find (lambda (e) (eq? (entity-ref e #:id) id)) entities))
+
 (define (play! game dt)
   ;; Physics has already run this frame: #:on-ground? and #:x are resolved.
   (let* ((input (game-input game))
          (scene (game-scene game))
          (player (car (scene-entities scene)))
+         (lift (entity-find (scene-entities scene) 'lift))
          (on-ground? (entity-ref player #:on-ground? #f))
          (wanted (cond ((input-held? input 'left) (- *run-speed*))
                        ((input-held? input 'right) *run-speed*)
@@ -112,7 +173,15 @@ running on the ground."
          ;; tile collision zeroed it.
          (blocked? (and (not (zero? wanted)) (not (zero? last-wanted))
                         (zero? (entity-ref player #:vx 0))))
-         (jump? (and (input-pressed? input 'a) on-ground?)))
+         (jump? (and (input-pressed? input 'a) on-ground?))
+         ;; The head hit something: it was rising and the tile step stopped it.
+         (head-hit? (and (negative? last-vy) (zero? (entity-ref player #:vy 0)) (not on-ground?)))
+         (broken (if head-hit?
+                     (break-blocks (scene-tilemap scene) (cells-above-head player (scene-tilemap scene)))
+                     (cons (scene-tilemap scene) 0))))
+    (when (positive? (cdr broken))
+      (play-sound 'boom)
+      (note! game 'broke))
     (when (and on-ground? (not was-on-ground?)) (note! game 'landed))
     (when (and blocked? (not was-blocked?)) (note! game 'bumped))
     (when (and (not reached-goal?) (overlaps? player goal))
@@ -123,13 +192,18 @@ running on the ground."
     (set! was-on-ground? on-ground?)
     (set! was-blocked? blocked?)
     (set! last-wanted wanted)
+    (set! last-vy (entity-ref player #:vy 0))
     (when jump?
       (play-sound 'jump)
       (note! game 'jumped))
     (let* ((player (entity-set player #:vx wanted))
            (player (if jump? (entity-set player #:ay (- *jump-force*)) player))
+           (player (if (or (input-held? input 'down) (entity-ref player #:drop-through? #f))
+                       (entity-set player #:drop-through? (input-held? input 'down))
+                       player))
            (player (dress player wanted on-ground? (game-frame game))))
-      (game-scene-set! game (update-scene scene entities: (list player))))))
+      (game-scene-set! game (update-scene scene entities: (list player (steer-lift lift))
+                                          tilemap: (car broken))))))
 
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
@@ -140,12 +214,15 @@ running on the ground."
          (seconds (/ (* (game-frame-delay game) (- (or goal-frame frame) start-frame)) 1000.)))
     (draw-sprite goal-flag (entity-ref goal #:x)
                  (- (+ (entity-ref goal #:y) (entity-ref goal #:height)) 16))
+    (let ((lift (entity-find (scene-entities (game-scene game)) 'lift)))
+      (for-each (lambda (k) (draw-sprite lift-piece (+ (entity-ref lift #:x) (* 16 k)) (- (entity-ref lift #:y) 8)))
+                (iota (quotient (entity-ref lift #:width) 16))))
     (draw-label (format #f "TIME ~,1f" seconds) 4 4 'white)
     (cond (reached-goal?
            (draw-label "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow #:scale 3)
            (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
           ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
-           (draw-label "ARROWS RUN   Z JUMP   GET TO THE FLAG" (centred-x "ARROWS RUN   Z JUMP   GET TO THE FLAG" 1 (game-width game)) (- (game-height game) 12) 'white)))))
+           (draw-label "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (centred-x "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" 1 (game-width game)) (- (game-height game) 12) 'white)))))
 
 (define (render game)
   ;; Runs after camera-follow! (which keeps the view inside the map).
@@ -155,7 +232,7 @@ running on the ground."
   (let ((frame (game-frame game))
         (player (car (scene-entities (game-scene game))))
         (camera (scene-camera (game-scene game))))
-    (remember! frame player)
+    (remember! frame (scene-entities (game-scene game)))
     (when (and trace? (zero? (modulo frame 20)))
       (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)~a  camera (~a, ~a)~%"
               frame (entity-ref player #:x) (entity-ref player #:y)
@@ -177,13 +254,25 @@ running on the ground."
     (112 . ())
     (120 . (right))              ; run off its end, drop to the ground, into the pit
     (220 . (right a))            ; in the pit, pressed against its wall: jump out
-    (221 . (right))))            ; on to the goal and the right-hand wall
+    (221 . (right))              ; over the grass, under the plank
+    (372 . (right a))            ; jump up through the one-way plank
+    (373 . (right))
+    (395 . ())                   ; landed on it: stand
+    (410 . (down))               ; drop through it
+    (411 . ())
+    (425 . (right))              ; on to the blocks
+    (453 . (right a))            ; jump: the head breaks the block above
+    (454 . (right))
+    (480 . ())                   ; wait at the second pit's edge for the lift
+    (573 . (right))              ; step on as it leaves the near end (frame 575)
+    (583 . ())                   ; ride it over
+    (636 . (right))))            ; walk off near the far end, on to the goal and the east wall
 
-(define demo-frames 360)
+(define demo-frames 720)
 
 (define game
   (make-game title: "Downstroke — platformer" width: 320 height: 240 frame-delay: 16
-             scene: (make-scene entities: (list player0) tilemap: level camera-target: 'player)
+             scene: (make-scene entities: (list player0 lift0) tilemap: level camera-target: 'player)
              update: update render: render
              input-script: input-script))
 

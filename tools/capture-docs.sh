@@ -20,6 +20,7 @@ capture() {
 }
 
 capture platformer 70
+capture platformer 458 platformer-beyond
 capture topdown 60
 capture sandbox 60
 capture shmup 24

@@ -3,7 +3,7 @@
 
 The outputs are checked in; the build never runs this. Standard library only
 (zlib, struct). Run it from anywhere:
-    python3 demo/maps/make_art.py                 # tiles.png, sprites.png, sprites.tsx
+    python3 demo/maps/make_art.py                 # tiles.png, level-tiles.png, sprites.png, sprites.tsx
     python3 demo/maps/make_art.py --preview DIR   # also x8 enlargements, in DIR
 
 Every picture is 16x16 and written below as 16 strings, one character a
@@ -159,6 +159,49 @@ DECOR = [  # a flower in a tuft of grass, not solid
 ]
 
 TILES = [GROUND, WALL, PLATFORM, DECOR]
+
+# ---------------------------------------------------------------- level-tiles.png
+# level-tiles.tsx (written by make_maps.py): local ids 0 one-way plank,
+# 1 breakable block. Only the platformer uses them.
+ONE_WAY = [  # a thin plank on two brackets: you stand on its top, jump through it
+    "yyyyyyyyyyyyyyyy",
+    "tttttttttttttttt",
+    "ottotttottotttto",
+    "nnnnnnnnnnnnnnnn",
+    "bbbbbbbbbbbbbbbb",
+    ".kb..........bk.",
+    "..kb........bk..",
+    "...k........k...",
+    "................",
+    "................",
+    "................",
+    "................",
+    "................",
+    "................",
+    "................",
+    "................",
+]
+
+BREAKABLE = [  # a riveted crate with a crack: it breaks when hit from below
+    "kkkkkkkkkkkkkkkk",
+    "kYZZZZZZZZZZZZYk",
+    "kZdYYYYYYYYYYdZk",
+    "kZYddddkdddddYZk",
+    "kZYdYYYkYYYYdYZk",
+    "kZYdYYkYYYYYdYZk",
+    "kZYdYYkkYYYYdYZk",
+    "kZYdYYYYkYYYdYZk",
+    "kZYdYYYYkkYYdYZk",
+    "kZYdYYYYYkYYdYZk",
+    "kZYdYYYYkYYYdYZk",
+    "kZYdYYYkYYYYdYZk",
+    "kZYddddkdddddYZk",
+    "kZdYYYYYYYYYYdZk",
+    "kdddddddddddddYk",
+    "kkkkkkkkkkkkkkkk",
+]
+
+LEVEL_TILES = [ONE_WAY, BREAKABLE]
 
 # ---------------------------------------------------------------- sprites.png
 # (type, picture); a sprite's local id is its index here.
@@ -550,6 +593,8 @@ def write(path, data):
 def main(argv):
     for i, art in enumerate(TILES):
         check(f"tile {i}", art)
+    for i, art in enumerate(LEVEL_TILES):
+        check(f"level tile {i}", art)
     for kind, art in SPRITES:
         check(kind, art)
     for i in (0, 1):  # ground and wall tile under and beside everything: opaque
@@ -557,13 +602,16 @@ def main(argv):
 
     tiles = sheet(TILES, len(TILES))
     sprites = sheet([art for _, art in SPRITES], SHEET_COLUMNS)
+    level_tiles = sheet(LEVEL_TILES, len(LEVEL_TILES))
     write(os.path.join(HERE, "tiles.png"), png(tiles))
+    write(os.path.join(HERE, "level-tiles.png"), png(level_tiles))
     write(os.path.join(HERE, "sprites.png"), png(sprites))
     write(os.path.join(HERE, "sprites.tsx"), sprites_tsx())
 
     if len(argv) == 3 and argv[1] == "--preview":
         os.makedirs(argv[2], exist_ok=True)
         write(os.path.join(argv[2], "tiles-x8.png"), png(tiles, 8))
+        write(os.path.join(argv[2], "level-tiles-x8.png"), png(level_tiles, 8))
         write(os.path.join(argv[2], "sprites-x8.png"), png(sprites, 8))
     elif len(argv) != 1:
         sys.exit(f"usage: {argv[0]} [--preview DIR]")

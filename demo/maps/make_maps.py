@@ -17,6 +17,8 @@ on the tile. Levels are drawn below as ASCII, one character a cell:
     W  wall        (tile 1, solid)   gid 2
     =  platform    (tile 2, solid)   gid 3
     "  grass/decor (tile 3, NOT solid: no "solid" property) gid 4
+    -  one-way plank (level-tiles 0, "one-way" property)   gid 21
+    B  breakable block (level-tiles 1, solid)              gid 22
 
 The layers are written in different encodings (CSV, base64, base64+zlib) so
 the demos exercise the loader's paths too. Objects (spawn points, coins, the
@@ -29,11 +31,15 @@ import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TILE = 16
-GIDS = {".": 0, "#": 1, "W": 2, "=": 3, '"': 4}
 # sprites.tsx (16x16 frames, written by make_art.py) follows demo-tiles.tsx in
 # every map, so that entities can take a #:sprite gid from the map's tilesets:
 # (+ SPRITES_FIRSTGID local-id). No cell uses it.
 SPRITES_FIRSTGID = 1 + 4  # demo-tiles.tsx's firstgid + its tilecount
+# level-tiles.tsx (over level-tiles.png, also written by make_art.py) follows
+# sprites.tsx in the platformer only, so the gids before it stay as they were:
+# a one-way plank and a block the player breaks from below.
+LEVEL_FIRSTGID = SPRITES_FIRSTGID + 16  # sprites.tsx's tilecount
+GIDS = {".": 0, "#": 1, "W": 2, "=": 3, '"': 4, "-": LEVEL_FIRSTGID, "B": LEVEL_FIRSTGID + 1}
 
 TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 <tileset version="1.10" tiledversion="1.10.2" name="demo-tiles" tilewidth="16" tileheight="16" tilecount="4" columns="4">
@@ -62,30 +68,36 @@ TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 """
 
 # ---------------------------------------------------------------- platformer
-# 60x15. Ground top at row 11 (y 176); a pit at columns 30-35 two tiles deep
+# 100x15. Ground top at row 11 (y 176); a pit at columns 30-35 two tiles deep
 # (its floor's top at row 13, y 208) whose right side rises into a wall (column
 # 36, rows 8-12: 80 px above the pit floor); two platforms (row 8, y 128; row
-# 5, y 80); grass that is not solid; walls at both ends.
+# 5, y 80); grass that is not solid; walls at both ends. Then a one-way plank
+# (row 8, columns 62-67) to jump up through and drop down from, three blocks
+# to break from below (row 8, columns 71-73), and a pit too wide to jump
+# (columns 78-89, three tiles deep) that the "lift" object carries you over.
 PLATFORMER = [
-    "W..........................................................W",  # 0
-    "W..........................................................W",  # 1
-    "W..........................................................W",  # 2
-    "W..........................................................W",  # 3
-    "W..........................................................W",  # 4
-    "W...............====.......................................W",  # 5
-    "W..........................................................W",  # 6
-    "W..........................................................W",  # 7
-    "W.........====......................W......................W",  # 8
-    "W...................................W......................W",  # 9
-    'W.."".................."............W..............."......W',  # 10
-    "W#############################......#######################W",  # 11
-    "W#############################......#######################W",  # 12
-    "W##########################################################W",  # 13
-    "W##########################################################W",  # 14
+    "W..................................................................................................W",  # 0
+    "W..................................................................................................W",  # 1
+    "W..................................................................................................W",  # 2
+    "W..................................................................................................W",  # 3
+    "W..................................................................................................W",  # 4
+    "W...............====...............................................................................W",  # 5
+    "W..................................................................................................W",  # 6
+    "W..................................................................................................W",  # 7
+    "W.........====......................W.........................------...BBB.........................W",  # 8
+    "W...................................W..............................................................W",  # 9
+    'W.."".................."............W..............."........................................".....W',  # 10
+    "W#############################......##########################################............#########W",  # 11
+    "W#############################......##########################################............#########W",  # 12
+    "W#############################################################################............#########W",  # 13
+    "W##################################################################################################W",  # 14
 ]
 PLATFORMER_OBJECTS = [
     ("player", "player", 40, 100, 12, 16, {}),
-    ("goal", "goal", 880, 144, 16, 32, {}),
+    ("goal", "goal", 1520, 144, 16, 32, {}),
+    # A lift over the second pit, flush with the ground at both ends of its
+    # run (x 1248 to 1392, its right end then at the far edge, 1440).
+    ("lift", "lift", 1248, 176, 48, 8, {"to-x": 1392, "speed": 2}),
 ]
 
 # ---------------------------------------------------------------- top-down
@@ -192,8 +204,26 @@ def objects_element(objects):
     return "\n".join(out) + "\n"
 
 
-def tmx(rows, encoding, objects=(), title=""):
+LEVEL_TILESET = """<?xml version="1.0" encoding="UTF-8"?>
+<tileset version="1.10" tiledversion="1.10.2" name="level-tiles" tilewidth="16" tileheight="16" tilecount="2" columns="2">
+ <image source="level-tiles.png" width="32" height="16"/>
+ <tile id="0" type="one-way">
+  <properties>
+   <property name="one-way" type="bool" value="true"/>
+  </properties>
+ </tile>
+ <tile id="1" type="breakable">
+  <properties>
+   <property name="solid" type="bool" value="true"/>
+  </properties>
+ </tile>
+</tileset>
+"""
+
+
+def tmx(rows, encoding, objects=(), title="", level_tiles=False):
     gids, width, height = gids_of(rows)
+    level_tileset = f' <tileset firstgid="{LEVEL_FIRSTGID}" source="level-tiles.tsx"/>\n' if level_tiles else ""
     return f"""<?xml version="1.0" encoding="UTF-8"?>
 <map version="1.10" tiledversion="1.10.2" orientation="orthogonal" renderorder="right-down" width="{width}" height="{height}" tilewidth="{TILE}" tileheight="{TILE}" infinite="0" nextlayerid="3" nextobjectid="{len(objects) + 1}">
  <properties>
@@ -201,7 +231,7 @@ def tmx(rows, encoding, objects=(), title=""):
  </properties>
  <tileset firstgid="1" source="demo-tiles.tsx"/>
  <tileset firstgid="{SPRITES_FIRSTGID}" source="sprites.tsx"/>
- <layer id="1" name="tiles" width="{width}" height="{height}">
+{level_tileset} <layer id="1" name="tiles" width="{width}" height="{height}">
 {data_element(gids, width, encoding)}
  </layer>
 {objects_element(objects)}</map>
@@ -215,7 +245,8 @@ def write(name, text):
 
 def main():
     write("demo-tiles.tsx", TILESET)
-    write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer"))
+    write("level-tiles.tsx", LEVEL_TILESET)
+    write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer", level_tiles=True))
     write("topdown.tmx", tmx(TOPDOWN, "base64", TOPDOWN_OBJECTS, "top-down"))
     write("sandbox.tmx", tmx(SANDBOX, "zlib", (), "sandbox"))
     write("shmup.tmx", tmx(EMPTY_SCREEN, "csv", (), "shmup"))

@@ -41,7 +41,7 @@ demos' top-level names stay in that module."
 
 (test-group "maps"
   (let ((m (tilemap "platformer")))
-    (test-equal "platformer: 60×15 of 16 px" '(60 15 16 16)
+    (test-equal "platformer: 100×15 of 16 px" '(100 15 16 16)
       (list (tilemap-width m) (tilemap-height m) (tilemap-tile-width m) (tilemap-tile-height m)))
     (test-assert "platformer: ground rows 11-14 left of the pit"
       (solid-cells? m (append-map (lambda (r) (row-cells (range 1 30) r)) '(11 12 13 14))))
@@ -54,12 +54,29 @@ demos' top-level names stay in that module."
       (solid-cells? m (append (row-cells (range 10 14) 8) (row-cells (range 16 20) 5))))
     (test-assert "platformer: nothing beside the platforms"
       (empty-cells? m (list '(9 . 8) '(14 . 8) '(15 . 5) '(20 . 5) '(12 . 7) '(12 . 9))))
-    (test-assert "platformer: end walls" (solid-cells? m (append (col-cells 0 (range 0 15)) (col-cells 59 (range 0 15)))))
+    (test-assert "platformer: end walls" (solid-cells? m (append (col-cells 0 (range 0 15)) (col-cells 99 (range 0 15)))))
+    (test-assert "platformer: the ground goes on under the old east wall (column 59)"
+      (and (empty-cells? m (col-cells 59 (range 1 11))) (solid-cells? m (col-cells 59 (range 11 15)))))
+    (test-equal "platformer: the plank (row 8, columns 62-67) is one-way, gid 21, not solid"
+      '((#t #t #t #t #t #t) (21 21 21 21 21 21) #f (#f #f))
+      (list (map (lambda (c) (tilemap-cell-one-way? m c 8)) (range 62 68))
+            (map (lambda (c) (tilemap-gid m 0 c 8)) (range 62 68))
+            (any (lambda (c) (tilemap-cell-solid? m c 8)) (range 62 68))
+            (list (tilemap-cell-one-way? m 61 8) (tilemap-cell-one-way? m 68 8))))
+    (test-equal "platformer: the breakable blocks (row 8, columns 71-73) are solid, gid 22"
+      '((22 22 22) #t) (list (map (lambda (c) (tilemap-gid m 0 c 8)) (range 71 74))
+                             (solid-cells? m (row-cells (range 71 74) 8))))
+    (test-assert "platformer: the second pit (columns 78-89, rows 11-13) is open, with a floor (row 14)"
+      (and (empty-cells? m (append-map (lambda (r) (row-cells (range 78 90) r)) '(11 12 13)))
+           (solid-cells? m (row-cells (range 78 90) 14))
+           (solid-cells? m (col-cells 77 (range 11 15))) (solid-cells? m (col-cells 90 (range 11 15)))))
     (test-equal "platformer: grass is tile 4 and not solid" '(4 #f 4 #f)
       (list (tilemap-gid m 0 3 10) (tilemap-cell-solid? m 3 10)
             (tilemap-gid m 0 52 10) (tilemap-cell-solid? m 52 10)))
-    (test-equal "platformer: objects" '((player 40 100 12 16) (goal 880 144 16 32))
-      (map (lambda (o) (pick o #:type #:x #:y #:width #:height)) (tilemap-objects m))))
+    (test-equal "platformer: objects" '((player 40 100 12 16) (goal 1520 144 16 32) (lift 1248 176 48 8))
+      (map (lambda (o) (pick o #:type #:x #:y #:width #:height)) (tilemap-objects m)))
+    (test-equal "platformer: the lift's run and speed" '(1392 2)
+      (pick (third (tilemap-objects m)) #:to-x #:speed)))
   (let ((m (tilemap "topdown")))
     (test-equal "topdown: 20×15 (base64)" '(20 15) (list (tilemap-width m) (tilemap-height m)))
     (test-assert "topdown: border walls"
@@ -116,10 +133,11 @@ demos' top-level names stay in that module."
   (test-equal "landed at frame 10: y 160, vy 0, on-ground" '(160 0 #t) (pick (p-at 10) #:y #:vy #:on-ground?))
   (test-equal "events" '((10 . landed) (50 . jumped) (76 . landed) (85 . jumped) (111 . landed)
                          (147 . landed) (194 . landed) (215 . bumped) (220 . jumped) (247 . landed)
-                         (330 . goal) (351 . bumped))
+                         (372 . jumped) (398 . landed) (420 . landed) (453 . jumped) (455 . broke)
+                         (461 . landed) (675 . goal) (696 . bumped))
     (events-of platformer))
-  (test-equal "sounds: a jump for each press of 'a on the ground (not the one in the air at 60)"
-    '((50 . jump) (85 . jump) (220 . jump) (330 . goal))
+  (test-equal "sounds: a jump for each press of 'a on the ground (not the one in the air at 60), a boom for the block"
+    '((50 . jump) (85 . jump) (220 . jump) (372 . jump) (453 . jump) (455 . boom) (675 . goal))
     (game-sounds (game-of platformer)))
   ;; Jump pressed at frame 50 (on the ground): the next frame's vy = -15 + 1.
   (test-equal "frame 50: on the ground before the jump" '(160 #t) (pick (p-at 50) #:y #:on-ground?))
@@ -136,18 +154,51 @@ demos' top-level names stay in that module."
   (test-equal "pinned to the wall while rising, over it once the feet clear y 128"
     '((564 108) (567 102)) (map (lambda (k) (pick (p-at k) #:x #:y)) '(228 229)))
   (test-equal "landed beyond the wall" '(160 #t) (pick (p-at 247) #:y #:on-ground?))
-  (test-equal "stopped by the east wall at x = 59·16 - 12 = 932" '(932 932)
-    (map (lambda (k) (entity-ref (p-at k) #:x)) '(351 359)))
+  ;; The one-way plank: row 8 (top y 128), columns 62-67 (x 992-1088).
+  (test-equal "jumped up through the plank: rising past its top, no stop"
+    '((1005 121 -12) (1011 100 -10) (1038 55 -1))
+    (map (lambda (k) (pick (p-at k) #:x #:y #:vy)) '(375 377 386)))
+  (test-equal "landed on the plank from above: y 128 - 16 = 112" '(1065 112 0 #t)
+    (pick (p-at 398) #:x #:y #:vy #:on-ground?))
+  (test-equal "standing on it until Down is held (frame 410)" '((112 #t) (112 #t #t))
+    (list (pick (p-at 409) #:y #:on-ground?) (pick (p-at 410) #:y #:on-ground? #:drop-through?)))
+  (test-equal "dropped through it, back on the ground at frame 420"
+    '((113 1 #f) (157 9 #f) (160 0 #t))
+    (map (lambda (k) (pick (p-at k) #:y #:vy #:on-ground?)) '(411 419 420)))
+  ;; The blocks: row 8 (bottom y 144), columns 71-73 (x 1136-1184).
+  (test-equal "the head hit the middle block: stopped at y 144, vy 0" '(1155 144 0)
+    (pick (p-at 455) #:x #:y #:vy))
+  (test-equal "that block is gone from the scene's map; its neighbours and the level are not"
+    '((22 0 22) (22 22 22) (#t #f #t))
+    (let ((now (scene-tilemap (game-scene (game-of platformer)))) (level (ref platformer 'level)))
+      (list (map (lambda (c) (tilemap-gid now 0 c 8)) '(71 72 73))
+            (map (lambda (c) (tilemap-gid level 0 c 8)) '(71 72 73))
+            (map (lambda (c) (tilemap-cell-solid? now c 8)) '(71 72 73)))))
+  ;; The lift: 48×8 at y 176, x 1248 to 1392 and back at 2 px a frame.
+  (define (l-x k) (entity-ref ((ref platformer 'lift-at) k) #:x))
+  (test-equal "the lift runs 1248 → 1392 → 1248" '(1250 1392 1390 1248 1250)
+    (map l-x '(0 71 72 143 144)))
+  (test-equal "stepped on as it left the near end" '((1236 1248) (1249 1254))
+    (map (lambda (k) (list (entity-ref (p-at k) #:x) (l-x k))) '(575 578)))
+  (test-assert "standing still on it, carried: 10 px from its left end every frame from 584 to 635"
+    (every (lambda (k) (and (= (- (entity-ref (p-at k) #:x) (l-x k)) 10)
+                            (equal? (pick (p-at k) #:y #:vx #:on-ground?) '(160 0 #t))))
+           (range 584 636)))
+  (test-equal "walking on it: 3 + 2 px a frame, then 3 - 2 as it turns back, then off on the far side"
+    '(1385 1390 1434 1435 1439 1442)
+    (map (lambda (k) (entity-ref (p-at k) #:x)) '(637 638 648 649 651 652)))
+  (test-equal "stopped by the east wall at x = 99·16 - 12 = 1572" '(1572 1572)
+    (map (lambda (k) (entity-ref (p-at k) #:x)) '(701 719)))
   (test-equal "running: x grows by 3 a frame" '(520 523 526)
     (map (lambda (k) (entity-ref (p-at k) #:x)) '(200 201 202)))
   ;; camera-follow! centres the player (320×240 view) and keeps the view
   ;; inside the level (960×240).
   (test-equal "camera followed: x = 517 + 6 - 160 at frame 199, y clamped to 0" '(363 . 0) camera-at-200)
-  (test-equal "camera at the end: clamped to 960 - 320" '(640 . 0)
+  (test-equal "camera at the end: clamped to 1600 - 320" '(1280 . 0)
     (let ((c (scene-camera (game-scene (game-of platformer))))) (cons (camera-x c) (camera-y c))))
   (test-assert "positions stay exact integers"
     (every (lambda (k) (and (exact? (entity-ref (p-at k) #:x)) (exact? (entity-ref (p-at k) #:y))))
-           (range 0 360))))
+           (range 0 720))))
 
 ;;; ================================================================ top-down
 (define topdown (run-demo "topdown.scm"))
