@@ -64,7 +64,10 @@ advance by a k-th, in flonums, and the motion converges to the continuous
 one as k grows."
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
-                                  substeps (resting-contacts?))))
-    (if (eq? stepped entities)
+                                  substeps (resting-contacts?)))
+         (old (scene-contacts scene))
+         (contacts (%frame-contacts stepped))
+         (contacts (if (equal? contacts old) old contacts)))
+    (if (and (eq? stepped entities) (eq? contacts old))
         scene
-        ((@@ (downstroke world) %scene-with-entities) scene stepped))))
+        ((@@ (downstroke world) %scene-after-frame) scene stepped contacts))))
