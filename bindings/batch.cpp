@@ -47,6 +47,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.writes.clear();
     batch.hit.clear();
     batch.reports = 0;
+    batch.contact_bodies = 0;
     size_t i = 0;
     SCM p = entities;
     Tortoise tortoise;
@@ -68,6 +69,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         }
         batch.hit.push_back(hit);
         batch.before.push_back(c.body);
+        batch.contact_bodies += c.body.contacts;
         batch.has_tween.push_back(c.has_tween);
         batch.writes.push_back(FirstWrites{.watched = c.watched});
     }
@@ -149,9 +151,7 @@ size_t entity_edits(const Batch& batch, size_t i, SCM entity, SCM names, Edit* e
 
 // The names a call's contact report uses, or #f when it writes no report.
 SCM report_names(SCM entities, const Batch& batch) {
-    if (batch.reports == 0) return SCM_BOOL_F;
-    const bool any = std::any_of(batch.bodies.begin(), batch.bodies.end(), [](const Body& b) { return b.contacts; });
-    return any ? entity_names(entities) : SCM_BOOL_F;
+    return batch.reports != 0 && batch.contact_bodies != 0 ? entity_names(entities) : SCM_BOOL_F;
 }
 
 }  // namespace
@@ -163,14 +163,17 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.fields.resize(batch.size());
     const SCM names = report_names(entities, batch);
     Edit edits[kFieldCount + 2];
-    SCM p = entities;
-    for (size_t i = 0; i < batch.size(); ++i, p = SCM_CDR(p)) {
+    const bool reports = scm_is_true(names);
+    SCM p = entities;  // walked only for a report: the spine stays out of cache otherwise
+    for (size_t i = 0; i < batch.size(); ++i) {
         batch.fields[i] = changed_fields(batch.before[i], batch.bodies[i]);
         if (!check_finite(batch.bodies[i], batch.fields[i], f)) return entities;
         batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
-        // A contact entity's report may change what the plist holds, or not.
-        if (scm_is_true(names) && batch.bodies[i].contacts)
-            batch.changed[i] = entity_edits(batch, i, SCM_CAR(p), names, edits) != 0;
+        if (reports) {
+            // A contact entity's report may change what the plist holds, or not.
+            if (batch.bodies[i].contacts) batch.changed[i] = entity_edits(batch, i, SCM_CAR(p), names, edits) != 0;
+            p = SCM_CDR(p);
+        }
         if (batch.changed[i]) last = i + 1;
     }
     if (last == 0) return entities;

@@ -45,6 +45,7 @@ struct Batch {
     // The contact report (semantics §10): which keys this call writes on
     // contact entities (ReportKeys; decode_batch resets it) and the pairs.
     uint8_t reports = 0;
+    size_t contact_bodies = 0;  // decoded with #:contacts? (decode_batch counts them)
     ContactIndex contacts;
     // The list the last whole frame returned (slot 0 of a protected vector,
     // so it cannot be recycled into a look-alike at the same address), and

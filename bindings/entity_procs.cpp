@@ -131,7 +131,7 @@ void resolve_noting_pairs(Batch& batch) {
     thread_local ContactScratch scratch;
     thread_local PairLog own;
     const std::span<Body> bodies(batch.bodies);
-    const bool reports = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.contacts; });
+    const bool reports = batch.contact_bodies != 0;
     PairLog* overlay = pushed_pairs();
     own.clear();
     PairLog* log = overlay ? overlay : reports ? &own : nullptr;

@@ -52,7 +52,7 @@ thread_local std::vector<IndexPair> last_pairs;
 
 // After the frame: what push-apart logged, when some entity reports contacts.
 void gather_contacts(Batch& batch) {
-    if (std::none_of(batch.bodies.begin(), batch.bodies.end(), [](const Body& b) { return b.contacts; })) return;
+    if (batch.contact_bodies == 0) return;
     batch.contacts.gather(batch.frame.contact_pairs(), batch.bodies);
     batch.reports = kReportsTouching | kReportsStanding;
     last_pairs = batch.contacts.pairs;

@@ -61,7 +61,9 @@ tweens, then motion, tiles, ground, push-apart and groups), done in one
 native call. With SUBSTEPS k > 1 (beyond the seed), everything after the
 tweens runs as k sub-frames of 1/k frame each: velocities and gravity
 advance by a k-th, in flonums, and the motion converges to the continuous
-one as k grows."
+one as k grows. Entities with #:contacts? #t get a contact report
+(#:blocked, #:touching, #:standing-on) and the frame's pairs with them are
+kept in the scene (scene-contacts)."
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
                                   substeps (resting-contacts?)))

@@ -501,7 +501,10 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
         (else
          (let ((d (list-diff (scene-entities n-in) (scene-entities r-in)
                              (scene-entities (cdr n)) (scene-entities (cdr r)))))
-           (and d (apply mm d))))))
+           (cond (d (apply mm d))
+                 ((not (equal? (scene-contacts (cdr n)) (scene-contacts (cdr r))))
+                  (mm #f "<scene-contacts>" (scene-contacts (cdr n)) (scene-contacts (cdr r))))
+                 (else #f))))))
 
 ;;; Step SCENE for frames 0 … LAST (#f: frame-count − 1) on both sides.
 ;;; Returns (mismatch . native-final-entities); the mismatch is #f when all
