@@ -416,10 +416,10 @@ HOLDERS ((index . entity) …) other than its own SLOT and its #:id."
                               (not (skips? (cdr slot) 'entity-collisions))))
           (map cons (iota (length entities)) entities)))
 
-(define (on-solid e tm holders itself?)
+(define* (on-solid e tm holders itself? #:optional (name-at name-of))
   "#:on-ground? from the tiles and from HOLDERS ((index . entity) …),
 leaving out those for which (ITSELF? index entity) holds and those sharing
-E's #:id."
+E's #:id. A contact entity's holder is named by (NAME-AT entity index)."
   (if (or (not (flag e #:gravity?)) (skips? e 'on-solid))
       e
       (let* ((holds? (lambda (slot)
@@ -431,7 +431,7 @@ E's #:id."
         (if (contacts? e)
             ;; §10: the first holder in list order, tiles aside
             (let ((holder (find holds? holders)))
-              (put-report e #:standing-on (and holder (name-of (cdr holder) (car holder)))))
+              (put-report e #:standing-on (and holder (name-at (cdr holder) (car holder)))))
             e))))
 
 (define-step (detect-on-solid e scene dt)
@@ -771,6 +771,9 @@ first: of the frame, before the tweens), then push-apart, then groups."
 ground detection and resting read (its holders, by slot)."
   (let* ((tm (scene-tilemap scene))
          (supporters (holders supporting))
+         ;; Holders are named as the entities stepped now (after the tweens).
+         (names (list->vector (map name-of entities (iota (length entities)))))
+         (name-at (lambda (o i) (vector-ref names i)))
          (rest? (resting-contacts?))
          (stepped
           (map (lambda (e slot)
@@ -782,7 +785,7 @@ ground detection and resting read (its holders, by slot)."
                         (e (velocity-step e h #:y #:vy 'velocity-y))
                         (e (tiles-y e scene h (> round 0)))
                         ;; not itself: its own slot of the supporting list
-                        (e (on-solid e tm supporters (lambda (i o) (= i slot)))))
+                        (e (on-solid e tm supporters (lambda (i o) (= i slot)) name-at)))
                    (cons e rests)))
                entities (iota (length entities))))
          (moved (same-or (map car stepped) entities)))
