@@ -902,6 +902,12 @@
   (test-equal "… nothing while it stays" '(() ()) (list (contacts-begun s1 s2) (contacts-ended s1 s2)))
   (test-equal "contacts-ended: the frame it parts" '((floor . box)) (contacts-ended s2 s3))
   (test-equal "… nothing begins then" '() (contacts-begun s2 s3)))
+(let* ((wall (lambda (id x) `(#:id ,id #:x ,x #:y 0 #:width 10 #:height 10 #:solid? #t #:immovable? #t
+                             #:contacts? #t)))
+       (s1 (step-scene (make-scene #:entities (list (wall 'l 0) (wall 'r 5))) 16)))
+  (test-equal "two overlapping immovable walls touch, though nothing moves them" '((l . r)) (scene-contacts s1))
+  (test-eq "… and the next frame, with the same report and pairs, is the scene itself" s1 (step-scene s1 16)))
+(test-error "scene-contacts refuses what is not a scene" 'wrong-type-arg (scene-contacts '()))
 (test-equal "pairs match either way round" '() (contacts-begun '((a . b)) '((b . a))))
 (test-equal "pair lists and scenes mix" '((a . c)) (contacts-begun (make-scene) '((a . c))))
 (test-error "contacts-begun refuses what is neither a scene nor a pair list" 'wrong-type-arg
