@@ -46,6 +46,8 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
     batch.has_tween.clear();
     batch.writes.clear();
     batch.hit.clear();
+    batch.reports = 0;
+    batch.contact_bodies = 0;
     size_t i = 0;
     SCM p = entities;
     Tortoise tortoise;
@@ -67,6 +69,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         }
         batch.hit.push_back(hit);
         batch.before.push_back(c.body);
+        batch.contact_bodies += c.body.contacts;
         batch.has_tween.push_back(c.has_tween);
         batch.writes.push_back(FirstWrites{.watched = c.watched});
     }
@@ -132,6 +135,25 @@ void remember(Batch& batch, size_t i, SCM entity) {
     SCM_SIMPLE_VECTOR_SET(batch.cache, i, entity);
 }
 
+
+// The edits that rewrite entity i; with `names` (the list's, when the call
+// reports contacts), a contact entity's report values too.
+size_t entity_edits(const Batch& batch, size_t i, SCM entity, SCM names, Edit* edits) {
+    const Body& b = batch.bodies[i];
+    const size_t n = field_edits(batch.fields[i], b, edits, &batch.writes[i]);
+    if (scm_is_false(names) || !b.contacts) return n;
+    const SCM touching =
+        (batch.reports & kReportsTouching) ? touching_names(batch.contacts, i, names) : SCM_UNDEFINED;
+    const SCM standing =
+        (batch.reports & kReportsStanding) && b.detects_ground() ? standing_name(b, names) : SCM_UNDEFINED;
+    return report_edits(entity, touching, standing, edits, n);
+}
+
+// The names a call's contact report uses, or #f when it writes no report.
+SCM report_names(SCM entities, const Batch& batch) {
+    return batch.reports != 0 && batch.contact_bodies != 0 ? entity_names(entities) : SCM_BOOL_F;
+}
+
 }  // namespace
 
 SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
@@ -139,20 +161,29 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
     size_t last = 0;
     batch.changed.resize(batch.size());
     batch.fields.resize(batch.size());
+    const SCM names = report_names(entities, batch);
+    Edit edits[kFieldCount + 2];
+    const bool reports = scm_is_true(names);
+    SCM p = entities;  // walked only for a report: the spine stays out of cache otherwise
     for (size_t i = 0; i < batch.size(); ++i) {
         batch.fields[i] = changed_fields(batch.before[i], batch.bodies[i]);
         if (!check_finite(batch.bodies[i], batch.fields[i], f)) return entities;
         batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
+        if (reports) {
+            // A contact entity's report may change what the plist holds, or not.
+            if (batch.bodies[i].contacts) batch.changed[i] = entity_edits(batch, i, SCM_CAR(p), names, edits) != 0;
+            p = SCM_CDR(p);
+        }
         if (batch.changed[i]) last = i + 1;
     }
     if (last == 0) return entities;
-    SCM head = SCM_EOL, tail = SCM_BOOL_F, p = entities;
+    SCM head = SCM_EOL, tail = SCM_BOOL_F;
+    p = entities;
     const Conser cons;
     for (size_t i = 0; i < last; ++i, p = SCM_CDR(p)) {
         SCM plist = SCM_CAR(p), entity = plist;
         if (batch.changed[i]) {
-            Edit edits[16];
-            entity = rewrite_plist(plist, edits, field_edits(batch.fields[i], batch.bodies[i], edits, &batch.writes[i]));
+            entity = rewrite_plist(plist, edits, entity_edits(batch, i, plist, names, edits));
             remember(batch, i, entity);
         }
         SCM cell = cons(entity, SCM_EOL);

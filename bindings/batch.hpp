@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "contact_report.hpp"
 #include "failure.hpp"
 #include "frame.hpp"
 #include "settle.hpp"
@@ -41,6 +42,11 @@ struct Batch {
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
+    // The contact report (semantics §10): which keys this call writes on
+    // contact entities (ReportKeys; decode_batch resets it) and the pairs.
+    uint8_t reports = 0;
+    size_t contact_bodies = 0;  // decoded with #:contacts? (decode_batch counts them)
+    ContactIndex contacts;
     // The list the last whole frame returned (slot 0 of a protected vector,
     // so it cannot be recycled into a look-alike at the same address), and
     // whether every entity in it had settled: handed that very list again

@@ -1,10 +1,12 @@
 // The per-entity physics steps and the bulk steps as native procedures.
 // Each: validate and decode → run the core step → encode only what changed.
+#include <algorithm>
 #include <cmath>
 
 #include "args.hpp"
 #include "batch.hpp"
 #include "carry.hpp"
+#include "contact_report.hpp"
 #include "contacts.hpp"
 #include "detail/contact_scratch.hpp"
 #include "convert.hpp"
@@ -22,9 +24,15 @@ namespace ds::guile {
 
 namespace {
 
-// Decodes one entity, runs step on its body, encodes what changed.
-template <typename Step>
-SCM step_entity(const char* proc, SCM entity, Step step) {
+// No #:standing-on to report (every step but detect-on-solid).
+struct NoStanding {
+    SCM operator()(const Body&) const { return SCM_UNDEFINED; }
+};
+
+// Decodes one entity, runs step on its body, encodes what changed; a
+// contact entity's #:standing-on is named by `standing` (semantics §10).
+template <typename Step, typename Standing = NoStanding>
+SCM step_entity(const char* proc, SCM entity, Step step, Standing standing = {}) {
     Failure f{proc};
     SCM result = entity;
     {
@@ -32,9 +40,13 @@ SCM step_entity(const char* proc, SCM entity, Step step) {
         if (decode_entity(entity, d, f)) {
             const Body before = d.body;
             guarded(f, nullptr, [&] { step(d.body); });
-            Edit edits[16];
+            Edit edits[kFieldCount + 2];
             const uint32_t changed = changed_fields(before, d.body);
-            if (!f && check_finite(d.body, changed, f)) result = rewrite_plist(entity, edits, field_edits(changed, d.body, edits));
+            if (!f && check_finite(d.body, changed, f)) {
+                size_t n = field_edits(changed, d.body, edits);
+                if (d.body.contacts) n = report_edits(entity, SCM_UNDEFINED, standing(d.body), edits, n);
+                result = rewrite_plist(entity, edits, n);
+            }
         }
     }
     if (f) raise(f);
@@ -76,9 +88,17 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
             size_t index = 0;
             for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++index)
                 if (scm_is_eq(SCM_CAR(p), e)) scene.bodies[index].solid = false;
-            result = step_entity("detect-on-solid", e, [&](Body& b) {
-                detect_on_solid(b, scene.bodies, -1, grid);
-            });
+            auto detect = [&](Body& b) {
+                if (detect_on_solid(b, scene.bodies, -1, grid) && b.contacts)
+                    b.standing_on = static_cast<int32_t>(first_supporter(b, scene.bodies, -1) + 1);
+            };
+            auto standing = [&](const Body& b) {
+                if (!b.detects_ground()) return SCM_UNDEFINED;
+                if (b.standing_on <= 0) return SCM_BOOL_F;
+                const auto k = static_cast<size_t>(b.standing_on - 1);
+                return entity_name(scm_list_ref(entities, scm_from_size_t(k)), k);
+            };
+            result = step_entity("detect-on-solid", e, detect, standing);
         }
     });
     scm_dynwind_end();
@@ -86,7 +106,7 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
     return result;
 }
 
-template <void (*Bulk)(std::span<Body>)>
+template <void (*Bulk)(Batch&)>
 SCM bulk_step(const char* proc, SCM entities) {
     Failure f{proc};
     SCM result = entities;
@@ -94,7 +114,7 @@ SCM bulk_step(const char* proc, SCM entities) {
     guarded(f, nullptr, [&] {
         Batch& batch = lease_batch();
         if (decode_batch(entities, batch, f)) {
-            Bulk(batch.bodies);
+            Bulk(batch);
             result = encode_batch(entities, batch, f);
         }
     });
@@ -106,13 +126,25 @@ SCM bulk_step(const char* proc, SCM entities) {
 // Scheme's bulk push-apart has no Frame to own its scratch: it keeps one per
 // thread here in the bindings (so a warm call does not allocate), and notes
 // pairs in the overlay's log as step-scene does.
-void resolve_noting_pairs(std::span<Body> bodies) {
+// With contact entities it logs the pairs (in the overlay's log when there
+// is one) to write their #:touching from (semantics §10).
+void resolve_noting_pairs(Batch& batch) {
     thread_local ContactScratch scratch;
-    scratch.log = pushed_pairs();
+    thread_local PairLog own;
+    const std::span<Body> bodies(batch.bodies);
+    const bool reports = batch.contact_bodies != 0;
+    PairLog* overlay = pushed_pairs();
+    own.clear();
+    PairLog* log = overlay ? overlay : reports ? &own : nullptr;
+    const size_t from = log ? log->size() : 0;
+    scratch.log = log;
     resolve_entity_collisions(scratch, bodies);
+    if (!reports) return;
+    batch.contacts.gather(std::span<const IndexPair>(*log).subspan(from), bodies);
+    batch.reports = kReportsTouching;
 }
 // Groups need scratch only when some body has an origin: a local one will do.
-void sync_groups_alone(std::span<Body> bodies) { sync_groups(bodies); }
+void sync_groups_alone(Batch& batch) { sync_groups(batch.bodies); }
 
 SCM resolve_entity_collisions_n(SCM entities) {
     return bulk_step<resolve_noting_pairs>("resolve-entity-collisions", entities);

@@ -45,6 +45,19 @@ struct LastFrame {
 };
 thread_local LastFrame last_frame;
 
+// The pairs of the last step-scene on this thread with a contact entity
+// (semantics §10), by index into the list it returned: %frame-contacts
+// names them.
+thread_local std::vector<IndexPair> last_pairs;
+
+// After the frame: what push-apart logged, when some entity reports contacts.
+void gather_contacts(Batch& batch) {
+    if (batch.contact_bodies == 0) return;
+    batch.contacts.gather(batch.frame.contact_pairs(), batch.bodies);
+    batch.reports = kReportsTouching | kReportsStanding;
+    last_pairs = batch.contacts.pairs;
+}
+
 }  // namespace
 
 PairLog*& pushed_pairs() {
@@ -58,6 +71,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
     Failure f{"step-scene"};
     SCM result = entities;
     if (PairLog* log = pushed_pairs()) log->clear();  // the overlay shows this frame's pairs
+    last_pairs.clear();
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
     guarded(f, nullptr, [&] {
         FrameOptions opts;
@@ -96,6 +110,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                                          tweened ? std::span<const Body>(batch.frame_start)
                                                  : std::span<const Body>(),
                                          batch.writes, batch.settling.asleep());
+                gather_contacts(batch);
                 t0 = Clock::now();
                 result = encode_batch(list, batch, f);
                 if (!f) {
@@ -117,6 +132,19 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
     return result;
 }
 
+// The last step-scene's pairs, named against the list it returned.
+SCM frame_contacts(SCM entities) {
+    if (last_pairs.empty()) return SCM_EOL;
+    size_t needed = 0;
+    for (const IndexPair& p : last_pairs) needed = std::max<size_t>(needed, p.second + 1u);
+    if (scm_is_false(scm_list_p(entities)) || scm_to_size_t(scm_length(entities)) < needed) {
+        Failure f{"step-scene"};
+        fail(f, "wrong-type-arg", scm_list_1(entities), "expected the entity list the frame returned, got ~S");
+        raise(f);
+    }
+    return pair_names(last_pairs, entity_names(entities));
+}
+
 SCM step_stats(const char* name, const StepStats& s) {
     return scm_list_4(scm_from_utf8_symbol(name), scm_from_uint64(s.processed),
                       scm_from_uint64(s.skipped), scm_from_double(s.ms));
@@ -135,6 +163,8 @@ SCM frame_stats() {
 void register_frame_procedures() {
     define_procedure<4, 2, 0, step_entities>("%step-entities",
         WrapperDoc{"(entities tilemap dt mode [substeps [resting-contacts?]])", "step-scene", "(downstroke physics)"});
+    define_procedure<1, 0, 0, frame_contacts>("%frame-contacts",
+        WrapperDoc{"(entities) → ((name-a . name-b) …)", "step-scene", "(downstroke physics)"});
     define_procedure<0, 0, 0, frame_stats>("%frame-stats",
         WrapperDoc{"() → ((step processed skipped ms) …)", "engine-stats", "(downstroke engine)"});
 }

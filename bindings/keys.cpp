@@ -39,6 +39,8 @@ void init_keys() {
         storage.skip_symbol[bit] = keep(scm_from_utf8_symbol(skip_name(static_cast<uint16_t>(1u << bit))));
     storage.swept = keep(scm_from_utf8_symbol("swept"));
     storage.discrete = keep(scm_from_utf8_symbol("discrete"));
+    constexpr const char* kSides[4] = {"left", "right", "up", "down"};
+    for (int bit = 0; bit < 4; ++bit) storage.side_symbol[bit] = keep(scm_from_utf8_symbol(kSides[bit]));
     keys = &storage;
 }
 

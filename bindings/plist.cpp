@@ -67,6 +67,8 @@ struct Flag {};
 struct Skips {};
 struct Tag {};
 struct Id {};
+struct Sides {};
+struct Report {};
 
 // A bignum the decoded double holds exactly, such as 2^64, is not lossy: it
 // is written back as itself (num_to_scm), so a frame that writes it and
@@ -135,8 +137,62 @@ bool decode(Id, SCM key, SCM v, int64_t& out, uint32_t, Decoded& d, Failure& f) 
     return decode_identity(key, v, out, f);
 }
 
-SCM encode(Num n) { return num_to_scm(n); }
-SCM encode(bool flag) { return scm_from_bool(flag); }
+// #:blocked is the engine's (semantics §10): a list of the sides in the
+// order left right up down reads as those sides; any other value as none,
+// to be rewritten by the next write (kSidesUnwritten).
+uint8_t sides_of(SCM list) {
+    uint8_t mask = 0;
+    int next = 0;  // the sides must come in order, each once
+    SCM p = list;
+    for (; scm_is_pair(p) && next < 4; p = SCM_CDR(p)) {
+        int bit = next;
+        while (bit < 4 && !scm_is_eq(SCM_CAR(p), keys->side_symbol[bit])) ++bit;
+        if (bit == 4) return kSidesUnwritten;
+        mask |= static_cast<uint8_t>(1u << bit);
+        next = bit + 1;
+    }
+    return scm_is_null(p) ? mask : static_cast<uint8_t>(kSidesUnwritten);
+}
+
+bool decode(Sides, SCM, SCM v, uint8_t& out, uint32_t, Decoded&, Failure&) {
+    out = sides_of(v);
+    return true;
+}
+// The report's names are compared as values when written (contact_report.hpp).
+bool decode(Report, SCM, SCM, uint8_t& out, uint32_t, Decoded&, Failure&) {
+    out = 0;
+    return true;
+}
+bool decode(Report, SCM, SCM, int32_t& out, uint32_t, Decoded&, Failure&) {
+    out = kStandingUnknown;
+    return true;
+}
+
+SCM encode(Number, Num n) { return num_to_scm(n); }
+SCM encode(Flag, bool flag) { return scm_from_bool(flag); }
+SCM encode(Sides, uint8_t mask) {
+    SCM list = SCM_EOL;
+    for (int bit = 3; bit >= 0; --bit)
+        if (mask & (1u << bit)) list = scm_cons(keys->side_symbol[bit], list);
+    return list;
+}
+// A placeholder the bindings replace with the names (report_edits).
+template <class T>
+SCM encode(Report, T) { return SCM_UNSPECIFIED; }
+
+// The report keys of an entity that does not opt in are never written, and
+// one that does reads an absent key as still to be written.
+void settle_report(Decoded& d) {
+    Body& b = d.body;
+    if (!b.contacts) {
+        b.blocked = b.touching = 0;
+        b.standing_on = 0;
+        return;
+    }
+    if (!d.has(kBlocked)) b.blocked = kSidesUnwritten;
+    if (!d.has(kTouching)) b.touching = kReportUnwritten;
+    if (!d.has(kStandingOn)) b.standing_on = kStandingAbsent;
+}
 
 bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
     Body& b = d.body;
@@ -231,6 +287,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
         fail(f, "wrong-type-arg", scm_list_1(plist), "malformed entity: expected a keyword plist, got ~S");
         return false;
     }
+    settle_report(d);
     return true;
 }
 
@@ -289,7 +346,7 @@ namespace {
 Edit field_edit(int bit, const Body& b) {
     switch (bit) {
 #define DS_FIELD(Name, type, member, keyword, rule) \
-    case kFieldBit##Name: return {keys->key[k##Name], encode(b.member)};
+    case kFieldBit##Name: return {keys->key[k##Name], encode(rule{}, b.member)};
 #define DS_KEY(Name, type, member, keyword, rule)
 #include "body_fields.def"
         default: __builtin_unreachable();  // bit < kFieldCount
@@ -297,7 +354,8 @@ Edit field_edit(int bit, const Body& b) {
 }
 
 bool finite(Num n) { return std::isfinite(n.v); }
-bool finite(bool) { return true; }
+template <class T>
+bool finite(T) { return true; }
 
 bool out_of_range(SCM key, double v, Failure& f) {
     fail(f, "out-of-range", scm_list_2(key, scm_from_double(v)),
@@ -305,7 +363,8 @@ bool out_of_range(SCM key, double v, Failure& f) {
     return false;
 }
 double value_of(Num n) { return n.v; }
-double value_of(bool) { return 0; }
+template <class T>
+double value_of(T) { return 0; }
 
 }  // namespace
 

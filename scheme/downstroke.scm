@@ -6,6 +6,7 @@
   #:use-module (downstroke tween)
   #:use-module (downstroke tilemap)
   #:use-module (downstroke query)
+  #:use-module (downstroke contacts)
   #:use-module (downstroke engine)
   #:use-module (downstroke hash)
   #:use-module (downstroke history)
@@ -15,4 +16,4 @@
   (for-each (lambda (name)
               (module-use! (module-public-interface (current-module))
                            (resolve-interface (list 'downstroke name))))
-            '(entity world physics tween tilemap query engine hash history render)))
+            '(entity world physics tween tilemap query contacts engine hash history render)))

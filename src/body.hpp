@@ -45,6 +45,26 @@ enum Field : uint32_t {
 constexpr int kFieldCount = kFieldBitCount;
 static_assert(kFieldCount <= 16, "FirstWrites::watched and Decoded::lossy hold Field bits in 16 bits");
 
+// The sides of #:blocked (semantics §10), in the order the list names them.
+enum Side : uint8_t {
+    kSideLeft = 1u << 0,
+    kSideRight = 1u << 1,
+    kSideUp = 1u << 2,
+    kSideDown = 1u << 3,
+    kSidesX = kSideLeft | kSideRight,
+    kSidesY = kSideUp | kSideDown,
+    kSidesAll = kSidesX | kSidesY,
+    // The plist holds no side list in canonical form (absent, or anything
+    // else): the next write must reach it even when it names no side.
+    kSidesUnwritten = 1u << 7,
+};
+// Body::touching before push-apart has marked it (the plist lacks the key).
+constexpr uint8_t kReportUnwritten = 1;
+// Body::standing_on as decoded: the plist lacks the key, or holds a name
+// the bindings compare with the new one.
+constexpr int32_t kStandingAbsent = -1;
+constexpr int32_t kStandingUnknown = -2;
+
 struct Body {
     // One member per row of body_fields.def, in its order: x y w h (Num: the
     // box is [x, x+w) × [y, y+h)), vx vy ay, local_x local_y, the flags
@@ -57,12 +77,16 @@ struct Body {
     bool skips(uint16_t bit) const { return (skip & bit) != 0; }
     // Solid and not a ghost: takes part in push-apart and can hold others up.
     bool collides() const { return solid && !skips(kSkipEntityCollisions); }
+    // What detect-on-solid looks at: it applies to this body.
+    bool detects_ground() const { return gravity && !skips(kSkipOnSolid); }
 };
 
 // Whether two values of one field are the same (the comparison
 // changed_fields makes, per member type): Num by value and exactness.
 inline bool same_field(Num a, Num b) { return same(a, b); }
 inline bool same_field(bool a, bool b) { return a == b; }
+inline bool same_field(uint8_t a, uint8_t b) { return a == b; }
+inline bool same_field(int32_t a, int32_t b) { return a == b; }
 
 // Which Fields differ between two states of one body (value or exactness).
 uint32_t changed_fields(const Body& before, const Body& after);

@@ -132,9 +132,13 @@ void resolve_entity_collisions(ContactScratch& scratch, std::span<Body> bodies, 
     // order, visits the eligible pairs in exactly the all-pairs order.
     std::vector<size_t>& members = scratch.members;
     members.clear();
-    for (size_t i = 0; i < bodies.size(); ++i)
+    bool reports = false;
+    for (size_t i = 0; i < bodies.size(); ++i) {
         if (bodies[i].collides()) members.push_back(i);
+        reports |= bodies[i].contacts;
+    }
     run_pairs(scratch, bodies, members, method, resting);
+    if (reports) mark_touching(bodies);
 }
 
 void resolve_entity_collisions(std::span<Body> bodies) {

@@ -37,6 +37,13 @@ inline void note_pushed(PairLog* log, size_t a, size_t b) {
     if (log) log->emplace_back(static_cast<uint32_t>(a), static_cast<uint32_t>(b));
 }
 
+// Push-apart writes every contact body's #:touching (semantics §10), named
+// by the bindings from the pairs it resolved: marks it written.
+inline void mark_touching(std::span<Body> bodies) {
+    for (Body& b : bodies)
+        if (b.contacts) b.touching = 0;
+}
+
 // How resolve_entity_collisions finds pairs. Both give identical results;
 // Auto uses the grid from a few dozen solid bodies on.
 enum class PairMethod { Auto, AllPairs, Grid };

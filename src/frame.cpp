@@ -62,6 +62,7 @@ bool logged(Body& b, FirstWrites* w, uint32_t may_write, Step&& step) {
 }
 
 uint32_t unless_zero(Num n, uint32_t fields) { return n.v != 0 ? fields : 0u; }
+uint32_t reported(const Body& b, uint32_t fields) { return b.contacts ? fields : 0u; }
 
 }  // namespace
 
@@ -102,6 +103,22 @@ bool Frame::Impl::rests(const Body& b, size_t i, const TileGrid* grid, bool inde
     return false;
 }
 
+void Frame::Impl::note_standing(Body& b, size_t i, bool indexed) {
+    const std::ptrdiff_t slot = indexed ? first_supporter(b, supporters_, support_index_, support_slot_[i])
+                                        : first_supporter(b, supporters_, support_slot_[i]);
+    // Supporters are the colliding bodies in list order: slot k is members_[k].
+    b.standing_on = slot < 0 ? 0 : static_cast<int32_t>(members_[static_cast<size_t>(slot)] + 1);
+}
+
+void Frame::Impl::begin_contact_log() {
+    if (contact_bodies_ == 0) return;
+    if (overlay_log_ == nullptr) {
+        frame_pairs_.clear();
+        contacts_.log = &frame_pairs_;
+    }
+    pairs_from_ = contacts_.log->size();
+}
+
 void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         int round, std::span<FirstWrites> writes) {
     // Step by step over a block of bodies, block after block: the same
@@ -113,7 +130,8 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
     // is: acceleration resets only a non-zero ay, tile steps do nothing at
     // zero speed.
     const CollisionMode mode = opts.mode;
-    const SubStep sub = SubStep::of_frame(opts.substeps);
+    SubStep sub = SubStep::of_frame(opts.substeps);
+    sub.gather = round > 0;
     const auto t0 = Clock::now();
     const bool indexed = supporters_.size() >= kSupportIndexFrom;
     if (indexed) support_index_.build(supporters_);
@@ -141,17 +159,20 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
         t = pass(kStepVelocityX, block, bodies, writes, t, [](const Body&) { return kFieldX; },
                  [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
         t = pass(kStepTileX, block, bodies, writes, t,
-                 [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx); },
+                 [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx) | reported(b, kFieldBlocked); },
                  [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode, sub); });
         t = pass(kStepVelocityY, block, bodies, writes, t, [](const Body&) { return kFieldY; },
                  [&](Body& b, size_t) { return apply_velocity_y(b, sub); });
         t = pass(kStepTileY, block, bodies, writes, t,
-                 [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy); },
+                 [](const Body& b) { return unless_zero(b.vy, kFieldY | kFieldVy) | reported(b, kFieldBlocked); },
                  [&](Body& b, size_t) { return resolve_tile_collisions_y(b, grid, mode, sub); });
-        pass(kStepOnSolid, block, bodies, writes, t, [](const Body&) { return kFieldOnGround; },
+        pass(kStepOnSolid, block, bodies, writes, t,
+             [](const Body& b) { return kFieldOnGround | reported(b, kFieldStandingOn); },
              [&](Body& b, size_t i) {
-                 return indexed ? detect_on_supporters(b, supporters_, support_index_, support_slot_[i], grid)
-                                : detect_on_supporters(b, supporters_, support_slot_[i], grid);
+                 const bool ran = indexed ? detect_on_supporters(b, supporters_, support_index_, support_slot_[i], grid)
+                                          : detect_on_supporters(b, supporters_, support_slot_[i], grid);
+                 if (ran && b.contacts) note_standing(b, i, indexed);
+                 return ran;
              });
         // The bodies that can settle, counted while the block is in cache
         // (when step() does not track settling). Nothing later in the frame
@@ -194,6 +215,7 @@ void Frame::Impl::begin_census(size_t n, bool take) {
     carriers_.clear();
     crushed_ = false;
     grouped_ = 0;
+    contact_bodies_ = 0;
     supporters_taken_ = take;
     if (take) clear_supporters(n);
 }
@@ -208,6 +230,7 @@ void Frame::Impl::enlist(const Body& b, size_t i) {
         }
     }
     grouped_ += b.group != 0;
+    contact_bodies_ += b.contacts;
 }
 
 void Frame::Impl::end_census() {
@@ -245,6 +268,7 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
                         std::span<const Body> scene, std::span<FirstWrites> writes) {
     for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
         stats_.step[id] = {};
+    begin_contact_log();
     // With sub-frames, every statistic adds up over them.
     const int rounds = std::max(1, opts.substeps);
     for (int round = 0; round < rounds; ++round) {
@@ -262,10 +286,13 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         step_bodies(bodies, grid, opts, round, writes);
         auto t0 = Clock::now();
         if (carrying) carry(bodies, grid, opts, writes);
-        if (members_.size() >= 2)
-            logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy, [&](std::span<Body> bs) {
-                resolve_entity_collisions_among(contacts_, bs, members_, resting_);
-            });
+        const bool reports = contact_bodies_ != 0;
+        if (members_.size() >= 2 || reports)
+            logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy | (reports ? kFieldTouching : 0u),
+                        [&](std::span<Body> bs) {
+                            if (members_.size() >= 2) resolve_entity_collisions_among(contacts_, bs, members_, resting_);
+                            if (reports) mark_touching(bs);
+                        });
         if (carrying) crush(bodies, grid, writes);
         const auto solid = static_cast<uint64_t>(supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
@@ -278,6 +305,7 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         groups = {groups.processed + grouped_, groups.skipped + bodies.size() - grouped_,
                   groups.ms + ms_since(t0)};
     }
+    end_contact_log();
 }
 
 void Frame::Impl::start_carry(std::span<const Body> start) {
@@ -366,6 +394,12 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
 }
 const FrameStats& Frame::stats() const { return impl_->stats_; }
 FrameStats& Frame::stats() { return impl_->stats_; }
-void Frame::note_pairs(PairLog* log) { impl_->contacts_.log = log; }
+void Frame::note_pairs(PairLog* log) { impl_->overlay_log_ = impl_->contacts_.log = log; }
+std::span<const std::pair<uint32_t, uint32_t>> Frame::contact_pairs() const {
+    const Impl& m = *impl_;
+    if (m.contact_bodies_ == 0) return {};
+    const PairLog& log = m.overlay_log_ ? *m.overlay_log_ : m.frame_pairs_;
+    return std::span<const std::pair<uint32_t, uint32_t>>(log).subspan(m.pairs_from_);
+}
 
 }  // namespace ds

@@ -21,11 +21,15 @@ namespace ds {
 enum Key : uint32_t {
 #define DS_KEY_ID_Number(Name) kKey##Name = kFieldBit##Name,
 #define DS_KEY_ID_Flag(Name)
+#define DS_KEY_ID_Sides(Name)
+#define DS_KEY_ID_Report(Name)
 #define DS_FIELD(Name, type, member, keyword, rule) DS_KEY_ID_##rule(Name)
 #define DS_KEY(Name, type, member, keyword, rule)
 #include "body_fields.def"
 #undef DS_KEY_ID_Number
 #undef DS_KEY_ID_Flag
+#undef DS_KEY_ID_Sides
+#undef DS_KEY_ID_Report
     kFirstUserKey = 16,
 };
 static_assert(kFieldCount <= kFirstUserKey);
@@ -99,6 +103,11 @@ public:
     // nullptr for nowhere, from the next frame on.
     void note_pairs(PairLog* log);
     FrameStats& stats();
+
+    // The pairs push-apart resolved in the last frame, in the order
+    // resolved (sub-frames one after the other), when it had bodies with
+    // #:contacts? (semantics §10); empty otherwise. Valid until the next frame.
+    std::span<const std::pair<uint32_t, uint32_t>> contact_pairs() const;
 
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the

@@ -70,7 +70,35 @@ bool detect_by_scan(Body& b, std::span<const Other> scene, std::ptrdiff_t self_s
     return true;
 }
 
+template <class Other>
+std::ptrdiff_t first_by_scan(const Body& b, std::span<const Other> scene, std::ptrdiff_t self_slot) {
+    for (std::ptrdiff_t k = 0, n = std::ssize(scene); k < n; ++k)
+        if (supports_other(b, scene[k], k, self_slot)) return k;
+    return -1;
+}
+
 }  // namespace
+
+std::ptrdiff_t first_supporter(const Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot) {
+    return first_by_scan(b, scene, self_slot);
+}
+
+std::ptrdiff_t first_supporter(const Body& b, std::span<const Supporter> supporters,
+                               std::ptrdiff_t self_slot) {
+    return first_by_scan(b, supporters, self_slot);
+}
+
+std::ptrdiff_t first_supporter(const Body& b, std::span<const Supporter> supporters,
+                               SupportIndex& index, std::ptrdiff_t self_slot) {
+    // The index visits candidates in no particular order: take the least.
+    std::ptrdiff_t first = -1;
+    index.any(b, [&](uint32_t k) {
+        const auto slot = static_cast<std::ptrdiff_t>(k);
+        if ((first < 0 || slot < first) && supports_other(b, supporters[k], slot, self_slot)) first = slot;
+        return false;
+    });
+    return first;
+}
 
 bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid) {

@@ -32,4 +32,9 @@ bool rests_on_tile(const Body& b, const TileGrid& grid);
 bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid);
 
+// The contact report's #:standing-on (semantics §10): the first body of
+// `scene`, in its order, that holds b up by detect_on_solid's entity rule
+// (tiles aside), or -1. For a body that detects ground (Body::detects_ground).
+std::ptrdiff_t first_supporter(const Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot);
+
 }  // namespace ds

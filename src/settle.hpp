@@ -36,7 +36,9 @@ namespace ds {
 // (solid, not a ghost), follows a group, or — when any supporters exist —
 // looks for one under its feet.
 inline bool depends_on_others(const Body& b, bool supporters_exist) {
-    return b.collides() || b.group != 0 || (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
+    // A contact body's report names other bodies: it never sleeps.
+    return b.collides() || b.group != 0 || b.contacts ||
+           (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
 }
 // Whether any body collides (Body::collides): then ground detection has
 // supporters to look for.

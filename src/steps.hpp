@@ -14,6 +14,9 @@ namespace ds {
 // a velocity or gravity advances by rate·h, computed as a flonum.
 struct SubStep {
     double h = 1;
+    // A sub-frame after the first: the contact report (#:blocked) adds what
+    // it finds to what the frame's earlier sub-frames found (semantics §10).
+    bool gather = false;
 
     static SubStep of_frame(int k) { return {k <= 1 ? 1.0 : 1.0 / k}; }
     bool whole() const { return h == 1; }

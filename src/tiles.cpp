@@ -35,11 +35,11 @@ CellRange candidates(const TileAxis& t, CollisionMode mode) {
 }
 
 // Walks candidate cells from the side the body moves from, so the first
-// solid cell met is the one it reaches first.
+// solid cell met is the one it reaches first. Returns whether one stopped it.
 template <typename Solid>
-void resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid solid) {
+bool resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid solid) {
     const BodyAxis& a = t.body;
-    if (along.empty() || across.empty()) return;
+    if (along.empty() || across.empty()) return false;
     const bool forward = a.vel.v > 0;
     for (int64_t i = 0, n = along.last - along.first + 1; i < n; ++i) {
         const int64_t c = forward ? along.first + i : along.last - i;
@@ -49,25 +49,49 @@ void resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid so
             const double edge = static_cast<double>(forward ? c : c + 1) * t.tile;
             a.pos = forward ? Num{edge - a.size.v, exact} : Num{edge, exact};
             a.vel = Num::integer(0);
-            return;
+            return true;
         }
     }
+    return false;
+}
+
+// A contact body's #:blocked (semantics §10): the step owns its axis's
+// sides, set from this call alone, or, in a later sub-frame, added.
+void note_blocked(Body& b, uint8_t axis, uint8_t sides, SubStep s) {
+    if (!b.contacts) return;
+    const uint8_t kept = s.gather ? b.blocked : static_cast<uint8_t>(b.blocked & ~axis);
+    b.blocked = static_cast<uint8_t>((kept & kSidesAll) | sides);
+}
+
+uint8_t side(bool stopped, Num vel, uint8_t forward, uint8_t backward) {
+    return stopped ? (vel.v > 0 ? forward : backward) : 0;
 }
 
 }  // namespace
 
 bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
-    if (!grid || b.vx.v == 0 || b.skips(kSkipTileX)) return false;
+    if (b.skips(kSkipTileX)) return false;
+    if (!grid || b.vx.v == 0) {
+        note_blocked(b, kSidesX, 0, s);
+        return false;
+    }
+    const Num vx = b.vx;
     const TileAxis a{along_x(b), s.share(b.vx), grid->tile_width()};
     const CellRange cols = grid->clip_cols(candidates(a, mode));
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
-    resolve_axis(a, cols, rows,
-                 [&](int64_t c, int64_t r) { return grid->solid(c, r); });
+    const bool stopped = resolve_axis(a, cols, rows,
+                                      [&](int64_t c, int64_t r) { return grid->solid(c, r); });
+    note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
     return true;
 }
 
 bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
-    if (!grid || b.vy.v == 0 || b.skips(kSkipTileY)) return false;
+    if (b.skips(kSkipTileY)) return false;
+    if (!grid || b.vy.v == 0) {
+        note_blocked(b, kSidesY, 0, s);
+        return false;
+    }
+    const Num vy = b.vy;
     const TileAxis a{along_y(b), s.share(b.vy), grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
@@ -77,11 +101,12 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     const bool may_land = b.vy.v > 0 && !b.drop_through;
     const double feet_before = (b.y - a.move + b.h).v;
     const double th = grid->tile_height();
-    resolve_axis(a, rows, cols, [&](int64_t r, int64_t c) {
+    const bool stopped = resolve_axis(a, rows, cols, [&](int64_t r, int64_t c) {
         const uint8_t cell = grid->cell(c, r);
         return cell == kSolidCell ||
                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th);
     });
+    note_blocked(b, kSidesY, side(stopped, vy, kSideDown, kSideUp), s);
     return true;
 }
 

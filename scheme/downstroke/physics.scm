@@ -69,10 +69,16 @@ tweens, then motion, tiles, ground, carriers, push-apart and groups), done in on
 native call. With SUBSTEPS k > 1 (beyond the seed), everything after the
 tweens runs as k sub-frames of 1/k frame each: velocities and gravity
 advance by a k-th, in flonums, and the motion converges to the continuous
-one as k grows."
+one as k grows. Entities with #:contacts? #t get a contact report
+(#:blocked, #:touching, #:standing-on) and the frame's pairs with them are
+kept in the scene (scene-contacts)."
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
-                                  substeps (resting-contacts?))))
-    (if (eq? stepped entities)
+                                  substeps (resting-contacts?)))
+         (old ((@@ (downstroke world) %scene-contacts) scene))
+         (contacts (%frame-contacts stepped))
+         ;; '() and '() almost always: eq? first
+         (contacts (if (or (eq? contacts old) (equal? contacts old)) old contacts)))
+    (if (and (eq? stepped entities) (eq? contacts old))
         scene
-        ((@@ (downstroke world) %scene-with-entities) scene stepped))))
+        ((@@ (downstroke world) %scene-after-frame) scene stepped contacts))))

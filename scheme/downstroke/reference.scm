@@ -7,6 +7,7 @@
 ;;; here is one the C++ core must follow to the bit.
 (define-module (downstroke reference)
   #:use-module (srfi srfi-1)
+  #:use-module (srfi srfi-11)
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke tween)
@@ -125,10 +126,44 @@ landing) hands the entity back as itself."
   (let loop ((a new) (b old))
     (cond ((and (null? a) (null? b)) old)
           ((or (null? a) (null? b)) new)
-          ((and (eq? (car a) (car b)) (eqv? (cadr a) (cadr b))) (loop (cddr a) (cddr b)))
+          ;; equal?: the contact report's lists (§10) are rebuilt when written
+          ((and (eq? (car a) (car b)) (equal? (cadr a) (cadr b))) (loop (cddr a) (cddr b)))
           (else new))))
 
 (define (scene-tiles scene) (and scene (scene-tilemap scene)))
+
+;;; ---------------------------------------------------------------- contact reports (§10)
+;;; Written only on entities with #:contacts? #t, each key by the step that
+;;; owns it, and only when its value changes (equal?), so identity holds.
+
+(define (contacts? e) (flag e #:contacts?))
+
+(define sides '(left right up down))
+
+(define (blocked-sides e)
+  "The sides E's #:blocked names when it lists them in the order of SIDES,
+each once; any other value names none."
+  (let ((v (entity-ref e #:blocked '())))
+    (let loop ((p v) (rest sides))
+      (cond ((null? p) v)
+            ((and (pair? p) (memq (car p) rest)) => (lambda (tail) (loop (cdr p) (cdr tail))))
+            (else '())))))
+
+(define (put-report e key value)
+  (if (equal? value (entity-ref e key (list 'absent))) e (entity-set e key value)))
+
+(define (put-blocked e axis found gather?)
+  "A tile step's part of #:blocked: its AXIS sides become FOUND (a later
+sub-frame, GATHER?, adds FOUND to what the frame found already)."
+  (if (not (contacts? e))
+      e
+      (let* ((old (blocked-sides e))
+             (kept (if gather? old (remove (lambda (s) (memq s axis)) old))))
+        (put-report e #:blocked (filter (lambda (s) (or (memq s kept) (memq s found))) sides)))))
+
+(define (name-of e index)
+  "An entity's name in a report: its #:id, or its position in the list."
+  (or (entity-ref e #:id #f) index))
 
 ;;; ---------------------------------------------------------------- motion (§4)
 ;;; Each motion step has a sub-frame form taking H: #f for the seed's whole
@@ -246,49 +281,61 @@ exact when the position and size were."
            (hit (find (lambda (c)
                         (any (lambda (k) (solid? c k)) (range->list across 1)))
                       (range->list (and across along) (if (> vel 0) 1 -1)))))
+      ;; The entity, and whether a cell stopped it (the contact report).
       (if hit
           (let ((e (put e pos-key pos (snap pos vel size tile hit))))
-            (put e vel-key vel 0))
-          e))))
+            (values (put e vel-key vel 0) #t))
+          (values e #f)))))
 
 (define-step (resolve-tile-collisions-x e scene dt)
   "Moving along x into solid cells (of the rows the box spans): snap flush
 against the first one, vx = 0."
-  (tiles-x e scene #f))
+  (tiles-x e scene #f #f))
 
-(define (tiles-x e scene h)
+(define (tiles-x e scene h gather?)
   (let ((tm (scene-tiles scene)))
-    (if (or (not tm) (zero? (num e #:vx)) (skips? e 'tile-collisions-x))
-        e
-        (apply (lambda (col0 row0 cols rows)
-                 (resolve-axis e h #:x #:vx #:width #:y #:height
-                               (tilemap-tile-width tm) (tilemap-tile-height tm)
-                               col0 cols row0 rows
-                               (lambda (col row) (tilemap-cell-solid? tm col row))))
-               (tilemap-solid-extent tm)))))
+    (cond ((skips? e 'tile-collisions-x) e)
+          ((or (not tm) (zero? (num e #:vx))) (put-blocked e '(left right) '() gather?))
+          (else
+           (let-values (((moved stopped?)
+                         (apply (lambda (col0 row0 cols rows)
+                                  (resolve-axis e h #:x #:vx #:width #:y #:height
+                                                (tilemap-tile-width tm) (tilemap-tile-height tm)
+                                                col0 cols row0 rows
+                                                (lambda (col row) (tilemap-cell-solid? tm col row))))
+                                (tilemap-solid-extent tm))))
+             (put-blocked moved '(left right)
+                          (if stopped? (list (if (> (num e #:vx) 0) 'right 'left)) '())
+                          gather?))))))
 
 (define-step (resolve-tile-collisions-y e scene dt)
   "The same along y, in the columns the box spans; vy = 0."
-  (tiles-y e scene #f))
+  (tiles-y e scene #f #f))
 
-(define (tiles-y e scene h)
+(define (tiles-y e scene h gather?)
   (let ((tm (scene-tiles scene)))
-    (if (or (not tm) (zero? (num e #:vy)) (skips? e 'tile-collisions-y))
-        e
-        ;; A one-way cell (§9) stops a body falling onto it whose feet were
-        ;; at or above its top when this move began.
-        (let* ((th (tilemap-tile-height tm))
-               (may-land? (and (> (num e #:vy) 0) (not (flag e #:drop-through?))))
-               (feet-before (num+ (num- (num e #:y) (share (num e #:vy) h)) (num e #:height))))
-          (apply (lambda (col0 row0 cols rows)
-                   (resolve-axis e h #:y #:vy #:height #:x #:width
-                                 th (tilemap-tile-width tm)
-                                 row0 rows col0 cols
-                                 (lambda (row col)
-                                   (or (tilemap-cell-solid? tm col row)
-                                       (and may-land? (tilemap-cell-one-way? tm col row)
-                                            (<= feet-before (* row th)))))))
-                 (tilemap-solid-extent tm))))))
+    (cond
+     ((skips? e 'tile-collisions-y) e)
+     ((or (not tm) (zero? (num e #:vy))) (put-blocked e '(up down) '() gather?))
+     (else
+      ;; A one-way cell (§9) stops a body falling onto it whose feet were
+      ;; at or above its top when this move began.
+      (let* ((th (tilemap-tile-height tm))
+             (may-land? (and (> (num e #:vy) 0) (not (flag e #:drop-through?))))
+             (feet-before (num+ (num- (num e #:y) (share (num e #:vy) h)) (num e #:height))))
+        (let-values (((moved stopped?)
+                      (apply (lambda (col0 row0 cols rows)
+                               (resolve-axis e h #:y #:vy #:height #:x #:width
+                                             th (tilemap-tile-width tm)
+                                             row0 rows col0 cols
+                                             (lambda (row col)
+                                               (or (tilemap-cell-solid? tm col row)
+                                                   (and may-land? (tilemap-cell-one-way? tm col row)
+                                                        (<= feet-before (* row th)))))))
+                             (tilemap-solid-extent tm))))
+          (put-blocked moved '(up down)
+                       (if stopped? (list (if (> (num e #:vy) 0) 'down 'up)) '())
+                       gather?)))))))
 
 ;;; ---------------------------------------------------------------- ground (§4)
 
@@ -369,19 +416,23 @@ HOLDERS ((index . entity) …) other than its own SLOT and its #:id."
                               (not (skips? (cdr slot) 'entity-collisions))))
           (map cons (iota (length entities)) entities)))
 
-(define (on-solid e tm holders itself?)
+(define* (on-solid e tm holders itself? #:optional (name-at name-of))
   "#:on-ground? from the tiles and from HOLDERS ((index . entity) …),
 leaving out those for which (ITSELF? index entity) holds and those sharing
-E's #:id."
+E's #:id. A contact entity's holder is named by (NAME-AT entity index)."
   (if (or (not (flag e #:gravity?)) (skips? e 'on-solid))
       e
-      (let ((ground (or (tile-supports? e tm)
-                        (any (lambda (slot)
-                               (let ((i (car slot)) (o (cdr slot)))
-                                 (and (not (itself? i o)) (not (same-id? e o))
-                                      (entity-supports? e o))))
-                             holders))))
-        (put e #:on-ground? (flag e #:on-ground?) ground))))
+      (let* ((holds? (lambda (slot)
+                       (let ((i (car slot)) (o (cdr slot)))
+                         (and (not (itself? i o)) (not (same-id? e o))
+                              (entity-supports? e o)))))
+             (ground (or (tile-supports? e tm) (any holds? holders)))
+             (e (put e #:on-ground? (flag e #:on-ground?) ground)))
+        (if (contacts? e)
+            ;; §10: the first holder in list order, tiles aside
+            (let ((holder (find holds? holders)))
+              (put-report e #:standing-on (and holder (name-at (cdr holder) (car holder)))))
+            e))))
 
 (define-step (detect-on-solid e scene dt)
   "Whether E stands on a solid tile or on a solid entity of SCENE (not
@@ -483,27 +534,51 @@ own, as an immovable body would."
 earlier pairs did: solid, non-ghost, strictly overlapping pairs are pushed
 apart (semantics §4)."
   (check-all 'resolve-entity-collisions entities)
-  (push-apart entities (map (const #f) entities)))
+  (let-values (((result pairs) (push-apart entities (map (const #f) entities) '())))
+    result))
 
-(define (push-apart entities resting)
-  "The pass, RESTING holding each entity's resting flag."
+(define (push-apart entities resting earlier)
+  "The pass, RESTING holding each entity's resting flag. Returns the
+entities and the pairs (i . j) it resolved with a contact entity (§10),
+after EARLIER (the frame's earlier sub-frames), each pair once."
   (let* ((before (map box entities))
          (after (map vector-copy before))
          (takes-part (map (lambda (e) (and (flag e #:solid?)
                                            (not (skips? e 'entity-collisions))))
                           entities))
-         ;; (entity box . rests?)
-         (members (filter-map (lambda (e b part r) (and part (cons* e b r)))
-                              entities after takes-part resting)))
+         ;; (entity box rests? index)
+         (members (filter-map (lambda (e b part r i) (and part (list e b r i)))
+                              entities after takes-part resting (iota (length entities))))
+         (pairs (reverse earlier)))
     (let outer ((rest members))
       (unless (null? rest)
         (let ((m (car rest)))
           (for-each (lambda (o)
                       (when (overlaps? (cadr m) (cadr o))
-                        (resolve-pair! (car m) (cadr m) (cddr m) (car o) (cadr o) (cddr o))))
+                        (resolve-pair! (car m) (cadr m) (caddr m) (car o) (cadr o) (caddr o))
+                        (let ((pair (cons (cadddr m) (cadddr o))))
+                          (when (and (or (contacts? (car m)) (contacts? (car o)))
+                                     (not (member pair pairs)))
+                            (set! pairs (cons pair pairs))))))
                     (cdr rest)))
         (outer (cdr rest))))
-    (same-or (map write-box entities before after) entities)))
+    (let* ((pairs (reverse pairs))
+           (moved (map write-box entities before after)))
+      (values (same-or (write-touching moved pairs) entities) pairs))))
+
+(define (write-touching entities pairs)
+  "Each contact entity's #:touching: the names of those PAIRS paired it
+with, in list order."
+  (let ((names (map name-of entities (iota (length entities)))))
+    (map (lambda (e i)
+           (if (contacts? e)
+               (put-report e #:touching
+                           (filter-map (lambda (o j)
+                                         (and (or (member (cons i j) pairs) (member (cons j i) pairs))
+                                              o))
+                                       names (iota (length entities))))
+               e))
+         entities (iota (length entities)))))
 
 (define (group-of e) (entity-ref e #:group-id #f))
 
@@ -573,7 +648,7 @@ velocity D, its own velocity untouched: (entity . stopped-by-a-cell?)."
   (if (zero? d)
       (cons e #f)
       (let* ((pos (num e pos-key))
-             (moved (resolve (entity-set (entity-set e pos-key (num+ pos d)) vel-key d) scene #f)))
+             (moved (resolve (entity-set (entity-set e pos-key (num+ pos d)) vel-key d) scene #f #f)))
         (cons (put e pos-key pos (num moved pos-key)) (zero? (num moved vel-key))))))
 
 (define (carry-one e scene d)
@@ -783,24 +858,30 @@ and the crushing of what they pushed (§11), then groups."
     (fail 'step-scene "substeps: expected an exact integer from 1 to ~S, got ~S" 1024 substeps))
   (let* ((start (scene-entities scene))
          (h (and (> substeps 1) (fl (/ 1 substeps))))
-         (tweened (map-keeping (lambda (e) (step-tweens e scene dt)) start))
-         (result
-          (let loop ((round 0) (es tweened))
-            (if (= round substeps)
-                es
-                (loop (+ round 1)
-                      (sub-frame scene dt h round (if (= round 0) start es) es)))))
-         (result (same-or (map keep-if-unchanged result start) start)))
-    (if (eq? result start)
-        scene
-        (update-scene scene #:entities result))))
+         (tweened (map-keeping (lambda (e) (step-tweens e scene dt)) start)))
+    (let loop ((round 0) (es tweened) (pairs '()))
+      (if (= round substeps)
+          (let* ((result (same-or (map keep-if-unchanged es start) start))
+                 (names (list->vector (map name-of result (iota (length result)))))
+                 (contacts (map (lambda (p) (cons (vector-ref names (car p)) (vector-ref names (cdr p))))
+                                pairs))
+                 (old (scene-contacts scene))
+                 (contacts (if (equal? contacts old) old contacts)))
+            (if (and (eq? result start) (eq? contacts old))
+                scene
+                ((@@ (downstroke world) %scene-after-frame) scene result contacts)))
+          (let-values (((es pairs) (sub-frame scene dt h round (if (= round 0) start es) es pairs)))
+            (loop (+ round 1) es pairs))))))
 
-(define (sub-frame scene dt h round supporting entities)
+(define (sub-frame scene dt h round supporting entities earlier)
   "One (sub-)frame of ENTITIES after the tweens; SUPPORTING is the scene
 ground detection, resting and the carriers read (its holders, by slot)."
   (let* ((tm (scene-tilemap scene))
          (entities (if (= round 0) (clear-crushed entities) entities))
          (supporters (holders supporting))
+         ;; Holders are named as the entities stepped now (after the tweens).
+         (names (list->vector (map name-of entities (iota (length entities)))))
+         (name-at (lambda (o i) (vector-ref names i)))
          (rest? (resting-contacts?))
          (stepped
           (map (lambda (e slot)
@@ -808,15 +889,16 @@ ground detection, resting and the carriers read (its holders, by slot)."
                         (rests (and rest? (rests? e tm supporters slot)))
                         (e (if rests e (gravity-step e h)))
                         (e (velocity-step e h #:x #:vx 'velocity-x))
-                        (e (tiles-x e scene h))
+                        (e (tiles-x e scene h (> round 0)))
                         (e (velocity-step e h #:y #:vy 'velocity-y))
-                        (e (tiles-y e scene h))
+                        (e (tiles-y e scene h (> round 0)))
                         ;; not itself: its own slot of the supporting list
-                        (e (on-solid e tm supporters (lambda (i o) (= i slot)))))
+                        (e (on-solid e tm supporters (lambda (i o) (= i slot)) name-at)))
                    (cons e rests)))
                entities (iota (length entities))))
          (moved (same-or (map car stepped) entities))
          (carrying (any carrier? moved))
-         (carried (if carrying (carry-among moved supporting scene) moved))
-         (pushed (push-apart carried (map cdr stepped))))
-    (sync-groups (if carrying (crush-in-way pushed (in-way carried supporting) tm) pushed))))
+         (carried (if carrying (carry-among moved supporting scene) moved)))
+    (let-values (((pushed pairs) (push-apart carried (map cdr stepped) earlier)))
+      (values (sync-groups (if carrying (crush-in-way pushed (in-way carried supporting) tm) pushed))
+              pairs))))

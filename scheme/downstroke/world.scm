@@ -4,6 +4,7 @@
   #:use-module ((downstroke native) #:select (tilemap?))
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
+            scene-contacts
             scene-map-entities scene-transform-entities
             make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
 
@@ -37,12 +38,27 @@ X and Y must be finite real numbers."
   (%camera-y-set! camera y))
 
 (define-record-type <scene>
-  (%make-scene entities tilemap camera camera-target)
+  (%make-scene* entities tilemap camera camera-target contacts)
   scene?
   (entities scene-entities)
   (tilemap scene-tilemap)
   (camera scene-camera)
-  (camera-target scene-camera-target))
+  (camera-target scene-camera-target)
+  ;; The pairs the last step-scene pushed apart with a #:contacts? entity
+  ;; (semantics §10): a report of the frame that made the scene.
+  (contacts %scene-contacts))
+
+(define (%make-scene entities tilemap camera camera-target)
+  (%make-scene* entities tilemap camera camera-target '()))
+
+(define (scene-contacts scene)
+  "The pairs (name-a . name-b) the step-scene that made SCENE pushed apart
+where at least one of the two has #:contacts? #t, in the order resolved
+(names: #:id, else the position in the list); '() for a scene no frame
+made. update-scene keeps them."
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg "scene-contacts" "expected a scene, got ~S" (list scene) #f))
+  (%scene-contacts scene))
 
 (define (check-entities who entities)
   (unless (list? entities)
@@ -69,13 +85,18 @@ X and Y must be finite real numbers."
   "A copy of SCENE with the given fields replaced."
   (check-entities "update-scene" entities)
   (check-scene-parts "update-scene" tilemap camera)
-  (%make-scene entities tilemap camera camera-target))
+  (%make-scene* entities tilemap camera camera-target (%scene-contacts scene)))
 
 (define (%scene-with-entities scene entities)
   "SCENE with ENTITIES, a list the caller vouches for (no O(n) list? check):
 for the native steps, whose result is always a proper list."
-  (%make-scene entities (scene-tilemap scene) (scene-camera scene)
-               (scene-camera-target scene)))
+  (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
+                (scene-camera-target scene) (%scene-contacts scene)))
+
+(define (%scene-after-frame scene entities contacts)
+  "SCENE after a frame: its ENTITIES and its CONTACTS (a step-scene's)."
+  (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
+                (scene-camera-target scene) contacts))
 
 (define (map-keeping proc lst)
   ;; Like map, but returns LST itself when PROC returned every element as is.

@@ -47,6 +47,8 @@ struct Frame::Impl {
     void carry(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                std::span<FirstWrites> writes);
     void crush(std::span<Body> bodies, const TileGrid* grid, std::span<FirstWrites> writes);
+    // A contact body's #:standing-on after detect-on-solid ran (semantics §10).
+    void note_standing(Body& b, size_t i, bool indexed);
     // One step over a block of active_; adds to the step's processed count
     // and, from t0 to its return value (now), to its time.
     template <class MayWrite, class Step>
@@ -84,6 +86,15 @@ struct Frame::Impl {
     FrameStats stats_;
     SettleTracker settling_;  // which bodies step() may leave asleep (World path)
     bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
+    // The contact report (semantics §10): this frame's bodies with
+    // #:contacts?, and where push-apart logs its pairs meanwhile (the
+    // overlay's log when it has one, else the frame's own) from which offset.
+    size_t contact_bodies_ = 0;
+    PairLog* overlay_log_ = nullptr;
+    PairLog frame_pairs_;
+    size_t pairs_from_ = 0;
+    void begin_contact_log();
+    void end_contact_log() { contacts_.log = overlay_log_; }
 };
 
 }  // namespace ds

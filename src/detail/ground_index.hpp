@@ -31,4 +31,10 @@ bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, std::p
 bool detect_on_supporters(Body& b, std::span<const Supporter> supporters, SupportIndex& index,
                           std::ptrdiff_t self_slot, const TileGrid* grid);
 
+// first_supporter (ground.hpp) against the frame's supporters, by slot.
+std::ptrdiff_t first_supporter(const Body& b, std::span<const Supporter> supporters,
+                               std::ptrdiff_t self_slot);
+std::ptrdiff_t first_supporter(const Body& b, std::span<const Supporter> supporters,
+                               SupportIndex& index, std::ptrdiff_t self_slot);
+
 }  // namespace ds

@@ -506,7 +506,10 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
         (else
          (let ((d (list-diff (scene-entities n-in) (scene-entities r-in)
                              (scene-entities (cdr n)) (scene-entities (cdr r)))))
-           (and d (apply mm d))))))
+           (cond (d (apply mm d))
+                 ((not (equal? (scene-contacts (cdr n)) (scene-contacts (cdr r))))
+                  (mm #f "<scene-contacts>" (scene-contacts (cdr n)) (scene-contacts (cdr r))))
+                 (else #f))))))
 
 ;;; Both sides' scenes with FRAME's tile edits (scene-gen's tile-edits, drawn
 ;;; from the native side's entities) made to the map: the same new map on

@@ -4,6 +4,7 @@
 ;; The implementation under test. CMake writes a copy of this suite that
 ;; imports (downstroke reference) instead (ctest: scheme.reference-physics).
 (use-modules (downstroke physics))
+(use-modules (downstroke contacts))
 
 (load "support.scm")
 
@@ -922,5 +923,113 @@
                    #:x)))
 (test-error "carry-riders wants the frame-start scene of the same entities" #t
   (carry-riders (list rider) (make-scene #:entities '()) 16))
+
+;;; ---------------------------------------------------------------- contact reports (beyond the seed, §10)
+(define (stepped entities . map)
+  (scene-entities (step-scene (make-scene #:entities entities #:tilemap (and (pair? map) (car map))) 16)))
+(define (report e) (map (lambda (k) (entity-ref e k 'absent)) '(#:blocked #:touching #:standing-on)))
+(define floor-4 (grid-map 4 4 (row 3 4)))
+(test-equal "a box landing on the floor is blocked down, every key appended where first written"
+  '((#:x 0 #:y 32 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:contacts? #t
+     #:blocked (down) #:on-ground? #t #:standing-on #f #:touching ()))
+  (stepped '((#:x 0 #:y 30 #:width 16 #:height 16 #:vy 4 #:gravity? #t #:contacts? #t)) floor-4))
+(test-equal "walking into a wall: (right); no #:standing-on without #:gravity?"
+  '((#:x 16 #:y 0 #:width 16 #:height 16 #:vx 0 #:contacts? #t #:blocked (right) #:touching ()))
+  (stepped '((#:x 10 #:y 0 #:width 16 #:height 16 #:vx 8 #:contacts? #t)) (grid-map 4 4 (column 2 4))))
+(test-equal "a head bump: (up)" '((up) () absent)
+  (report (car (stepped '((#:x 0 #:y 20 #:width 16 #:height 16 #:vy -8 #:contacts? #t))
+                        (grid-map 4 4 (row 0 4))))))
+(test-equal "a corner: two sides, in the order left right up down" '((right down) () #f)
+  (report (car (stepped '((#:x 10 #:y 30 #:width 16 #:height 16 #:vx 8 #:vy 4 #:gravity? #t #:contacts? #t))
+                        (grid-map 4 4 (append (column 2 4) (row 3 4)))))))
+(test-equal "with four sub-frames a side blocked in any of them counts" '(16.0 (right))
+  (let ((e (car (scene-entities
+                 (step-scene (make-scene #:entities '((#:x 14 #:y 0 #:width 16 #:height 16 #:vx 8 #:contacts? #t))
+                                         #:tilemap (grid-map 4 4 (column 2 4)))
+                             16 #:substeps 4)))))
+    (list (entity-ref e #:x) (entity-ref e #:blocked))))
+(let* ((pair '((#:id a #:x 0 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t)
+               (#:id b #:x 6 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t)))
+       (s (step-scene (make-scene #:entities pair) 16)))
+  (test-equal "two movable boxes pushed apart touch each other, by #:id" '((() (b) absent) (() (a) absent))
+    (map report (scene-entities s)))
+  (test-equal "… and the scene holds the pair" '((a . b)) (scene-contacts s))
+  (test-equal "resolve-entity-collisions alone writes #:touching the same way" '((b) (a))
+    (map (lambda (e) (entity-ref e #:touching)) (resolve-entity-collisions pair))))
+(test-equal "no #:id: the position in the list names it" '((1) (0))
+  (map (lambda (e) (entity-ref e #:touching))
+       (stepped '((#:x 0 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t)
+                  (#:x 6 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t)))))
+(define platform '(#:id floor #:x 0 #:y 20 #:width 50 #:height 10 #:solid? #t #:immovable? #t))
+(define on-platform '(#:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t))
+(let ((s (step-scene (make-scene #:entities (list platform on-platform)) 16)))
+  (test-equal "standing on an immovable platform: it holds the box up and pushes it"
+    '(#:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t
+      #:blocked () #:on-ground? #t #:standing-on floor #:touching (floor))
+    (cadr (scene-entities s)))
+  (test-eq "the platform, without #:contacts?, is left as it was" platform (car (scene-entities s)))
+  (test-equal "the pair, the earlier in the list first" '((floor . box)) (scene-contacts s))
+  (test-equal "update-scene keeps the frame's pairs" '((floor . box))
+    (scene-contacts (update-scene s #:camera (make-camera))))
+  (test-equal "detect-on-solid alone names the holder too" 'floor
+    (entity-ref (detect-on-solid on-platform (make-scene #:entities (list platform)) 16)
+                #:standing-on)))
+(parameterize ((resting-contacts? #t))
+  (test-equal "resting on it (no push): standing on it, touching nothing" '(() () floor)
+    (report (cadr (stepped (list platform (append on-platform '(#:on-ground? #t))))))))
+(let* ((a '(#:x 0 #:y 0 #:width 10 #:height 10 #:solid? #t))
+       (b '(#:x 6 #:y 0 #:width 10 #:height 10 #:solid? #t))
+       (c '(#:x 100 #:y 0 #:width 10 #:height 10 #:solid? #t))
+       (s (make-scene #:entities (list a b c)))
+       (after (step-scene s 16)))
+  (test-equal "without #:contacts? no report keys are written"
+    '((#:x -2 #:y 0 #:width 10 #:height 10 #:solid? #t #:vx -1)
+      (#:x 8 #:y 0 #:width 10 #:height 10 #:solid? #t #:vx 1))
+    (list-head (scene-entities after) 2))
+  (test-eq "… an entity nothing moved stays itself" c (caddr (scene-entities after)))
+  (test-equal "… and the scene has no pairs" '() (scene-contacts after)))
+(let ((e '(#:x 0 #:y 0 #:width 16 #:height 16 #:vy 0 #:contacts? #t #:blocked (right))))
+  (test-eq "a tile step leaves the other axis's sides, and an equal value, as they are" e
+    (resolve-tile-collisions-y e (make-scene #:tilemap floor-4) 16)))
+(test-equal "a #:blocked value not in canonical form reads as no sides and is rewritten" '()
+  (entity-ref (resolve-tile-collisions-y '(#:x 0 #:y 0 #:width 16 #:height 16 #:contacts? #t
+                                           #:blocked (down left))
+                                         (make-scene #:tilemap floor-4) 16)
+              #:blocked))
+(test-equal "… and one that is not a list at all reads as no sides" '()
+  (entity-ref (resolve-tile-collisions-x '(#:x 0 #:y 0 #:width 16 #:height 16 #:contacts? #t #:blocked 7)
+                                         (make-scene #:tilemap floor-4) 16)
+              #:blocked))
+(let* ((resting (lambda (contacts?)
+                  `(#:x 0 #:y 32 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:on-ground? #t
+                    ,@(if contacts? '(#:contacts? #t) '()))))
+       (s0 (make-scene #:entities (list (resting #f) (resting #t)) #:tilemap floor-4))
+       (frames (let loop ((i 0) (s s0) (acc '()))
+                 (if (= i 3) (reverse acc) (let ((n (step-scene s 16))) (loop (+ i 1) n (cons n acc)))))))
+  (test-eq "a body at rest without #:contacts? stays itself frame after frame (it may sleep)"
+    (car (scene-entities s0)) (car (scene-entities (caddr frames))))
+  (test-equal "a contact body beside it reports every frame: it never sleeps"
+    '(((down) () #f) ((down) () #f) ((down) () #f))
+    (map (lambda (s) (report (cadr (scene-entities s)))) frames)))
+(let* ((s0 (make-scene #:entities (list platform on-platform)))
+       (s1 (step-scene s0 16))
+       (s2 (step-scene s1 16))
+       (jump (lambda (e) (if (eq? (entity-ref e #:id) 'box) (entity-set e #:vy -10) e)))
+       (s3 (step-scene (update-scene s2 #:entities (map jump (scene-entities s2))) 16)))
+  (test-equal "contacts-begun: the frame it touches" '((floor . box)) (contacts-begun s0 s1))
+  (test-equal "… nothing while it stays" '(() ()) (list (contacts-begun s1 s2) (contacts-ended s1 s2)))
+  (test-equal "contacts-ended: the frame it parts" '((floor . box)) (contacts-ended s2 s3))
+  (test-equal "… nothing begins then" '() (contacts-begun s2 s3)))
+(let* ((wall (lambda (id x) `(#:id ,id #:x ,x #:y 0 #:width 10 #:height 10 #:solid? #t #:immovable? #t
+                             #:contacts? #t)))
+       (s1 (step-scene (make-scene #:entities (list (wall 'l 0) (wall 'r 5))) 16)))
+  (test-equal "two overlapping immovable walls touch, though nothing moves them" '((l . r)) (scene-contacts s1))
+  (test-eq "… and the next frame, with the same report and pairs, is the scene itself" s1 (step-scene s1 16)))
+(test-error "scene-contacts refuses what is not a scene" 'wrong-type-arg (scene-contacts '()))
+(test-equal "pairs match either way round" '() (contacts-begun '((a . b)) '((b . a))))
+(test-equal "pair lists and scenes mix" '((a . c)) (contacts-begun (make-scene) '((a . c))))
+(test-error "contacts-begun refuses what is neither a scene nor a pair list" 'wrong-type-arg
+  (contacts-begun 5 '()))
+(test-error "contacts-ended too" 'wrong-type-arg (contacts-ended '() '(1 2)))
 
 (test-end "physics")

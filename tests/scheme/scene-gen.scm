@@ -373,6 +373,16 @@
       (append e (list #:carries? #t))
       e))
 
+;;; Every third entity, from a place the seed decides, reports contacts
+;;; (semantics §10), bar every fourth seed's scene, which has none. Decided
+;;; from the seed and the position, never drawn, so every seed keeps the
+;;; scene it had before contact reports existed, bar the flag.
+(define (contact-reporter seed)
+  (lambda (e i)
+    (if (and (not (zero? (modulo seed 4))) (zero? (modulo (+ seed i) 3)))
+        (append e (list #:contacts? #t))
+        e)))
+
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
@@ -384,7 +394,8 @@
          (slots (shuffle r (append group-slots (make-list (- n (length group-slots)) #f)))))
     (let loop ((slots slots) (boxes '()) (ids '()) (acc '()))
       (if (null? slots)
-          (let ((entities (map (compose carrier-platform one-way-ledge) (reverse acc))))
+          (let ((entities (map (contact-reporter seed) (map (compose carrier-platform one-way-ledge) (reverse acc))
+                               (iota (length acc)))))
             (values (if (and scene-gen-invalid? (chance r 1 30))
                         (let* ((i (ri r (length entities))) (p (invalid-pair r)))
                           (append (take entities i)

@@ -1,0 +1,100 @@
+#include "contact_report.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+#include "keys.hpp"
+
+namespace ds::guile {
+
+void ContactIndex::gather(std::span<const IndexPair> log, std::span<const Body> bodies) {
+    clear();
+    auto reported = [&](const IndexPair& p) { return bodies[p.first].contacts || bodies[p.second].contacts; };
+    seen.clear();
+    std::copy_if(log.begin(), log.end(), std::back_inserter(seen), reported);
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    // Each pair once, where first resolved: sub-frames may resolve it again.
+    used.assign(seen.size(), 0);
+    for (const IndexPair& p : log) {
+        if (!reported(p)) continue;
+        const size_t k = static_cast<size_t>(std::lower_bound(seen.begin(), seen.end(), p) - seen.begin());
+        if (used[k]) continue;
+        used[k] = 1;
+        pairs.push_back(p);
+        if (bodies[p.first].contacts) touching.emplace_back(p.first, p.second);
+        if (bodies[p.second].contacts) touching.emplace_back(p.second, p.first);
+    }
+    std::sort(touching.begin(), touching.end());
+}
+
+SCM entity_name(SCM entity, size_t index) {
+    const SCM id = plist_get(entity, keys->key[kId], SCM_BOOL_F);
+    return scm_is_true(id) ? id : scm_from_size_t(index);
+}
+
+SCM entity_names(SCM entities) {
+    const SCM names = scm_c_make_vector(scm_to_size_t(scm_length(entities)), SCM_BOOL_F);
+    size_t i = 0;
+    for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++i)
+        SCM_SIMPLE_VECTOR_SET(names, i, entity_name(SCM_CAR(p), i));
+    return names;
+}
+
+SCM touching_names(const ContactIndex& index, size_t i, SCM names) {
+    const auto body = static_cast<uint32_t>(i);
+    auto at = std::lower_bound(index.touching.begin(), index.touching.end(), IndexPair{body, 0});
+    auto end = at;
+    while (end != index.touching.end() && end->first == body) ++end;
+    SCM list = SCM_EOL;
+    while (end != at) {
+        --end;
+        list = scm_cons(SCM_SIMPLE_VECTOR_REF(names, end->second), list);
+    }
+    return list;
+}
+
+SCM standing_name(const Body& b, SCM names) {
+    return b.standing_on > 0 ? SCM_SIMPLE_VECTOR_REF(names, static_cast<size_t>(b.standing_on - 1)) : SCM_BOOL_F;
+}
+
+namespace {
+
+size_t report_edit(SCM entity, SCM key, SCM value, Edit* edits, size_t n) {
+    if (SCM_UNBNDP(value)) return n;
+    const SCM old = plist_get(entity, key, SCM_UNDEFINED);
+    const bool same = !SCM_UNBNDP(old) && scm_is_true(scm_equal_p(old, value));
+    size_t k = 0;
+    while (k < n && !scm_is_eq(edits[k].key, key)) ++k;
+    if (k == n) {
+        if (!same) edits[n++] = {key, value};
+        return n;
+    }
+    if (!same) {
+        edits[k].value = value;
+        return n;
+    }
+    std::copy(edits + k + 1, edits + n, edits + k);  // keep the value the plist holds
+    return n - 1;
+}
+
+}  // namespace
+
+size_t report_edits(SCM entity, SCM touching, SCM standing, Edit* edits, size_t n) {
+    n = report_edit(entity, keys->key[kTouching], touching, edits, n);
+    n = report_edit(entity, keys->key[kStandingOn], standing, edits, n);
+    // A mark with no value to write (a key this call does not report).
+    const Edit* end = std::remove_if(edits, edits + n, [](const Edit& e) { return scm_is_eq(e.value, SCM_UNSPECIFIED); });
+    return static_cast<size_t>(end - edits);
+}
+
+SCM pair_names(std::span<const IndexPair> pairs, SCM names) {
+    SCM list = SCM_EOL;
+    for (size_t k = pairs.size(); k-- > 0;)
+        list = scm_cons(scm_cons(SCM_SIMPLE_VECTOR_REF(names, pairs[k].first),
+                                 SCM_SIMPLE_VECTOR_REF(names, pairs[k].second)),
+                        list);
+    return list;
+}
+
+}  // namespace ds::guile
