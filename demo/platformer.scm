@@ -10,10 +10,12 @@
 ;;; Beyond the first pit: a one-way plank (tiles with the tileset property
 ;;; one-way) that the player jumps up through and lands on, and drops down
 ;;; from with Down held (#:drop-through?); blocks that break when the
-;;; player's head hits them from below (tilemap-set-tile, and the scene takes
-;;; the new map); and a lift (the map's "lift" object: an immovable solid
+;;; player's head hits them from below (the player has #:contacts? #t, so its
+;;; #:blocked holds up; tilemap-set-tile, and the scene takes the new map);
+;;; and a lift (the map's "lift" object: an immovable solid
 ;;; with #:carries? #t, moving by #:vx and turned at the ends of its run by
-;;; the game) that carries the player over a pit too wide to jump.
+;;; the game) that carries the player over a pit too wide to jump (its
+;;; #:standing-on names the lift).
 ;;;
 ;;; Keys (in a window): Left/Right or A/D run, Z or Space jumps, Down or S
 ;;; drops through a plank, Return starts again, Escape quits.
@@ -57,8 +59,9 @@
     (list #:id 'player #:x (entity-ref spawn #:x) #:y (entity-ref spawn #:y)
           #:width (entity-ref spawn #:width) #:height (entity-ref spawn #:height)
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f
-          ;; Solid so that the lift's push-apart and carrying take it along.
-          #:solid? #t)))
+          ;; Solid so that the lift's push-apart and carrying take it along;
+          ;; the contact report tells the game what it hit and stands on.
+          #:solid? #t #:contacts? #t)))
 
 (define lift0
   (let ((spawn (map-object "lift")))
@@ -89,7 +92,7 @@ the last 1000."
 (define was-on-ground? #f)
 (define was-blocked? #f)
 (define last-wanted 0)                  ; the #:vx asked for last frame
-(define last-vy 0)                      ; the player's #:vy at the end of last frame
+(define was-standing-on #f)             ; the #:id of what it stood on last frame
 (define reached-goal? #f)
 (define start-frame 0)                  ; the frame the run (re)started at
 (define goal-frame #f)                  ; the frame the goal was reached at
@@ -112,7 +115,7 @@ running on the ground."
   (set! was-on-ground? #f)
   (set! was-blocked? #f)
   (set! last-wanted 0)
-  (set! last-vy 0)
+  (set! was-standing-on #f)
   (set! reached-goal? #f)
   (set! start-frame (+ (game-frame game) 1))
   (set! goal-frame #f)
@@ -169,13 +172,14 @@ removed, and how many there were."
          (wanted (cond ((input-held? input 'left) (- *run-speed*))
                        ((input-held? input 'right) *run-speed*)
                        (else 0)))
-         ;; Pushing against a wall: we asked for a speed last frame and the
-         ;; tile collision zeroed it.
-         (blocked? (and (not (zero? wanted)) (not (zero? last-wanted))
-                        (zero? (entity-ref player #:vx 0))))
+         ;; The contact report (#:contacts? #t): the sides a tile stopped the
+         ;; player on this frame, and the entity it stands on.
+         (blocked (entity-ref player #:blocked '()))
+         (standing-on (entity-ref player #:standing-on #f))
+         ;; Pushing against a wall: running, and stopped along x.
+         (blocked? (and (not (zero? last-wanted)) (or (memq 'left blocked) (memq 'right blocked)) #t))
          (jump? (and (input-pressed? input 'a) on-ground?))
-         ;; The head hit something: it was rising and the tile step stopped it.
-         (head-hit? (and (negative? last-vy) (zero? (entity-ref player #:vy 0)) (not on-ground?)))
+         (head-hit? (memq 'up blocked))
          (broken (if head-hit?
                      (break-blocks (scene-tilemap scene) (cells-above-head player (scene-tilemap scene)))
                      (cons (scene-tilemap scene) 0))))
@@ -184,6 +188,7 @@ removed, and how many there were."
       (note! game 'broke))
     (when (and on-ground? (not was-on-ground?)) (note! game 'landed))
     (when (and blocked? (not was-blocked?)) (note! game 'bumped))
+    (when (and (eq? standing-on 'lift) (not (eq? was-standing-on 'lift))) (note! game 'boarded))
     (when (and (not reached-goal?) (overlaps? player goal))
       (set! reached-goal? #t)
       (set! goal-frame (game-frame game))
@@ -192,7 +197,7 @@ removed, and how many there were."
     (set! was-on-ground? on-ground?)
     (set! was-blocked? blocked?)
     (set! last-wanted wanted)
-    (set! last-vy (entity-ref player #:vy 0))
+    (set! was-standing-on standing-on)
     (when jump?
       (play-sound 'jump)
       (note! game 'jumped))

@@ -134,7 +134,7 @@ demos' top-level names stay in that module."
   (test-equal "events" '((10 . landed) (50 . jumped) (76 . landed) (85 . jumped) (111 . landed)
                          (147 . landed) (194 . landed) (215 . bumped) (220 . jumped) (247 . landed)
                          (372 . jumped) (398 . landed) (420 . landed) (453 . jumped) (455 . broke)
-                         (461 . landed) (675 . goal) (696 . bumped))
+                         (461 . landed) (576 . boarded) (675 . goal) (696 . bumped))
     (events-of platformer))
   (test-equal "sounds: a jump for each press of 'a on the ground (not the one in the air at 60), a boom for the block"
     '((50 . jump) (85 . jump) (220 . jump) (372 . jump) (453 . jump) (455 . boom) (675 . goal))
@@ -166,8 +166,8 @@ demos' top-level names stay in that module."
     '((113 1 #f) (157 9 #f) (160 0 #t))
     (map (lambda (k) (pick (p-at k) #:y #:vy #:on-ground?)) '(411 419 420)))
   ;; The blocks: row 8 (bottom y 144), columns 71-73 (x 1136-1184).
-  (test-equal "the head hit the middle block: stopped at y 144, vy 0" '(1155 144 0)
-    (pick (p-at 455) #:x #:y #:vy))
+  (test-equal "the head hit the middle block: stopped at y 144, vy 0, blocked up" '(1155 144 0 (up))
+    (pick (p-at 455) #:x #:y #:vy #:blocked))
   (test-equal "that block is gone from the scene's map; its neighbours and the level are not"
     '((22 0 22) (22 22 22) (#t #f #t))
     (let ((now (scene-tilemap (game-scene (game-of platformer)))) (level (ref platformer 'level)))
@@ -180,6 +180,10 @@ demos' top-level names stay in that module."
     (map l-x '(0 71 72 143 144)))
   (test-equal "stepped on as it left the near end" '((1236 1248) (1249 1254))
     (map (lambda (k) (list (entity-ref (p-at k) #:x) (l-x k))) '(575 578)))
+  (test-equal "the contact report names the lift: stood on and pushed against, no tile below" '(() lift (lift))
+    (pick (p-at 600) #:blocked #:standing-on #:touching))
+  (test-equal "and on the ground, nothing" '((down) #f ())
+    (pick (p-at 560) #:blocked #:standing-on #:touching))
   (test-assert "standing still on it, carried: 10 px from its left end every frame from 584 to 635"
     (every (lambda (k) (and (= (- (entity-ref (p-at k) #:x) (l-x k)) 10)
                             (equal? (pick (p-at k) #:y #:vx #:on-ground?) '(160 0 #t))))
