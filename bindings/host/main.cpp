@@ -4,21 +4,46 @@
 #include <libguile.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <system_error>
 
 extern "C" void ds_init_native();
 
 namespace {
 
-// DOWNSTROKE_SCHEME_DIR / DOWNSTROKE_GO_DIR override the build-tree paths,
-// for an installed or relocated tree.
-const char* dir_setting(const char* env, const char* fallback) {
+#ifdef DS_INSTALLED_HOST
+// Installed, DS_SCHEME_DIR and DS_GO_DIR are relative to the prefix, which is
+// found from this executable's own path (PREFIX/DS_BIN_DIR/downstroke), so
+// that `cmake --install --prefix P' works for any P without rebuilding.
+std::string installed_dir(const char* relative) {
+    std::error_code ec;
+    std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return relative;
+    std::filesystem::path prefix = exe.parent_path();
+    for (const auto& part : std::filesystem::path(DS_BIN_DIR)) {
+        (void)part;
+        prefix = prefix.parent_path();
+    }
+    return (prefix / relative).string();
+}
+#else
+std::string installed_dir(const char* build_tree_dir) { return build_tree_dir; }
+#endif
+
+// DOWNSTROKE_SCHEME_DIR / DOWNSTROKE_GO_DIR override the default paths,
+// for a relocated tree.
+// The C++ string is gone before any Guile call that could longjmp past it.
+SCM dir_setting(const char* env, const char* fallback) {
     const char* v = std::getenv(env);
-    return v && *v ? v : fallback;
+    if (v && *v) return scm_from_utf8_string(v);
+    const std::string dir = installed_dir(fallback);
+    return scm_from_utf8_stringn(dir.data(), dir.size());
 }
 
-void prepend(const char* variable, const char* dir) {
+void prepend(const char* variable, SCM dir) {
     SCM var = scm_c_lookup(variable);
-    scm_variable_set_x(var, scm_cons(scm_from_utf8_string(dir), scm_variable_ref(var)));
+    scm_variable_set_x(var, scm_cons(dir, scm_variable_ref(var)));
 }
 
 void inner_main(void*, int argc, char** argv) {
