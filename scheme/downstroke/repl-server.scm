@@ -17,6 +17,7 @@
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
   #:export (default-repl-timeout open-unix-repl-socket open-tcp-repl-socket
+            remove-unix-repl-socket!
             make-repl-server repl-server-poll! repl-server-broadcast!))
 
 ;;; ---------------------------------------------------------------- tunables
@@ -83,7 +84,24 @@ a stale socket; anything else there is refused (a 'misc-error naming PATH)."
       (lambda () #t)
       (lambda () (bind sock AF_UNIX path) (chmod path #o600))
       (lambda () (umask old)))
+    (set! (socket-file sock) (cons path (socket-identity path)))
     sock))
+
+;; What open-unix-repl-socket bound a socket to: (PATH . identity).
+(define socket-file (make-object-property))
+
+(define (socket-identity path)
+  (let ((st (false-if-exception (lstat path))))
+    (and st (eq? (stat:type st) 'socket) (cons (stat:dev st) (stat:ino st)))))
+
+(define (remove-unix-repl-socket! sock)
+  "Remove the file SOCK (from open-unix-repl-socket) was bound to, if that
+path still is this socket: a game that ends leaves nothing behind, and never
+removes what someone else put there since."
+  (let ((bound (socket-file sock)))
+    (when (and bound (equal? (cdr bound) (socket-identity (car bound))))
+      (false-if-exception (delete-file (car bound)))
+      (set! (socket-file sock) #f))))
 
 (define (open-tcp-repl-socket port)
   "A listening TCP socket on 127.0.0.1:PORT: loopback only, since a REPL is
