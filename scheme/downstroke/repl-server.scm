@@ -354,13 +354,13 @@ arbitrary code execution."
 
 (define geiser-witness "geiser/emacs.scm")   ; what Geiser's elisp looks for too
 (define *searched-load-path* #f)             ; %load-path when last searched
+(define *geiser-served?* #f)                 ; (geiser emacs) loaded and served
 
 (define (load-geiser-when-found!)
-  ;; One eq? per prompt: the load path is searched only when it changed.
-  (unless (eq? %load-path *searched-load-path*)
+  ;; One test per prompt: the load path is searched only when it changed.
+  (unless (or *geiser-served?* (eq? %load-path *searched-load-path*))
     (set! *searched-load-path* %load-path)
-    (when (and (not (resolve-module '(geiser emacs) #f #f #:ensure #f))
-               (%search-load-path geiser-witness))
+    (when (%search-load-path geiser-witness)
       (load-geiser!))))
 
 (define (load-geiser!)
@@ -371,9 +371,19 @@ arbitrary code execution."
     (lambda ()
       (parameterize ((current-error-port *console*) (current-warning-port *console*))
         (with-standard-keywords (lambda () (resolve-interface '(geiser emacs)))))
-      (serve-geiser-eval!))
+      (when (geiser-0.10-eval?) (serve-geiser-eval!))
+      (set! *geiser-served?* #t))
     (lambda (key . args)
       (format (current-error-port) "downstroke: Geiser's (geiser emacs) did not load: ~a ~s~%" key args))))
+
+(define (geiser-0.10-eval?)
+  ;; Only the definition below is replaced: another Geiser's ,geiser-eval
+  ;; (its usage line differs) is left as it is.
+  (let ((info (hashq-ref (@@ (system repl command) *command-infos*) 'geiser-eval)))
+    (and info
+         (equal? (procedure-documentation (car info))
+                 "geiser-eval module form args ()
+Meta-command used by Geiser to evaluate and compile code."))))
 
 (define (serve-geiser-eval!)
   ;; Geiser 0.10's ,geiser-eval, as Geiser defines it but for two things:
