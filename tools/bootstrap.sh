@@ -8,9 +8,12 @@ cd "$(dirname "$0")/.."
 # libbox2d-dev and gnuplot-nox only serve the benchmarks (the box2d path; the accuracy plot);
 # the SDL2 set is the renderer (window, capture, input, sound); xvfb, xauth, x11-apps (xwd)
 # and xdotool serve the one test that opens a real window on a virtual display; clang and
-# libclang-rt-dev (libFuzzer, not pulled in by --no-install-recommends) build the fuzz targets.
+# libclang-rt-dev (libFuzzer, not pulled in by --no-install-recommends) build the fuzz targets;
+# emacs-nox and elpa-geiser (Debian 12's Geiser 0.10, Guile support included) run the test
+# that attaches Geiser to a served game.
 packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev libbox2d-dev gnuplot-nox
-          libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev xvfb xauth x11-apps xdotool clang libclang-rt-dev)
+          libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev xvfb xauth x11-apps xdotool clang libclang-rt-dev
+          emacs-nox elpa-geiser)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -58,7 +58,22 @@
        (display text (current-error-port))
        (force-output (current-error-port))
        (repl-server-broadcast! server text)))
-    (frame-pacing #t)))
+    (frame-pacing #t)
+    (remove-socket-on-signals! socket)))
+
+;; The signals that end a served game from outside (Ctrl-C in its terminal,
+;; kill, a closed terminal): each still ends it as before, by that signal,
+;; but only once the socket file is gone.
+(define ending-signals (list SIGINT SIGTERM SIGHUP))
+
+(define (remove-socket-on-signals! socket)
+  (for-each (lambda (sig)
+              (sigaction sig
+                (lambda (sig)
+                  (remove-unix-repl-socket! socket)
+                  (sigaction sig SIG_DFL)
+                  (kill (getpid) sig))))
+            ending-signals))
 
 (define (open-repl-socket opts)
   ;; The listening socket the options ask for, #f for none, or 'refused
@@ -176,4 +191,6 @@ Returns the exit status."
                       (cond ((eq? socket 'refused) 2)
                             (else
                              (when socket (serve-repl! socket (repl-timeout opts)))
-                             (run-script (car rest) (cdr rest))))))))))))
+                             (let ((status (run-script (car rest) (cdr rest))))
+                               (when socket (remove-unix-repl-socket! socket))
+                               status)))))))))))

@@ -12,11 +12,14 @@
   #:use-module (system repl repl)
   #:use-module (system repl common)
   #:use-module (system repl debug)
+  #:use-module (system repl error-handling)
+  #:use-module ((system syntax) #:select (syntax?))
   #:use-module (ice-9 suspendable-ports)
   #:use-module (rnrs bytevectors)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
   #:export (default-repl-timeout open-unix-repl-socket open-tcp-repl-socket
+            remove-unix-repl-socket!
             make-repl-server repl-server-poll! repl-server-broadcast!))
 
 ;;; ---------------------------------------------------------------- tunables
@@ -83,7 +86,24 @@ a stale socket; anything else there is refused (a 'misc-error naming PATH)."
       (lambda () #t)
       (lambda () (bind sock AF_UNIX path) (chmod path #o600))
       (lambda () (umask old)))
+    (set! (socket-file sock) (cons path (socket-identity path)))
     sock))
+
+;; What open-unix-repl-socket bound a socket to: (PATH . identity).
+(define socket-file (make-object-property))
+
+(define (socket-identity path)
+  (let ((st (false-if-exception (lstat path))))
+    (and st (eq? (stat:type st) 'socket) (cons (stat:dev st) (stat:ino st)))))
+
+(define (remove-unix-repl-socket! sock)
+  "Remove the file SOCK (from open-unix-repl-socket) was bound to, if that
+path still is this socket: a game that ends leaves nothing behind, and never
+removes what someone else put there since."
+  (let ((bound (socket-file sock)))
+    (when (and bound (equal? (cdr bound) (socket-identity (car bound))))
+      (false-if-exception (delete-file (car bound)))
+      (set! (socket-file sock) #f))))
 
 (define (open-tcp-repl-socket port)
   "A listening TCP socket on 127.0.0.1:PORT: loopback only, since a REPL is
@@ -319,7 +339,97 @@ arbitrary code execution."
 
 (define (on-read)
   ;; Each new prompt starts a new evaluation's time.
-  (when *active* (arm-timer!)))
+  (when *active*
+    (load-geiser-when-found!)
+    (arm-timer!)))
+
+;;; ---------------------------------------------------------------- Geiser
+;;; Geiser (geiser-guile) puts its Scheme directory on the load path, then
+;;; sends `,use (geiser emacs)' for its meta-commands (,geiser-eval …). The
+;;; host reads postfix keywords, under which Geiser's source (`'ge:') does
+;;; not compile, and every reply was "Unknown meta command". So the server
+;;; loads (geiser emacs) itself, with the standard keyword syntax, at the
+;;; first prompt after the load path finds it: the client's `,use' then
+;;; finds the module loaded, and Geiser's own code serves it.
+
+(define geiser-witness "geiser/emacs.scm")   ; what Geiser's elisp looks for too
+(define *searched-load-path* #f)             ; %load-path when last searched
+(define *geiser-served?* #f)                 ; (geiser emacs) loaded and served
+
+(define (load-geiser-when-found!)
+  ;; One test per prompt: the load path is searched only when it changed.
+  (unless (or *geiser-served?* (eq? %load-path *searched-load-path*))
+    (set! *searched-load-path* %load-path)
+    (when (%search-load-path geiser-witness)
+      (load-geiser!))))
+
+(define (load-geiser!)
+  ;; Compiling it the first time may take longer than an evaluation's limit;
+  ;; its compiler's notes go to the game's console, not into the session.
+  (disarm-timer!)
+  (catch #t
+    (lambda ()
+      (parameterize ((current-error-port *console*) (current-warning-port *console*))
+        (with-standard-keywords (lambda () (resolve-interface '(geiser emacs)))))
+      (when (geiser-0.10-eval?) (serve-geiser-eval!))
+      (set! *geiser-served?* #t))
+    (lambda (key . args)
+      (format (current-error-port) "downstroke: Geiser's (geiser emacs) did not load: ~a ~s~%" key args))))
+
+(define (geiser-0.10-eval?)
+  ;; Only the definition below is replaced: another Geiser's ,geiser-eval
+  ;; (its usage line differs) is left as it is.
+  (let ((info (hashq-ref (@@ (system repl command) *command-infos*) 'geiser-eval)))
+    (and info
+         (equal? (procedure-documentation (car info))
+                 "geiser-eval module form args ()
+Meta-command used by Geiser to evaluate and compile code."))))
+
+(define (serve-geiser-eval!)
+  ;; Geiser 0.10's ,geiser-eval, as Geiser defines it but for two things:
+  ;; Guile 3.0.8 reads a meta-command's expressions as syntax objects, and
+  ;; Geiser tests them as data ((null? args) was never true, so every
+  ;; evaluation failed); and an error is reported, as at the served prompt,
+  ;; instead of entering the debugger, which could not wait for input here.
+  (let* ((command-infos (@@ (system repl command) *command-infos*))
+         (geiser (hashq-ref command-infos 'geiser-eval))
+         (geiser-emacs (resolve-module '(geiser emacs)))
+         (evaluation (resolve-interface '(geiser evaluation)))
+         (compile (module-ref evaluation 'ge:compile))
+         (evaluate (module-ref evaluation 'ge:eval)))
+    (define (served-geiser-eval repl . expressions)
+      (apply (lambda (mod form args . rest)
+               (if (null? args)
+                   (let ((port (current-output-port)))
+                     (call-with-error-handling
+                      (lambda () (compile form mod))
+                      #:on-error (lambda (key . args)
+                                   (write-error-retort port key args (make-stack #t)))))
+                   (evaluate `(,(eval form geiser-emacs) ,@args) mod)))
+             (map (lambda (x) (if (syntax? x) (syntax->datum x) x)) expressions)))
+    (set-procedure-property! served-geiser-eval 'documentation
+                             (procedure-documentation (car geiser)))
+    (hashq-set! command-infos 'geiser-eval (cons served-geiser-eval (cdr geiser)))))
+
+(define (write-error-retort port key args stack)
+  ;; Geiser's retort for an error: its key, and as output the backtrace
+  ;; and message the served prompt prints (what Geiser shows the user).
+  (let* ((tag (and (pair? (fluid-ref %stacks)) (cdr (fluid-ref %stacks))))
+         (text (call-with-output-string
+                (lambda (p)
+                  (print-frames (narrow-stack->vector stack 1 tag 0 (and tag 1)) p)
+                  (print-exception p #f key args)))))
+    (write `((error (key . ,key)) (output . ,text)) port)
+    (newline port)))
+
+(define (with-standard-keywords thunk)
+  (let ((style (cadr (memq 'keywords (read-options)))))
+    (dynamic-wind
+      (lambda () (read-set! keywords #f))
+      thunk
+      (lambda () (read-set! keywords style)))))
+
+(define *console* (current-error-port))      ; the game's own error port
 
 (define (client-repl c module)
   (lambda ()
@@ -396,6 +506,7 @@ arbitrary code execution."
 evaluation may hold the game TIMEOUT seconds. Call repl-server-poll! once
 per frame."
   (set! *timeout* timeout)
+  (set! *console* (current-error-port))
   (non-blocking! socket)
   (listen socket *listen-backlog*)
   ;; A client that hangs up must cost an error return, not the process.

@@ -36,6 +36,7 @@
 (test-assert "the running game saw the box moved by the REPL"
   (and (string? report) (string-prefix? "moved: x=500 at frame " report)))
 (test-equal "the game ended by itself (exit 0)" 0 (status:exit-val (close-pipe game)))
+(test-assert "and removed its socket" (not (file-exists? socket-path)))
 (close-port client)
 
 ;;; --repl-port listens on loopback only
@@ -262,6 +263,7 @@
 (test-equal "the refused game left the first one's socket working" "2\n"
   (let* ((c (open-client served-path)) (r (answer c "(+ 1 1)"))) (close-port c) r))
 (test-equal "the served game ends by itself (exit 0)" 0 (stop-served served m))
+(test-assert "an (exit 0) from a hook removes the socket" (not (file-exists? served-path)))
 (close-port m)
 (close-port other)
 
@@ -281,7 +283,38 @@
 (test-equal "a stale socket is replaced and served on" "6\n" (answer stale-client "(* 2 3)"))
 (test-equal "that game ends by itself too" 0 (stop-served stale-game stale-client))
 (close-port stale-client)
-(delete-file stale-path)
+(test-assert "and the socket it took over is removed with it" (not (file-exists? stale-path)))
+
+;;; The socket goes whichever way the game ends.
+(define failing-path (string-append dir "/failing.sock"))
+(define failing
+  (run-joined "--repl-server" failing-path (string-append (getenv "DS_TEST_DATA") "/scripts/repl-failing.scm")))
+(test-equal "a script that fails ends with status 1" 1 (car failing))
+(test-assert "and its message" (string-contains (cdr failing) "the script failed after its game"))
+(test-assert "and its socket is removed" (not (file-exists? failing-path)))
+
+(define (signalled sig)
+  ;; How a served game ended once sent SIG, and whether its socket is left.
+  (let* ((path (string-append dir "/signalled.sock"))
+         (game (start-served path))
+         (c (open-client path))
+         (pid (value c "(getpid)")))
+    (kill pid sig)
+    (let ((status (close-pipe game)))
+      (close-port c)
+      (list (status:term-sig status) (file-exists? path)))))
+(test-equal "SIGTERM still ends the game by that signal, and the socket goes" (list SIGTERM #f) (signalled SIGTERM))
+(test-equal "so does SIGINT (Ctrl-C)" (list SIGINT #f) (signalled SIGINT))
+
+(define moved-path (string-append dir "/moved.sock"))
+(define moved-game (start-served moved-path))
+(define moved-client (open-client moved-path))
+(rename-file moved-path (string-append dir "/elsewhere.sock"))
+(call-with-output-file moved-path (lambda (p) (display "not the game's" p)))
+(test-equal "a file put in the socket's place meanwhile" 0 (stop-served moved-game moved-client))
+(test-equal "is left alone when the game ends" "not the game's" (call-with-input-file moved-path get-string-all))
+(close-port moved-client)
+(for-each delete-file (list moved-path (string-append dir "/elsewhere.sock")))
 
 ;;; --repl-port serves the same REPL on 127.0.0.1 (a port some other
 ;;; program holds is refused, exit 2: then the next one is tried).
