@@ -8,7 +8,9 @@
 ;;; 'documentation object property of its exported variable.
 (define-module (downstroke documentation)
   #:use-module (srfi srfi-1)
-  #:use-module (ice-9 session)
+  ;; Only the reference generator asks for argument lists: a game need not
+  ;; load (ice-9 session) at start-up.
+  #:autoload (ice-9 session) (procedure-arguments)
   #:export (user-modules module-summary export-names export-kind export-documentation
             export-signature undocumented-exports))
 
