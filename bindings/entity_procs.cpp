@@ -222,9 +222,11 @@ void register_entity_procedures() {
         WrapperDoc{"(entity tilemap entities)", "detect-on-solid", physics});
     // Exported as they are (re-exported by (downstroke physics)): documented here.
     define_procedure<1, 0, 0, resolve_entity_collisions_n>("resolve-entity-collisions",
-        "Push overlapping solid entities apart: one pass over the pairs in list order.");
+        "(resolve-entity-collisions entities): the list with overlapping solid entities pushed "
+        "apart, one pass over the pairs in list order.");
     define_procedure<1, 0, 0, sync_groups_n>("sync-groups",
-        "Place every group member at its origin's position plus its local offset.");
+        "(sync-groups entities): the list with every group member placed at its origin's "
+        "position plus its local offset.");
     define_procedure<4, 0, 0, carry_riders_n>("%carry-riders",
         WrapperDoc{"(entities tilemap start-entities mode)", "carry-riders", physics});
     define_procedure<8, 0, 0, aabb_overlap_p>("aabb-overlap?",

@@ -331,11 +331,11 @@ void register_tilemap_procedures() {
         "(make-tilemap width height tile-width tile-height cells solid-gids [one-way-gids]): a map "
         "made in memory; cells is a vector (or list) of gids, row-major; one-way-gids are one-way "
         "platforms (solid from above only).");
-    define_procedure<1, 0, 0, tilemap_p>("tilemap?", "Whether obj is a tilemap.");
-    define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "Width in cells.");
-    define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "Height in cells.");
-    define_procedure<1, 0, 0, tilemap_tile_width>("tilemap-tile-width", "Tile width in px.");
-    define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "Tile height in px.");
+    define_procedure<1, 0, 0, tilemap_p>("tilemap?", "(tilemap? obj): whether obj is a tilemap.");
+    define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "(tilemap-width tm): the map's width in cells.");
+    define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "(tilemap-height tm): the map's height in cells.");
+    define_procedure<1, 0, 0, tilemap_tile_width>("tilemap-tile-width", "(tilemap-tile-width tm): the width of one tile in px.");
+    define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "(tilemap-tile-height tm): the height of one tile in px.");
     define_procedure<3, 0, 0, tilemap_cell_solid_p>("tilemap-cell-solid?",
         "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
     define_procedure<4, 1, 0, tilemap_set_tile>("tilemap-set-tile",
@@ -345,10 +345,12 @@ void register_tilemap_procedures() {
         "(tilemap-cell-one-way? tm col row): whether that cell is a one-way platform, which stops "
         "bodies only from above.");
     define_procedure<1, 0, 0, tilemap_solid_extent>("tilemap-solid-extent",
-        "(first-col first-row cols rows): the block of cells that can be solid; every "
-        "cell outside it is empty (infinite maps may start at negative cells).");
+        "(tilemap-solid-extent tm): the block of cells that can be solid, as the list "
+        "(first-col first-row cols rows); every cell outside it is empty (infinite maps may start "
+        "at negative cells).");
     define_procedure<1, 0, 0, tilemap_objects>("tilemap-objects",
-        "The objects of every object layer, as entity plists.");
+        "(tilemap-objects tm): the objects of every object layer, each as an entity (a keyword "
+        "list).");
     define_procedure<4, 0, 0, tilemap_gid>("tilemap-gid",
         "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
         "number layer, 0 when empty.");

@@ -98,7 +98,7 @@ collision mode, substeps and resting contacts."
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
-rest (both beyond the seed, off by default). HISTORY keeps the scenes of
+rest (both off by default). HISTORY keeps the scenes of
 that many past frames for game-rewind!. WIDTH × HEIGHT is the picture in
 pixels (a window shows it scaled up). INPUT-MAP binds keys and controller
 inputs to actions in a window, as ((action name …) …) — see
@@ -169,7 +169,7 @@ Returns that frame's number."
 
 (define (engine-stats game)
   "What the last physics frame cost, step by step: a list of
-(step processed skipped ms) — decode (reading the plists), each step of the
+(step processed skipped ms) — decode (reading the entities), each step of the
 frame in order (tweens acceleration gravity velocity-x tile-collisions-x
 velocity-y tile-collisions-y on-solid entity-collisions groups), and encode
 (writing back what changed). PROCESSED counts the entities a step applied
@@ -219,8 +219,13 @@ frames to run, as in `downstroke demo/sandbox.scm 3600'."
 ;;; game's thread: the host polls its REPL server from here.
 
 (define frame-hooks '())
-(define (add-frame-hook! proc) (set! frame-hooks (append frame-hooks (list proc))))
-(define (remove-frame-hook! proc) (set! frame-hooks (delete proc frame-hooks eq?)))
+(define (add-frame-hook! proc)
+  "Call PROC, a procedure of no arguments, at the start of every frame of
+every game run from now on, after the hooks added before it."
+  (set! frame-hooks (append frame-hooks (list proc))))
+(define (remove-frame-hook! proc)
+  "Stop calling PROC (the very procedure add-frame-hook! was given) each frame."
+  (set! frame-hooks (delete proc frame-hooks eq?)))
 
 ;; #t: game-run! keeps to wall-clock time (frame-delay ms per frame), as a
 ;; game someone is watching or poking from a REPL must; #f: as fast as it can.

@@ -35,38 +35,43 @@
   "Advance ENTITY's #:tween by DT ms."
   (%step-tweens entity dt))
 (define (apply-acceleration entity scene dt)
-  "vy += ay, then ay = 0 (for #:gravity? entities)."
+  "ENTITY with its #:ay added to #:vy and #:ay set to 0 (only a #:gravity?
+entity; any other comes back as it is)."
   (%apply-acceleration entity))
 (define (apply-gravity entity scene dt)
-  "vy += *gravity* (for #:gravity? entities)."
+  "ENTITY with *gravity* added to its #:vy (only a #:gravity? entity)."
   (%apply-gravity entity))
-(define (apply-velocity-x entity scene dt) "x += vx." (%apply-velocity-x entity))
-(define (apply-velocity-y entity scene dt) "y += vy." (%apply-velocity-y entity))
+(define (apply-velocity-x entity scene dt) "ENTITY moved by its #:vx along x." (%apply-velocity-x entity))
+(define (apply-velocity-y entity scene dt) "ENTITY moved by its #:vy along y." (%apply-velocity-y entity))
 (define (apply-velocity entity scene dt)
-  "x += vx and y += vy; each axis can be skipped on its own."
+  "ENTITY moved by #:vx along x and #:vy along y; #:skip-pipelines can skip
+each axis on its own (velocity-x, velocity-y)."
   (%apply-velocity entity))
 (define (resolve-tile-collisions-x entity scene dt)
-  "Snap ENTITY out of the scene tilemap's solid cells along x; zero vx."
+  "ENTITY moved back along x out of the solid tiles of SCENE's map it ran
+into, with #:vx 0 when it hit one."
   (%resolve-tile-collisions-x entity (tilemap-of scene) (collision-mode)))
 (define (resolve-tile-collisions-y entity scene dt)
-  "Snap ENTITY out of the scene tilemap's solid cells along y; zero vy."
+  "ENTITY moved back along y out of the solid tiles of SCENE's map it ran
+into, with #:vy 0 when it hit one."
   (%resolve-tile-collisions-y entity (tilemap-of scene) (collision-mode)))
 (define (detect-on-solid entity scene dt)
-  "Set #:on-ground? from the tiles under ENTITY and the scene's solid entities."
+  "ENTITY with #:on-ground? set: whether a solid tile of SCENE's map or one
+of its solid entities is right under it."
   (%detect-on-solid entity (tilemap-of scene) (entities-of scene)))
 
 (define (carry-riders entities scene dt)
-  "The carry step (semantics §11): SCENE is the frame-start scene (its
-entities are ENTITIES before this frame's per-entity steps). Each moving
-#:carries? platform moves its riders by its own displacement, resolved
+  "ENTITIES (this frame's entities, moved) with every rider of a moving
+#:carries? platform moved by the platform's own movement since SCENE (the
+scene the frame started from), resolved
 against the solid tiles; a rider lifted into a solid cell gets #:crushed? #t
 (and a crushable body with the key that is not crushed, #f)."
   (%carry-riders entities (tilemap-of scene) (entities-of scene) (collision-mode)))
 
 (define* (step-scene scene dt #:key (substeps 1))
   "SCENE after one whole engine pass (the default-engine-update composition:
-tweens, then motion, tiles, ground, carriers, push-apart and groups), done in one
-native call. With SUBSTEPS k > 1 (beyond the seed), everything after the
+tweens, then motion, tiles, ground, carriers, push-apart and groups), done
+all at once. With SUBSTEPS k > 1 (off by default), everything after the
 tweens runs as k sub-frames of 1/k frame each: velocities and gravity
 advance by a k-th, in flonums, and the motion converges to the continuous
 one as k grows. Entities with #:contacts? #t get a contact report

@@ -38,7 +38,8 @@ build without the renderer there are no inputs: it is ()."
     (orange 255 150 40) (grey 150 150 150) (gray 150 150 150)))
 
 (define (color-rgba who color)
-  "COLOR as the (r g b [a]) list the renderer takes: a list of 3 or 4
+  "COLOR as the (r g b [a]) list the drawing procedures take, or an error
+naming WHO (the procedure asking) when it is not a colour: a list of 3 or 4
 integers 0–255 as it is, or one of the names white black red green blue
 yellow cyan magenta orange grey."
   (cond ((symbol? color)

@@ -1,7 +1,8 @@
 ;;; Each public procedure's docstring is in one place (bindings/registry.hpp):
 ;;; the native code of a public Scheme procedure only names it, and the
 ;;; procedure it names exists and has a docstring.
-(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
+(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 documentation) (downstroke)
+             (downstroke documentation))
 
 (load "support.scm")
 
@@ -46,5 +47,57 @@
             ;; and (downstroke) hands users the same procedure
             (eq? proc (module-ref (resolve-interface '(downstroke)) name))))))
  pointers)
+
+;; Every export of (downstroke) — procedures, macros, parameters, variables —
+;; is documented: by its own docstring, or (when it cannot carry one) by
+;; (downstroke documentation)'s notes.
+(for-each
+ (lambda (module-name)
+   (for-each
+    (lambda (name)
+      (test-assert (format #f "~a, exported by ~a, is documented" name module-name)
+        (string? (export-documentation module-name name))))
+    (export-names module-name)))
+ user-modules)
+(test-equal "no export is undocumented" '() (undocumented-exports))
+
+;; The notes are where the REPL looks.
+(test-equal "a record accessor's note is its procedure-documentation"
+  "GAME's title (a window shows it)."
+  (procedure-documentation game-title))
+(test-equal "a parameter's note is its object-documentation"
+  "A parameter, #f by default: whether every game starts with the debug overlay on (the host's --debug)."
+  (object-documentation debug-draw-default))
+(test-equal "a variable's note is its variable's documentation property"
+  "How far below its feet (px) detect-on-solid looks for ground: 4."
+  (object-property (module-variable (resolve-interface '(downstroke)) '*on-solid-tolerance*)
+                   'documentation))
+(test-equal "a macro's docstring is its transformer's"
+  "(define-pipeline (name skip-symbol) (entity scene dt) [guard: expr] body ...)"
+  (car (string-split (export-documentation '(downstroke entity) 'define-pipeline) #\newline)))
+
+;; Words a game author knows: no machinery in the documentation.
+(define jargon '("Batch" "SCM" "decode cache" "native call" "beyond the seed" "semantics §"))
+(for-each
+ (lambda (module-name)
+   (for-each
+    (lambda (name)
+      (let ((doc (or (export-documentation module-name name) "")))
+        (test-equal (format #f "~a's documentation uses no internal jargon" name)
+          '()
+          (filter (lambda (word) (string-contains doc word)) jargon))))
+    (export-names module-name)))
+ user-modules)
+
+(test-equal "signatures: a docstring's leading call, else the arguments"
+  '("(tilemap-set-tile tm col row gid [layer])" "(entity-ref entity key [default])"
+    "(make-scene [#:entities] [#:tilemap] [#:camera] [#:camera-target])"
+    "(game-scene-set! game value)" "(collision-mode)" "*gravity*"
+    "(scene-map-entities scene . steps)")
+  (map (lambda (m+n) (export-signature (car m+n) (cdr m+n)))
+       '(((downstroke tilemap) . tilemap-set-tile) ((downstroke entity) . entity-ref)
+         ((downstroke world) . make-scene) ((downstroke engine) . game-scene-set!)
+         ((downstroke physics) . collision-mode) ((downstroke physics) . *gravity*)
+         ((downstroke world) . scene-map-entities))))
 
 (test-end "docstring")
