@@ -73,16 +73,25 @@
 (define (compile-note? line)
   (any (lambda (prefix) (string-prefix? prefix line)) guile-compile-notes))
 
+(define (compile-failure? line)
+  (string-prefix? ";;; WARNING: compilation of " line))
+
 (define (filtering-warning-port out)
-  ;; A port passing each whole line to OUT unless it is a compile note.
-  (let ((pending ""))
+  ;; A port passing each whole line to OUT unless it is a compile note, or
+  ;; the report of a failed compilation: the file then runs interpreted,
+  ;; which raises the same error, reported as any other.
+  (let ((pending "") (in-failure? #f))
+    (define (put-line! line)
+      (cond ((or (compile-note? line) (compile-failure? line))
+             (set! in-failure? (compile-failure? line)))
+            ((and in-failure? (string-prefix? ";;; " line)))
+            (else (set! in-failure? #f) (display line out))))
     (define (put-string! text)
       (let loop ((text (string-append pending text)))
         (let ((nl (string-index text #\newline)))
           (if nl
-              (let ((line (substring text 0 (+ nl 1))))
-                (unless (compile-note? line) (display line out))
-                (loop (substring text (+ nl 1))))
+              (begin (put-line! (substring text 0 (+ nl 1)))
+                     (loop (substring text (+ nl 1))))
               (set! pending text)))))
     (make-soft-port
      (vector (lambda (c) (put-string! (string c)))

@@ -54,6 +54,12 @@
   '(0 "ran\n" ";;; <unknown-location>: warning: possibly unbound variable `no-such-procedure'\n")
   (run unbound))
 
+(define unbalanced (write-script "unbalanced.scm" "(display \"read\\n\")\n(define (f x) (+ x 1)\n"))
+(test-equal "a script that does not compile reports its error once, as the run raises it"
+  (list 1 "read\n" (string-append unbalanced ":3:1: unexpected end of input while searching for: )\n"
+                                 "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n"))
+  (run unbalanced))
+
 ;;; ---------------------------------------------------------------- uncaught errors
 (define failing
   (write-script "failing.scm"
