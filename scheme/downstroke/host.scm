@@ -74,7 +74,9 @@
   (any (lambda (prefix) (string-prefix? prefix line)) guile-compile-notes))
 
 (define (compile-failure? line)
-  (string-prefix? ";;; WARNING: compilation of " line))
+  ;; The first line of a block Guile writes before it loads the file anyway.
+  (or (string-prefix? ";;; WARNING: compilation of " line)
+      (string-prefix? ";;; Stat of " line)))
 
 (define (filtering-warning-port out)
   ;; A port passing each whole line to OUT unless it is a compile note, or
@@ -112,7 +114,8 @@
 
 (define (run-script file args compile?)
   (set-program-arguments (cons file args))
-  (let ((path (canonicalize-path file)))
+  ;; A missing file is left to load, inside the catch, to refuse.
+  (let ((path (or (false-if-exception (canonicalize-path file)) file)))
     (catch #t
       (lambda ()
         (save-module-excursion

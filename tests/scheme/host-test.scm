@@ -85,6 +85,10 @@
   "In procedure step-scene: scene: expected a scene (make-scene), got 5"
   (car (string-split (third (run (write-script "engine-error.scm" "(step-scene 5 16)\n(newline)\n")))
                      #\newline)))
+(test-equal "a missing script is an error naming it, status 1"
+  (list 1 "" (string-append "In procedure open-file: No such file or directory: \"" dir "/no-such.scm\"\n"
+                            "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n"))
+  (run (string-append dir "/no-such.scm")))
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
 
