@@ -1,9 +1,12 @@
 #include "batch.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "cons.hpp"
+#include "keys.hpp"
 #include "list_walk.hpp"
 #include "plist.hpp"
 
@@ -39,6 +42,32 @@ void reserve_cache(Batch& batch, size_t n) {
     batch.cached.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
 }
 
+// The #:id of an entity that failed to decode, when it is a name worth
+// printing (a symbol, string or number), else #f. The plist may be
+// malformed or circular: the walk stops at either.
+SCM printable_id(SCM plist) {
+    Tortoise tortoise;
+    for (SCM p = plist; scm_is_pair(p) && scm_is_pair(SCM_CDR(p)); p = SCM_CDR(SCM_CDR(p))) {
+        if (tortoise.caught(p)) break;
+        if (!scm_is_eq(SCM_CAR(p), keys->key[kId])) continue;
+        const SCM id = SCM_CAR(SCM_CDR(p));
+        return scm_is_symbol(id) || scm_is_string(id) || scm_is_number(id) ? id : SCM_BOOL_F;
+    }
+    return SCM_BOOL_F;
+}
+
+// A list's caller needs to know which entity was refused: the failure's
+// message gains "(entity i of the list[, #:id x])".
+void name_failed_entity(Failure& f, size_t index, SCM entity) {
+    const SCM id = printable_id(entity);
+    const char* suffix = scm_is_true(id) ? " (entity ~S of the list, #:id ~S)" : " (entity ~S of the list)";
+    const size_t used = std::strlen(f.message);
+    if (used + std::strlen(suffix) >= sizeof f.message) return;  // the message alone still says what
+    std::snprintf(f.message + used, sizeof f.message - used, "%s", suffix);
+    const SCM more = scm_is_true(id) ? scm_list_2(scm_from_size_t(index), id) : scm_list_1(scm_from_size_t(index));
+    f.irritants = scm_append(scm_list_2(f.irritants, more));
+}
+
 }  // namespace
 
 bool decode_batch(SCM entities, Batch& batch, Failure& f) {
@@ -62,7 +91,10 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         const bool hit = scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.cache, i), e);
         if (!hit) {
             Decoded d;
-            if (!decode_entity(e, d, f)) return false;
+            if (!decode_entity(e, d, f)) {
+                name_failed_entity(f, i, e);
+                return false;
+            }
             c = {d.body, watched_fields(d), scm_is_true(d.tween)};
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
             batch.settling.forget(i);  // the mark was another entity's

@@ -55,7 +55,7 @@ void inner_main(void*, int argc, char** argv) {
     SCM args = SCM_EOL;
     for (int i = argc - 1; i >= 1; --i) args = scm_cons(scm_from_locale_string(argv[i]), args);
     SCM main = scm_c_public_ref("downstroke host", "main");
-    SCM status = scm_call_1(main, args);
+    SCM status = scm_call_2(main, args, scm_from_utf8_string(DS_VERSION));
     std::exit(scm_is_signed_integer(status, 0, 255) ? scm_to_int(status) : 1);
 }
 

@@ -54,10 +54,10 @@
   (width game-width)
   (height game-height)
   (frame-delay game-frame-delay)
-  (scene game-scene game-scene-set!)
-  (update game-update game-update-set!)
+  (scene game-scene %game-scene-set!)
+  (update game-update %game-update-set!)
   (render game-render)
-  (engine-update game-engine-update game-engine-update-set!)
+  (engine-update game-engine-update %game-engine-update-set!)
   (collision-mode game-collision-mode game-collision-mode-set!)
   (substeps game-substeps %game-substeps-set!)
   (resting-contacts game-resting-contacts? game-resting-contacts-set!)
@@ -79,6 +79,53 @@ collision mode, substeps and resting contacts."
       (parameterize ((collision-mode (game-collision-mode game))
                      (resting-contacts? (game-resting-contacts? game)))
         (game-scene-set! game (step-scene scene dt #:substeps (game-substeps game)))))))
+
+;;; Refused where they are passed, not frames later inside the loop, where
+;;; the error would name struct-vtable or camera-follow!.
+(define (check-game who game)
+  (unless (game? game)
+    (scm-error 'wrong-type-arg who "game: expected a game (make-game), got ~S" (list game) #f)))
+
+(define (check-scene-or-false who scene)
+  (unless (or (not scene) (scene? scene))
+    (scm-error 'wrong-type-arg who "scene: expected a scene (make-scene) or #f, got ~S" (list scene) #f)))
+
+(define (check-procedure-or-false who what proc)
+  (unless (or (not proc) (procedure? proc))
+    (scm-error 'wrong-type-arg who "~A: expected a procedure or #f, got ~S" (list what proc) #f)))
+
+(define (input-script-entry? entry)
+  (and (pair? entry) (exact-integer? (car entry)) (>= (car entry) 0)
+       (list? (cdr entry)) (every symbol? (cdr entry))))
+
+(define (check-input-script who script)
+  ;; scripted-held walks it every frame: a circular script would hang the game.
+  (unless (list? script)
+    (scm-error 'wrong-type-arg who "input-script: expected a list of (frame . actions), got ~S"
+               (list script) #f))
+  (let ((bad (find (negate input-script-entry?) script)))
+    (when bad
+      (scm-error 'wrong-type-arg who
+                 "input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got ~S"
+                 (list bad) #f))))
+
+(define (game-scene-set! game scene)
+  "Make SCENE (a scene, or #f for none) GAME's scene from now on."
+  (check-game "game-scene-set!" game)
+  (check-scene-or-false "game-scene-set!" scene)
+  (%game-scene-set! game scene))
+
+(define (game-update-set! game update)
+  "Make UPDATE, (lambda (game dt) …) or #f, GAME's update from the next frame on."
+  (check-game "game-update-set!" game)
+  (check-procedure-or-false "game-update-set!" "update" update)
+  (%game-update-set! game update))
+
+(define (game-engine-update-set! game engine-update)
+  "Make ENGINE-UPDATE, (lambda (game dt) …) or #f, run first in GAME's frames."
+  (check-game "game-engine-update-set!" game)
+  (check-procedure-or-false "game-engine-update-set!" "engine-update" engine-update)
+  (%game-engine-update-set! game engine-update))
 
 (define (check-substeps who k)
   (unless (and (exact-integer? k) (<= 1 k %max-substeps))
@@ -117,10 +164,10 @@ default-input-map, which is used when it is #f."
   (unless (and (real? frame-delay) (> frame-delay 0) (not (inf? frame-delay)))
     (scm-error 'wrong-type-arg "make-game" "frame-delay: expected a finite number of ms > 0, got ~S"
                (list frame-delay) #f))
-  ;; scripted-held walks it every frame: a circular script would hang the game.
-  (unless (list? input-script)
-    (scm-error 'wrong-type-arg "make-game" "input-script: expected a list of (frame . actions), got ~S"
-               (list input-script) #f))
+  (check-input-script "make-game" input-script)
+  (check-scene-or-false "make-game" scene)
+  (for-each (lambda (what proc) (check-procedure-or-false "make-game" what proc))
+            '(update render engine-update) (list update render engine-update))
   (let ((display (and (renderer-available?) (%make-display width height))))
     (when display (%display-set-input-map! display (or input-map (default-input-map))))
     (let ((game (%make-game title width height frame-delay scene update render engine-update
@@ -222,6 +269,9 @@ frames to run, as in `downstroke demo/sandbox.scm 3600'."
 (define (add-frame-hook! proc)
   "Call PROC, a procedure of no arguments, at the start of every frame of
 every game run from now on, after the hooks added before it."
+  (unless (procedure? proc)
+    (scm-error 'wrong-type-arg "add-frame-hook!" "proc: expected a procedure of no arguments, got ~S"
+               (list proc) #f))
   (set! frame-hooks (append frame-hooks (list proc))))
 (define (remove-frame-hook! proc)
   "Stop calling PROC (the very procedure add-frame-hook! was given) each frame."
@@ -267,6 +317,7 @@ game-sounds) and, when a window is open and load-sound loaded it, heard."
   "Centre the scene's camera on its camera-target entity, keeping the view
 inside the level: never left of or above the origin, and — when the scene
 has a tilemap — never past the map's right or bottom edge."
+  (check-game "camera-follow!" game)
   (let* ((scene (game-scene game))
          (target (and scene (scene-camera-target scene)))
          (e (and target (entity-tagged (scene-entities scene) target))))
@@ -546,6 +597,7 @@ input-script:, nothing drawn, as deterministic as the physics); in a window
 with `downstroke --window' (real time, keyboard and controllers, sound;
 closing the window quits); or drawn off-screen into PNG files with
 `downstroke --capture DIR'."
+  (check-game "game-run!" game)
   (check-frames frames)
   (parameterize ((current-game game)
                  (current-display (game-display game)))

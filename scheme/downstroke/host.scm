@@ -6,29 +6,129 @@
   #:use-module (downstroke repl-server)
   #:use-module (downstroke render)
   #:use-module (ice-9 format)
+  #:use-module ((srfi srfi-1) #:select (any))
+  #:use-module ((system vm frame) #:select (frame-call-representation))
   #:export (main))
 
-(define (report-error key args)
-  (let ((port (current-error-port)))
-    (display-backtrace (make-stack #t 3) port)
-    (newline port)
-    (print-exception port #f key args)))
+;;; ---------------------------------------------------------------- script errors
+;;; An uncaught error reads as the user's: the message first, then the
+;;; frames of the user's own files; the engine's and Guile's frames only when
+;;; asked for (DOWNSTROKE_BACKTRACE=full).
 
-(define (run-script file args)
+(define (full-backtrace?)
+  (equal? (getenv "DOWNSTROKE_BACKTRACE") "full"))
+
+(define (frame-file-line frame)
+  ;; (file . line) of FRAME's source, 1-based line, or #f when it has none.
+  (let ((source (frame-source frame)))
+    (and source (cadr source) (cons (cadr source) (+ 1 (caddr source))))))
+
+(define (user-file? file dir)
+  (string-prefix? dir file))
+
+(define (stack-user-frames stack dir)
+  ;; (file line call) of STACK's frames in files under DIR, innermost first.
+  (let loop ((i 0) (acc '()))
+    (if (= i (stack-length stack))
+        (reverse acc)
+        (let* ((frame (stack-ref stack i))
+               (where (frame-file-line frame)))
+          (loop (+ i 1)
+                (if (and where (user-file? (car where) dir))
+                    (cons (list (car where) (cdr where) (frame-call-representation frame)) acc)
+                    acc))))))
+
+(define (report-error key args script)
+  (let ((port (current-error-port))
+        (stack (make-stack #t 3)))
+    (force-output (current-output-port))  ; the script's output came first
+    (print-exception port #f key args)
+    (if (full-backtrace?)
+        (display-backtrace stack port)
+        (begin
+          (for-each (lambda (f)
+                      (format port "  at ~a:~a~a~%" (car f) (cadr f)
+                              (call-text (caddr f))))
+                    (stack-user-frames stack (string-append (dirname script) "/")))
+          (display "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n" port)))))
+
+(define (call-text call)
+  ;; ": (proc arg …)" on one short line (an entity list can print as pages);
+  ;; "" for a script's top level, which has no name worth showing.
+  (if (eq? (car call) '_)
+      ""
+      (let ((text (call-with-output-string (lambda (p) (write call p)))))
+        (string-append ": " (if (> (string-length text) 72)
+                                (string-append (substring text 0 69) "...")
+                                text)))))
+
+;;; ---------------------------------------------------------------- compiling quietly
+;;; Guile announces every compilation of an edited file (";;; compiling …")
+;;; on the warning port; its warnings about the code itself stay useful.
+
+(define guile-compile-notes
+  '(";;; note: source file " ";;;       newer than compiled " ";;; compiling " ";;; compiled "
+    ";;; note: auto-compilation is enabled" ";;;       or pass the --no-auto-compile"))
+
+(define (compile-note? line)
+  (any (lambda (prefix) (string-prefix? prefix line)) guile-compile-notes))
+
+(define (compile-failure? line)
+  ;; The first line of a block Guile writes before it loads the file anyway.
+  (or (string-prefix? ";;; WARNING: compilation of " line)
+      (string-prefix? ";;; Stat of " line)))
+
+(define (filtering-warning-port out)
+  ;; A port passing each whole line to OUT unless it is a compile note, or
+  ;; the report of a failed compilation: the file then runs interpreted,
+  ;; which raises the same error, reported as any other.
+  (let ((pending "") (in-failure? #f))
+    (define (put-line! line)
+      (cond ((or (compile-note? line) (compile-failure? line))
+             (set! in-failure? (compile-failure? line)))
+            ((and in-failure? (string-prefix? ";;; " line)))
+            (else (set! in-failure? #f) (display line out))))
+    (define (put-string! text)
+      (let loop ((text (string-append pending text)))
+        (let ((nl (string-index text #\newline)))
+          (if nl
+              (begin (put-line! (substring text 0 (+ nl 1)))
+                     (loop (substring text (+ nl 1))))
+              (set! pending text)))))
+    (make-soft-port
+     (vector (lambda (c) (put-string! (string c)))
+             put-string!
+             (lambda () (force-output out))
+             #f
+             (lambda () (unless (string-null? pending) (put-string! "\n"))))
+     "w")))
+
+(define (load-script file compile?)
+  ;; COMPILE?: auto-compiled into the cache, quietly; else interpreted.
+  (if compile?
+      (let ((warnings (filtering-warning-port (current-error-port))))
+        (parameterize ((current-warning-port warnings))
+          (load file))
+        (close-port warnings))
+      (primitive-load file)))
+
+(define (run-script file args compile?)
   (set-program-arguments (cons file args))
-  (catch #t
-    (lambda ()
-      (save-module-excursion
-       (lambda ()
-         (set-current-module (resolve-module '(guile-user)))
-         (module-use! (current-module) (resolve-interface '(downstroke)))
-         (load (canonicalize-path file))))
-      0)
-    (lambda (key . args)
-      ;; (exit n) inside the script is a quit, not an error.
-      (if (eq? key 'quit) (quit-status args) 1))
-    (lambda (key . args)
-      (unless (eq? key 'quit) (report-error key args)))))
+  ;; A missing file is left to load, inside the catch, to refuse.
+  (let ((path (or (false-if-exception (canonicalize-path file)) file)))
+    (catch #t
+      (lambda ()
+        (save-module-excursion
+         (lambda ()
+           (set-current-module (resolve-module '(guile-user)))
+           (module-use! (current-module) (resolve-interface '(downstroke)))
+           (load-script path compile?)))
+        0)
+      (lambda (key . args)
+        ;; (exit n) inside the script is a quit, not an error.
+        (if (eq? key 'quit) (quit-status args) 1))
+      (lambda (key . args)
+        (unless (eq? key 'quit) (report-error key args path))))))
 
 (define (quit-status args)
   (cond ((null? args) 0)
@@ -112,7 +212,13 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --repl-port N       serve it on 127.0.0.1:N instead
   --repl-timeout S    interrupt a REPL evaluation that holds the game longer
                       than S seconds (default " (number->string default-repl-timeout) ")
+  --no-auto-compile   run FILE.scm interpreted, compiling nothing into the
+                      cache (by default an edited file is compiled, quietly)
+  --version           the version of downstroke
   --help              this text
+
+An uncaught error prints its message and the calls in FILE.scm's folder;
+DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
 "))
 
 (define (usage)
@@ -129,6 +235,8 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
     (cond ((null? args) (cons (reverse opts) '()))
           ((string=? (car args) "--window") (loop (cdr args) (acons 'window #t opts)))
           ((string=? (car args) "--help") (loop (cdr args) (acons 'help #t opts)))
+          ((string=? (car args) "--version") (loop (cdr args) (acons 'version #t opts)))
+          ((string=? (car args) "--no-auto-compile") (loop (cdr args) (acons 'no-auto-compile #t opts)))
           ((string=? (car args) "--debug") (loop (cdr args) (acons 'debug #t opts)))
           ((string=? (car args) "--scale")
            (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
@@ -172,14 +280,15 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
            #t)
           (else #t))))
 
-(define (main args)
-  "ARGS: the command line after the program's name (see usage-text).
-Returns the exit status."
+(define* (main args #:optional (version "unknown"))
+  "ARGS: the command line after the program's name (see usage-text);
+VERSION: the project's, for --version. Returns the exit status."
   ;; Scripts are written as the seed writes them: `title: \"x\"'.
   (read-set! keywords 'postfix)
   (let ((parsed (parse-options args)))
     (cond ((not parsed) (usage))
           ((assq-ref (car parsed) 'help) (display usage-text) 0)
+          ((assq-ref (car parsed) 'version) (format #t "downstroke ~a~%" version) 0)
           ((not (prepare-display! (car parsed))) 2)
           (else
            (let ((opts (car parsed)) (rest (cdr parsed)))
@@ -191,6 +300,7 @@ Returns the exit status."
                       (cond ((eq? socket 'refused) 2)
                             (else
                              (when socket (serve-repl! socket (repl-timeout opts)))
-                             (let ((status (run-script (car rest) (cdr rest))))
+                             (let ((status (run-script (car rest) (cdr rest)
+                                                       (not (assq-ref opts 'no-auto-compile)))))
                                (when socket (remove-unix-repl-socket! socket))
                                status)))))))))))

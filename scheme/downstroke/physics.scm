@@ -77,6 +77,8 @@ advance by a k-th, in flonums, and the motion converges to the continuous
 one as k grows. Entities with #:contacts? #t get a contact report
 (#:blocked, #:touching, #:standing-on) and the frame's pairs with them are
 kept in the scene (scene-contacts)."
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg "step-scene" "scene: expected a scene (make-scene), got ~S" (list scene) #f))
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
                                   substeps (resting-contacts?)))

@@ -60,6 +60,15 @@ made. update-scene keeps them."
     (scm-error 'wrong-type-arg "scene-contacts" "expected a scene, got ~S" (list scene) #f))
   (%scene-contacts scene))
 
+(define (check-scene who scene)
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg who "scene: expected a scene (make-scene), got ~S" (list scene) #f)))
+
+(define (checked-scene scene)
+  ;; For update-scene's defaults, which read SCENE before its body can check it.
+  (check-scene "update-scene" scene)
+  scene)
+
 (define (check-entities who entities)
   (unless (list? entities)
     (scm-error 'wrong-type-arg who "entities: expected a list, got ~S" (list entities) #f)))
@@ -79,10 +88,12 @@ made. update-scene keeps them."
   (check-scene-parts "make-scene" tilemap camera)
   (%make-scene entities tilemap camera camera-target))
 
-(define* (update-scene scene #:key (entities (scene-entities scene))
-                       (tilemap (scene-tilemap scene)) (camera (scene-camera scene))
-                       (camera-target (scene-camera-target scene)))
+(define* (update-scene scene #:key (entities (scene-entities (checked-scene scene)))
+                       (tilemap (scene-tilemap (checked-scene scene)))
+                       (camera (scene-camera (checked-scene scene)))
+                       (camera-target (scene-camera-target (checked-scene scene))))
   "A copy of SCENE with the given fields replaced."
+  (check-scene "update-scene" scene)
   (check-entities "update-scene" entities)
   (check-scene-parts "update-scene" tilemap camera)
   (%make-scene* entities tilemap camera camera-target (%scene-contacts scene)))

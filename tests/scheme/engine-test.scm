@@ -326,4 +326,67 @@
   (mentions? (error-text (lambda () (set-gc-space-divisor! "1"))) "exact integer" "\"1\""))
 (test-equal "a refused divisor leaves the setting alone" before-refusals (gc-space-divisor))
 
+;;; Errors at the engine's edge: wrong-type-arg, raised where the value was
+;;; passed, naming the procedure, the argument and the value.
+(define (refusal thunk)
+  (catch #t
+    (lambda () (thunk) #f)
+    (lambda (key . args)
+      (cons key (call-with-output-string (lambda (port) (print-exception port #f key args)))))))
+(define edge-game (make-game))
+(for-each
+ (lambda (case)
+   (test-equal (string-append "refused at the edge: " (car case))
+     (cons 'wrong-type-arg (cadr case)) (refusal (caddr case))))
+ (list
+  (list "step-scene on a number" "In procedure step-scene: scene: expected a scene (make-scene), got 5\n"
+        (lambda () (step-scene 5 16)))
+  (list "game-scene-set! to '()" "In procedure game-scene-set!: scene: expected a scene (make-scene) or #f, got ()\n"
+        (lambda () (game-scene-set! edge-game '())))
+  (list "game-scene-set! on a non-game" "In procedure game-scene-set!: game: expected a game (make-game), got 5\n"
+        (lambda () (game-scene-set! 5 (make-scene))))
+  (list "game-update-set! to a number" "In procedure game-update-set!: update: expected a procedure or #f, got 5\n"
+        (lambda () (game-update-set! edge-game 5)))
+  (list "game-engine-update-set! to a symbol"
+        "In procedure game-engine-update-set!: engine-update: expected a procedure or #f, got step\n"
+        (lambda () (game-engine-update-set! edge-game 'step)))
+  (list "an input-script entry that is not a pair"
+        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got 5\n"
+        (lambda () (make-game input-script: '(5))))
+  (list "an input-script entry whose frame is a symbol"
+        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got (x a)\n"
+        (lambda () (make-game input-script: '((0 . ()) (x . (a))))))
+  (list "an input-script entry whose actions are not a list"
+        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got (0 . a)\n"
+        (lambda () (make-game input-script: '((0 . a)))))
+  (list "make-game scene: a list" "In procedure make-game: scene: expected a scene (make-scene) or #f, got (1)\n"
+        (lambda () (make-game scene: '(1))))
+  (list "make-game update: a number" "In procedure make-game: update: expected a procedure or #f, got 1\n"
+        (lambda () (make-game update: 1)))
+  (list "make-game render: a string" "In procedure make-game: render: expected a procedure or #f, got \"r\"\n"
+        (lambda () (make-game render: "r")))
+  (list "add-frame-hook! on a number" "In procedure add-frame-hook!: proc: expected a procedure of no arguments, got 5\n"
+        (lambda () (add-frame-hook! 5)))
+  (list "make-scene tilemap: 5" "In procedure make-scene: tilemap: expected a tilemap or #f, got 5\n"
+        (lambda () (make-scene tilemap: 5)))
+  (list "update-scene on a number" "In procedure update-scene: scene: expected a scene (make-scene), got 5\n"
+        (lambda () (update-scene 5)))
+  (list "update-scene on a number, every field given"
+        "In procedure update-scene: scene: expected a scene (make-scene), got 5\n"
+        (lambda () (update-scene 5 entities: '() tilemap: #f camera: (make-camera) camera-target: #f)))
+  (list "camera-follow! on a symbol" "In procedure camera-follow!: game: expected a game (make-game), got game\n"
+        (lambda () (camera-follow! 'game)))
+  (list "game-run! on #f" "In procedure game-run!: game: expected a game (make-game), got #f\n"
+        (lambda () (game-run! #f #:frames 1)))
+  (list "an entity of step-scene's list, by index and #:id"
+        "In procedure step-scene: entity key #:x: expected a real number, got \"a\" (entity 1 of the list, #:id player)\n"
+        (lambda () (step-scene (make-scene entities: '((#:x 0) (#:id player #:x "a"))) 16)))
+  (list "… by index alone when it has no #:id"
+        "In procedure step-scene: malformed entity: key #:y has no value in (#:y) (entity 2 of the list)\n"
+        (lambda () (step-scene (make-scene entities: '((#:x 0) (#:x 1) (#:y))) 16)))
+  (list "… and when its #:id is no name to print"
+        "In procedure resolve-entity-collisions: entity key #:vx: expected a real number, got #t (entity 0 of the list)\n"
+        (lambda () (resolve-entity-collisions '((#:id (a b) #:vx #t)))))))
+(test-equal "a refused game-scene-set! leaves the scene alone" #f (game-scene edge-game))
+
 (test-end "engine")

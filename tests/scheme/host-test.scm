@@ -1,0 +1,95 @@
+;;; The `downstroke' executable itself: its options, its quiet compiling of
+;;; edited scripts, and how an uncaught error in a script reads.
+(use-modules (srfi srfi-64) (ice-9 textual-ports) (srfi srfi-1))
+
+(load "support.scm")
+
+(define host (readlink "/proc/self/exe"))
+(define dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-host-XXXXXX")))
+;; A cache of its own, so that the first run of every script here compiles.
+(define cache (string-append dir "/cache"))
+
+(define (quoted s) (string-append "'" s "'"))
+
+(define (run . argv)
+  ;; (exit-status stdout stderr) of the host run with ARGV.
+  (let ((out (string-append dir "/out")) (err (string-append dir "/err")))
+    (let ((status (system (string-append "XDG_CACHE_HOME=" (quoted cache) " "
+                                         (string-join (map quoted (cons host argv)) " ")
+                                         " >" (quoted out) " 2>" (quoted err)))))
+      (list (status:exit-val status)
+            (call-with-input-file out get-string-all)
+            (call-with-input-file err get-string-all)))))
+
+(define (write-script name text)
+  (let ((file (string-append dir "/" name)))
+    (call-with-output-file file (lambda (p) (display text p)))
+    file))
+
+;;; ---------------------------------------------------------------- options
+(test-begin "host")
+(define help (run "--help"))
+(test-equal "--help exits 0" 0 (first help))
+(test-equal "… printing nothing on stderr" "" (third help))
+(for-each
+ (lambda (option)
+   (test-assert (string-append "--help lists " option) (string-contains (second help) option)))
+ '("--window" "--scale" "--debug" "--capture" "--repl-server" "--repl-port" "--repl-timeout"
+   "--no-auto-compile" "--version" "--help" "DOWNSTROKE_BACKTRACE=full"))
+(test-equal "--version prints the project's version" '(0 "downstroke 0.1.0\n" "") (run "--version"))
+(test-equal "an unknown option is refused with the usage, on stderr" '(2 "")
+  (let ((r (run "--no-such-option"))) (list (first r) (second r))))
+
+;;; ---------------------------------------------------------------- compiling quietly
+(define hello (write-script "hello.scm" "(display \"hello\\n\")\n"))
+(test-equal "a script's first run prints only its own output" '(0 "hello\n" "") (run hello))
+(write-script "hello.scm" "(display \"edited\\n\")\n")
+(test-equal "… and so does its first run after an edit" '(0 "edited\n" "") (run hello))
+(test-equal "… and the run after that" '(0 "edited\n" "") (run hello))
+(test-equal "--no-auto-compile runs the script as it is" '(0 "edited\n" "") (run "--no-auto-compile" hello))
+(write-script "hello.scm" "(display \"interpreted\\n\")\n")
+(test-equal "… interpreted, not from the stale cache" '(0 "interpreted\n" "") (run "--no-auto-compile" hello))
+(define unbound (write-script "unbound.scm" "(define (f) (no-such-procedure 1))\n(display \"ran\\n\")\n"))
+(test-equal "a real compile warning about the script is kept, alone"
+  '(0 "ran\n" ";;; <unknown-location>: warning: possibly unbound variable `no-such-procedure'\n")
+  (run unbound))
+
+(define unbalanced (write-script "unbalanced.scm" "(display \"read\\n\")\n(define (f x) (+ x 1)\n"))
+(test-equal "a script that does not compile reports its error once, as the run raises it"
+  (list 1 "read\n" (string-append unbalanced ":3:1: unexpected end of input while searching for: )\n"
+                                 "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n"))
+  (run unbalanced))
+
+;;; ---------------------------------------------------------------- uncaught errors
+(define failing
+  (write-script "failing.scm"
+                "(display \"before\\n\")\n(define (go)\n  (let ((s (car 5)))\n    s))\n(go)\n(display \"after\\n\")\n"))
+(define failure (run failing))
+(define error-lines (string-split (third failure) #\newline))
+(test-equal "a script's uncaught error is a non-zero exit" 1 (first failure))
+(test-equal "… after the output it made" "before\n" (second failure))
+(test-equal "… the first line of stderr is the error"
+  "In procedure car: Wrong type argument in position 1 (expecting pair): 5" (first error-lines))
+(test-equal "… then the script's own calls, innermost first, then how to see everything"
+  (list (string-append "  at " failing ":3: (go)") (string-append "  at " failing ":5")
+        "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)" "")
+  (cdr error-lines))
+(test-assert "… with no boot-9 frame"
+  (not (string-contains (third failure) "boot-9")))
+(test-assert "DOWNSTROKE_BACKTRACE=full prints the whole backtrace after the error"
+  (let* ((full (begin (setenv "DOWNSTROKE_BACKTRACE" "full") (run failing)))
+         (text (third full)))
+    (unsetenv "DOWNSTROKE_BACKTRACE")
+    (and (string-prefix? "In procedure car:" text) (string-contains text "boot-9"))))
+(test-equal "an engine procedure's refusal names it, first"
+  "In procedure step-scene: scene: expected a scene (make-scene), got 5"
+  (car (string-split (third (run (write-script "engine-error.scm" "(step-scene 5 16)\n(newline)\n")))
+                     #\newline)))
+(test-equal "a missing script is an error naming it, status 1"
+  (list 1 "" (string-append "In procedure open-file: No such file or directory: \"" dir "/no-such.scm\"\n"
+                            "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n"))
+  (run (string-append dir "/no-such.scm")))
+(test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
+  (run (write-script "exit.scm" "(exit 3)\n")))
+
+(test-end "host")
