@@ -92,7 +92,7 @@
 (test-equal "signatures: a docstring's leading call, else the arguments"
   '("(tilemap-set-tile tm col row gid [layer])" "(entity-ref entity key [default])"
     "(make-scene [#:entities] [#:tilemap] [#:camera] [#:camera-target])"
-    "(game-scene-set! game value)" "(collision-mode)" "*gravity*"
+    "(game-scene-set! game scene)" "(collision-mode)" "*gravity*"
     "(scene-map-entities scene . steps)")
   (map (lambda (m+n) (export-signature (car m+n) (cdr m+n)))
        '(((downstroke tilemap) . tilemap-set-tile) ((downstroke entity) . entity-ref)
