@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -69,8 +70,10 @@ inline constexpr uint16_t kAllSkips[] = {
     ds::kSkipAcceleration, ds::kSkipGravity, ds::kSkipVelocityX,
     ds::kSkipVelocityY,    ds::kSkipTileX,   ds::kSkipTileY,
     ds::kSkipOnSolid,      ds::kSkipEntityCollisions, ds::kSkipTweens,
+    ds::kSkipCarry,
 };
-inline constexpr uint16_t kEverySkip = 0x1FF;
+static_assert(std::size(kAllSkips) == ds::kSkipCount, "a Skip bit is missing here");
+inline constexpr uint16_t kEverySkip = (1u << ds::kSkipCount) - 1;
 
 }  // namespace dst
 
