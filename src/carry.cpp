@@ -4,6 +4,7 @@
 
 #include "constants.hpp"
 #include "contacts.hpp"
+#include "detail/body_axis.hpp"
 #include "tiles.hpp"
 
 namespace ds {
@@ -20,29 +21,23 @@ Displacement displacement(const Body& now, const Body& then) { return {now.x - t
 // b moved by d along one axis as that axis's tile step would move it with
 // velocity d (its own velocity untouched); returns whether a solid cell
 // stopped it.
-bool carry_x(Body& b, Num d, const TileGrid* grid, CollisionMode mode) {
-    if (d.v == 0) return false;
-    Body moved = b;
-    moved.x = b.x + d;
-    moved.vx = d;
-    resolve_tile_collisions_x(moved, grid, mode);
-    b.x = moved.x;
-    return moved.vx.v == 0;
-}
+using AxisOf = BodyAxis (*)(Body&);
+using TileStep = bool (*)(Body&, const TileGrid*, CollisionMode, SubStep);
 
-bool carry_y(Body& b, Num d, const TileGrid* grid, CollisionMode mode) {
+bool carry_along(Body& b, Num d, AxisOf axis, TileStep resolve, const TileGrid* grid, CollisionMode mode) {
     if (d.v == 0) return false;
     Body moved = b;
-    moved.y = b.y + d;
-    moved.vy = d;
-    resolve_tile_collisions_y(moved, grid, mode);
-    b.y = moved.y;
-    return moved.vy.v == 0;
+    BodyAxis m = axis(moved);
+    m.pos = axis(b).pos + d;
+    m.vel = d;
+    resolve(moved, grid, mode, {});
+    axis(b).pos = m.pos;
+    return m.vel.v == 0;
 }
 
 void carry_one(Body& b, Displacement d, const TileGrid* grid, CollisionMode mode) {
-    carry_x(b, d.dx, grid, mode);
-    if (carry_y(b, d.dy, grid, mode) && d.dy.v < 0) b.crushed = true;
+    carry_along(b, d.dx, along_x, resolve_tile_collisions_x, grid, mode);
+    if (carry_along(b, d.dy, along_y, resolve_tile_collisions_y, grid, mode) && d.dy.v < 0) b.crushed = true;
 }
 
 // r stood on the carrier c: overlapping it horizontally, its feet within
