@@ -54,6 +54,17 @@ const TileInfo* Tileset::tile(uint32_t local_id) const {
     return it != tiles.end() && it->id == local_id ? &*it : nullptr;
 }
 
+bool Tileset::image_collection() const {
+    return image.empty() &&
+           std::any_of(tiles.begin(), tiles.end(), [](const TileInfo& t) { return !t.image.empty(); });
+}
+
+bool Tileset::has_tile(uint32_t local_id) const {
+    if (tile_count == 0) return true;  // the file does not say
+    if (image_collection()) return tile(local_id) != nullptr;
+    return local_id < static_cast<uint32_t>(tile_count);
+}
+
 bool Tileset::tile_solid(uint32_t local_id) const {
     const TileInfo* t = tile(local_id);
     if (!t) return false;
@@ -126,7 +137,7 @@ bool Tilemap::gid_known(uint32_t gid) const {
     gid &= kGidMask;
     if (gid == 0 || tilesets.empty()) return true;
     const Tileset* ts = tileset_for(gid);
-    return ts && (ts->tile_count == 0 || gid - ts->firstgid < static_cast<uint32_t>(ts->tile_count));
+    return ts && ts->has_tile(gid - ts->firstgid);
 }
 
 void Tilemap::set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid) {

@@ -22,18 +22,30 @@ constexpr uint32_t kFlipDiagonal = 0x20000000u;
 constexpr uint32_t kRotateHex120 = 0x10000000u;
 constexpr uint32_t kGidMask = 0x0FFFFFFFu;
 
-// A Tiled custom property, its value kept as written; type is Tiled's name
-// ("string", "int", "float", "bool", "color", "file", "object", "class").
+// A Tiled custom property. type is Tiled's name: "string", "int", "float",
+// "bool", "color", "file", "object", "class" or "list". A scalar keeps its
+// value as written (TMX's text, or the JSON value's text); a class keeps its
+// members and a list its items (whose names are empty) in `members`, in file
+// order. property_type is the custom type's name (propertytype=): a class's,
+// or an enum's for a string or int.
 struct Property {
     std::string name;
     std::string type = "string";
     std::string value;
+    std::string property_type;
+    std::vector<Property> members;
 };
 using Properties = std::vector<Property>;
 
 const Property* find_property(const Properties& props, std::string_view name);
 // "true"/"1" (any case) — Tiled writes bools as true/false.
 bool property_is_true(const Property& p);
+
+// One frame of a tile's animation: show local tile `tile_id` for `duration_ms`.
+struct AnimationFrame {
+    uint32_t tile_id = 0;
+    int duration_ms = 0;
+};
 
 struct TileInfo {  // a tileset's <tile> that carries something
     uint32_t id = 0;  // local id within its tileset
@@ -44,6 +56,7 @@ struct TileInfo {  // a tileset's <tile> that carries something
     // of its tileset); empty in a single-image tileset.
     std::string image;
     int image_width = 0, image_height = 0;
+    std::vector<AnimationFrame> animation;  // empty when the tile is still
 };
 
 struct Tileset {
@@ -60,6 +73,17 @@ struct Tileset {
     // never opens its images; a renderer does when it first draws a tile.
     std::string image_dir;
     std::vector<TileInfo> tiles;  // sorted by id
+    std::string type;  // class= of the tileset itself
+    Properties properties;  // the tileset's own
+    int tile_offset_x = 0, tile_offset_y = 0;  // <tileoffset>, px
+
+    // An image collection: no single image, each tile brings its own. Its
+    // tile ids may have gaps (Tiled keeps ids of deleted tiles unused).
+    bool image_collection() const;
+    // Whether local id names one of its tiles: any id when tile_count is
+    // unknown (0), else one of `tiles` in an image collection and an id
+    // below tile_count in an image atlas.
+    bool has_tile(uint32_t local_id) const;
 
     const TileInfo* tile(uint32_t local_id) const;
     // Solid by metadata: a true solid/collision/collides property, or collision shapes.
@@ -83,18 +107,45 @@ struct TileLayer {
     SharedCells<uint32_t> cells;
     Properties properties;
     LayerSolidity solidity = LayerSolidity::FromTiles;
+    // As drawn: its own and every enclosing group's, multiplied (visible,
+    // opacity) or summed (offsets, px).
     bool visible = true;
     double opacity = 1.0;
+    double offset_x = 0, offset_y = 0;
 
     uint32_t raw_gid(int64_t col, int64_t row) const;  // 0 outside the layer
+};
+
+// What an object is, as Tiled draws it. A tile object is one with a gid.
+enum class ObjectShape : uint8_t { Rectangle, Ellipse, Point, Polygon, Polyline, Text, Tile };
+
+struct ObjectPoint {
+    double x = 0, y = 0;  // px, relative to the object's x, y
+};
+
+// A text object's text and the attributes Tiled writes for it.
+struct ObjectText {
+    std::string text;
+    std::string font_family = "sans-serif";
+    int pixel_size = 16;
+    bool wrap = false, bold = false, italic = false, underline = false, strikeout = false;
+    bool kerning = true;
+    std::string color = "#000000";  // as written: #RRGGBB or #AARRGGBB
+    std::string halign = "left", valign = "top";
 };
 
 struct MapObject {
     int id = 0;
     std::string name, type;  // type= or class=
-    double x = 0, y = 0, width = 0, height = 0, rotation = 0;
-    uint32_t gid = 0;  // raw, for tile objects
+    double x = 0, y = 0, width = 0, height = 0, rotation = 0;  // rotation in degrees, clockwise
+    uint32_t gid = 0;  // raw (flip bits kept), for tile objects
     bool visible = true;
+    ObjectShape shape = ObjectShape::Rectangle;
+    std::vector<ObjectPoint> points;  // a polygon's or polyline's
+    ObjectText text;                  // a text object's
+    // The template it was made from, resolved against the map's folder (empty
+    // when none); its fields are already merged in (template, then instance).
+    std::string template_path;
     Properties properties;
 };
 
@@ -102,6 +153,30 @@ struct ObjectLayer {
     std::string name;
     Properties properties;
     std::vector<MapObject> objects;
+};
+
+// Every layer as the file nests it, for renderers and level scripts; physics
+// reads `layers`. A tile or object layer points into Tilemap::layers or
+// Tilemap::object_layers by `index`; an image layer holds its picture; a
+// group holds its children. visible, opacity and offsets are the layer's own
+// (TileLayer holds them combined with its groups').
+enum class LayerKind : uint8_t { Tile, Object, Image, Group };
+
+struct LayerInfo {
+    LayerKind kind = LayerKind::Tile;
+    int id = 0;
+    std::string name, type;  // type= is class=
+    bool visible = true;
+    double opacity = 1.0;
+    double offset_x = 0, offset_y = 0;    // px
+    double parallax_x = 1, parallax_y = 1;
+    std::string tint_color;  // as written, empty when none
+    Properties properties;
+    size_t index = 0;  // Tile: into layers; Object: into object_layers
+    std::string image;  // Image: as written, relative to the map's folder
+    int image_width = 0, image_height = 0;
+    bool repeat_x = false, repeat_y = false;
+    std::vector<LayerInfo> children;  // Group
 };
 
 struct Tilemap {
@@ -113,6 +188,13 @@ struct Tilemap {
     std::vector<Tileset> tilesets;  // sorted by firstgid
     std::vector<TileLayer> layers;  // in file order, groups flattened
     std::vector<ObjectLayer> object_layers;
+    std::vector<LayerInfo> layer_tree;  // every layer, groups nested
+    std::string type;  // class= of the map
+    std::string background_color;  // as written, empty when none
+    // Things the map does that Tiled allows but the loader had to interpret
+    // (a gid beyond every tileset, loaded as an empty, non-solid cell).
+    // Each names the file, the layer and the cell.
+    std::vector<std::string> warnings;
     std::vector<uint32_t> extra_solid_gids;  // solid-gids: from the script
     std::vector<uint32_t> extra_one_way_gids;  // one-way-gids: from the script
 
@@ -161,6 +243,18 @@ private:
     int line_;
 };
 
+// How load_tilemap reads a map beyond its limits.
+struct LoadOptions {
+    std::vector<uint32_t> solid_gids;  // more solid gids (extra_solid_gids)
+    MapLimits limits;
+    // A gid beyond every tileset is an error (MapError) instead of a
+    // warning and an empty cell.
+    bool strict = false;
+    // A Tiled project file (.tiled-project), for the members a class
+    // property leaves at its defaults; empty reads none and leaves them out.
+    std::string project_path;
+};
+
 // Reads a .tmx file and the external .tsx tilesets it names (paths relative
 // to the map). Only regular files are read (a tileset naming /dev/zero or a
 // FIFO is an error), the map and its tilesets at most limits.max_bytes
@@ -169,6 +263,10 @@ private:
 // Throws MapError.
 Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {},
                      const MapLimits& limits = {});
+
+// The same, with LoadOptions; the map may be TMX (XML) or JSON (.tmj),
+// told apart by its content, and so may each tileset and template it names.
+Tilemap load_tilemap(const std::string& path, const LoadOptions& options);
 
 // The same for a map already in memory (`text`, counted against max_bytes):
 // `path` names it in messages and is where its .tsx paths are relative to.

@@ -176,7 +176,7 @@ Properties read_properties(const XMLElement* owner) {
         // Multi-line strings are written as the element's text, not value=.
         const char* value = p->Attribute("value");
         if (!value) value = p->GetText();
-        out.push_back({str_attr(p, "name"), str_attr(p, "type", "string"), value ? value : ""});
+        out.push_back({str_attr(p, "name"), str_attr(p, "type", "string"), value ? value : "", "", {}});
     });
     return out;
 }
@@ -394,9 +394,7 @@ void check_gids(const XmlFile& f, const XMLElement* el, const Tilemap& map,
         const uint32_t gid = gids[i] & kGidMask;
         if (gid == 0) continue;
         const Tileset* ts = map.tileset_for(gid);
-        if (ts &&
-            (ts->tile_count == 0 || gid - ts->firstgid < static_cast<uint32_t>(ts->tile_count)))
-            continue;
+        if (ts && ts->has_tile(gid - ts->firstgid)) continue;
         const int64_t col = col0 + static_cast<int64_t>(i % w),
                       row = row0 + static_cast<int64_t>(i / w);
         std::string raw;
@@ -696,6 +694,10 @@ Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids,
     const auto text = read_counted(state, path, error);
     if (!text) throw MapError(path, 0, "cannot open map: " + error);
     return parse_map(*text, path, std::move(solid_gids), state);
+}
+
+Tilemap load_tilemap(const std::string& path, const LoadOptions& options) {
+    return load_tilemap(path, options.solid_gids, options.limits);
 }
 
 Tilemap parse_tilemap(std::string_view text, const std::string& path,

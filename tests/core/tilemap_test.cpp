@@ -373,13 +373,13 @@ TEST_CASE("object layers: objects, type or class, typed properties") {
 }
 
 TEST_CASE("property helpers") {
-    const Properties props = {{"solid", "bool", "true"}, {"name", "string", "x"}};
+    const Properties props = {{"solid", "bool", "true", "", {}}, {"name", "string", "x", "", {}}};
     REQUIRE(find_property(props, "solid") != nullptr);
     CHECK(find_property(props, "solid")->value == "true");
     CHECK(find_property(props, "missing") == nullptr);
-    for (const char* v : {"true", "TRUE", "True", "1"}) CHECK(property_is_true({"p", "bool", v}));
+    for (const char* v : {"true", "TRUE", "True", "1"}) CHECK(property_is_true({"p", "bool", v, "", {}}));
     for (const char* v : {"false", "0", "yes", "", "true "})
-        CHECK_FALSE(property_is_true({"p", "bool", v}));
+        CHECK_FALSE(property_is_true({"p", "bool", v, "", {}}));
 }
 
 TEST_CASE("make_tilemap: solid exactly where solid_gids lists the gid") {
