@@ -22,6 +22,12 @@ constexpr Rgba kPlainColor{170, 170, 170, 255};     // not solid: moves through 
 constexpr Rgba kRestingColor{250, 210, 70, 255};    // on the ground and not moving
 constexpr uint8_t kBoxFillAlpha = 64;               // the fill behind a box's outline
 
+// A cell whose gid no tileset holds: magenta, the colour no tileset uses
+// and every artist reads as "texture missing"; filled faintly and outlined
+// so the tiles behind it still show.
+constexpr Rgba kMissingTileColor{255, 0, 255, 255};
+constexpr uint8_t kMissingTileFillAlpha = 96;
+
 // Overlay marks.
 constexpr Rgba kVelocityColor{255, 240, 120, 255};
 constexpr Rgba kGroundMarkColor{255, 140, 40, 255};

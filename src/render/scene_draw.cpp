@@ -166,28 +166,59 @@ CellWindow visible_cells(const TileLayer& layer, int tile_w, int tile_h, int64_t
     return w;
 }
 
-size_t draw_map(Canvas& c, TileArt& art, const Tilemap& map, int64_t cx, int64_t cy) {
-    const auto [over_w, over_h] = overhang(map);
+namespace {
+
+// A layer offset in whole px, floored as the camera is; bounded to the
+// range where the core's coordinates are exact, so no cast overflows.
+int64_t offset_px(double offset) {
+    constexpr double kExact = 9007199254740992.0;  // 2^53
+    return int64_t(std::floor(std::clamp(offset, -kExact, kExact)));
+}
+
+// A cell whose gid no tileset holds (Tiled loads such maps and shows the
+// tile as missing): a marker the size of the cell, so the hole is seen.
+void draw_missing(Canvas& c, int64_t x, int64_t y, int w, int h, uint8_t alpha) {
+    Rgba fill = kMissingTileColor;
+    fill.a = uint8_t(alpha * kMissingTileFillAlpha / 255);
+    c.fill_rect(clamp_int(x), clamp_int(y), w, h, fill);
+    Rgba edge = kMissingTileColor;
+    edge.a = alpha;
+    c.outline_rect(clamp_int(x), clamp_int(y), w, h, edge);
+}
+
+size_t draw_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLayer& layer, int64_t cx,
+                  int64_t cy, std::pair<int, int> over) {
+    const uint8_t alpha = opacity_alpha(layer.opacity);
+    // A layer's offset moves it as a camera moving the other way would.
+    const int64_t lx = cx - offset_px(layer.offset_x), ly = cy - offset_px(layer.offset_y);
+    const CellWindow w = visible_cells(layer, map.tile_width, map.tile_height, lx, ly, c.width(),
+                                       c.height(), over.first, over.second);
     size_t drawn = 0;
-    for (const TileLayer& layer : map.layers) {
-        if (!layer.visible || layer.opacity <= 0) continue;
-        const uint8_t alpha = opacity_alpha(layer.opacity);
-        const CellWindow w = visible_cells(layer, map.tile_width, map.tile_height, cx, cy, c.width(),
-                                           c.height(), over_w, over_h);
-        for (int64_t row = w.row0; row < w.row1; ++row) {
-            const size_t first = static_cast<size_t>((row - layer.origin_row) * layer.width - layer.origin_col);
-            for (int64_t col = w.col0; col < w.col1; ++col) {
-                const uint32_t gid = layer.cells[first + static_cast<size_t>(col)];
-                if (!gid) continue;
-                SDL_Surface* pic = art.tile(gid);
-                if (!pic) continue;
-                const int64_t x = col * map.tile_width - cx;
-                const int64_t y = (row + 1) * map.tile_height - pic->h - cy;
-                c.blit(pic, int(x), int(y), alpha);
-                ++drawn;
+    for (int64_t row = w.row0; row < w.row1; ++row) {
+        const size_t first = static_cast<size_t>((row - layer.origin_row) * layer.width - layer.origin_col);
+        for (int64_t col = w.col0; col < w.col1; ++col) {
+            const uint32_t gid = layer.cells[first + static_cast<size_t>(col)];
+            if (!gid) continue;
+            const int64_t x = col * map.tile_width - lx;
+            SDL_Surface* pic = art.tile(gid);
+            if (!pic) {
+                if (!map.gid_known(gid)) draw_missing(c, x, row * map.tile_height - ly, map.tile_width, map.tile_height, alpha);
+                continue;
             }
+            c.blit(pic, int(x), int((row + 1) * map.tile_height - pic->h - ly), alpha);
+            ++drawn;
         }
     }
+    return drawn;
+}
+
+}  // namespace
+
+size_t draw_map(Canvas& c, TileArt& art, const Tilemap& map, int64_t cx, int64_t cy) {
+    const std::pair<int, int> over = overhang(map);
+    size_t drawn = 0;
+    for (const TileLayer& layer : map.layers)
+        if (layer.visible && layer.opacity > 0) drawn += draw_layer(c, art, map, layer, cx, cy, over);
     return drawn;
 }
 

@@ -164,6 +164,40 @@ TEST_CASE("the camera shifts the map by its floored position") {
     CHECK(c.pixel(0, 0) == sheet_color(0, 3, 2));
 }
 
+TEST_CASE("a gid no tileset holds is drawn as a missing tile: a faint magenta cell, outlined") {
+    Tilemap m = map_with(2, 1, {1, 9});  // the sheet holds gids 1-4
+    Canvas c(8, 4);
+    TileArt art;
+    art.bind(&m);
+    c.clear(kBackground);
+    CHECK(draw_map(c, art, m, 0, 0) == 1);  // the missing cell is marked, not counted as drawn
+    check_tile_at(c, 0, 0, 0, 0);
+    const Rgba magenta{255, 0, 255, 255};
+    for (int y = 0; y < kTile; ++y)
+        for (int x = 0; x < kTile; ++x) {
+            const bool edge = x == 0 || y == 0 || x == kTile - 1 || y == kTile - 1;
+            CAPTURE(x);
+            CAPTURE(y);
+            CHECK(c.pixel(4 + x, y) == (edge ? magenta : blended(magenta, kBackground, 96)));
+        }
+}
+
+TEST_CASE("a layer's offset moves its tiles by whole pixels, floored") {
+    Tilemap m = map_with(1, 1, {2});
+    m.layers[0].offset_x = 2.5;  // floors to 2
+    m.layers[0].offset_y = -1;
+    Canvas c(8, 8);
+    TileArt art;
+    art.bind(&m);
+    c.clear(kBackground);
+    CHECK(draw_map(c, art, m, 0, 0) == 1);
+    // Row 0 of the tile is above the canvas; rows 1-3 land on 0-2.
+    for (int y = 1; y < kTile; ++y)
+        for (int x = 0; x < kTile; ++x) CHECK(c.pixel(2 + x, y - 1) == sheet_color(1, x, y));
+    CHECK(c.pixel(1, 0) == kBackground);
+    CHECK(c.pixel(2, 3) == kBackground);
+}
+
 TEST_CASE("only the cells in view are visited, however large the layer") {
     TileLayer big;
     big.width = big.height = 100000;  // no cells needed: the window is pure arithmetic
