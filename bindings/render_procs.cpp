@@ -224,7 +224,8 @@ bool trails_of(SCM current, const std::vector<EntityView>& now, SCM past_lists, 
     return true;
 }
 
-SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history) {
+SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history,
+                 SCM time_ms) {
     Failure f;
     Display* d = display_of(display, "game-draw", f);
     SceneView view;
@@ -232,6 +233,7 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
         if (is_tilemap(tilemap)) view.map = &tilemap_handle(tilemap).map;
         else fail_arg(f, "tilemap", tilemap, "a tilemap or #f");
     }
+    if (d && !f && !SCM_UNBNDP(time_ms)) from_scm(time_ms, view.time_ms, "time-ms", f);
     if (d && !f && from_scm(cam_x, view.camera_x, "camera x", f) && from_scm(cam_y, view.camera_y, "camera y", f))
         guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too
             if (!entity_views(entities, d->entities, f)) return;
@@ -507,8 +509,9 @@ void register_render_procedures() {
     define_procedure<3, 0, 0, open_window>("%display-open-window!",
         "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
     define_procedure<1, 0, 0, close_window>("%display-close-window!", "(display): closes its window.");
-    define_procedure<7, 0, 0, display_draw>("%display-draw!",
-        "(display tilemap camera-x camera-y entities debug? history): draws a frame (and shows it in the window).");
+    define_procedure<7, 1, 0, display_draw>("%display-draw!",
+        "(display tilemap camera-x camera-y entities debug? history [time-ms]): draws a frame (and shows it "
+        "in the window); time-ms, the game's clock, picks each animated tile's frame.");
     define_procedure<2, 0, 0, display_save_png>("%display-save-png",
         "(display file): writes the last frame drawn as a PNG.");
     define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",

@@ -416,7 +416,9 @@ window."
                     (if scene (camera-y (scene-camera scene)) 0)
                     (if scene (scene-entities scene) '())
                     (game-debug-draw? game)
-                    (trail-scenes game))))
+                    (trail-scenes game)
+                    ;; The game's clock, for animated tiles.
+                    (* (game-frame game) (game-frame-delay game)))))
 
 (define (game-capture game file)
   "Draw GAME's current frame — its map, entities, what its render: procedure

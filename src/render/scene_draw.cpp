@@ -68,7 +68,7 @@ void draw_entities(Canvas& c, TileArt& art, const SceneView& v, int64_t cx, int6
     for (const EntityView& e : v.entities) {
         const Box b = screen_box(e, cx, cy);
         if (off_canvas(c, b, 256)) continue;
-        SDL_Surface* pic = e.sprite ? art.tile(e.sprite ^ (e.flip_x ? kFlipHorizontal : 0)) : nullptr;
+        SDL_Surface* pic = e.sprite ? art.tile(e.sprite ^ (e.flip_x ? kFlipHorizontal : 0), v.time_ms) : nullptr;
         if (pic) {
             c.blit(pic, clamp_int(b.left + (b.w - pic->w) / 2), clamp_int(b.top + b.h - pic->h));
             ++n.sprites;
@@ -187,7 +187,7 @@ void draw_missing(Canvas& c, int64_t x, int64_t y, int w, int h, uint8_t alpha) 
 }
 
 size_t draw_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLayer& layer, int64_t cx,
-                  int64_t cy, std::pair<int, int> over) {
+                  int64_t cy, std::pair<int, int> over, double time_ms) {
     const uint8_t alpha = opacity_alpha(layer.opacity);
     // A layer's offset moves it as a camera moving the other way would.
     const int64_t lx = cx - offset_px(layer.offset_x), ly = cy - offset_px(layer.offset_y);
@@ -200,7 +200,7 @@ size_t draw_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLayer& 
             const uint32_t gid = layer.cells[first + static_cast<size_t>(col)];
             if (!gid) continue;
             const int64_t x = col * map.tile_width - lx;
-            SDL_Surface* pic = art.tile(gid);
+            SDL_Surface* pic = art.tile(gid, time_ms);
             if (!pic) {
                 if (!map.gid_known(gid)) draw_missing(c, x, row * map.tile_height - ly, map.tile_width, map.tile_height, alpha);
                 continue;
@@ -214,11 +214,11 @@ size_t draw_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLayer& 
 
 }  // namespace
 
-size_t draw_map(Canvas& c, TileArt& art, const Tilemap& map, int64_t cx, int64_t cy) {
+size_t draw_map(Canvas& c, TileArt& art, const Tilemap& map, int64_t cx, int64_t cy, double time_ms) {
     const std::pair<int, int> over = overhang(map);
     size_t drawn = 0;
     for (const TileLayer& layer : map.layers)
-        if (layer.visible && layer.opacity > 0) drawn += draw_layer(c, art, map, layer, cx, cy, over);
+        if (layer.visible && layer.opacity > 0) drawn += draw_layer(c, art, map, layer, cx, cy, over, time_ms);
     return drawn;
 }
 
@@ -227,7 +227,7 @@ DrawCounts draw_scene(Canvas& c, TileArt& art, const SceneView& v) {
     const int64_t cx = pixel_of(v.camera_x), cy = pixel_of(v.camera_y);
     art.bind(v.map);
     c.clear(kBackground);
-    if (v.map) n.tiles = draw_map(c, art, *v.map, cx, cy);
+    if (v.map) n.tiles = draw_map(c, art, *v.map, cx, cy, v.time_ms);
     draw_entities(c, art, v, cx, cy, n);
     if (v.commands)
         for (const DrawCommand& d : v.commands->commands) draw_command(c, art, d, cx, cy);

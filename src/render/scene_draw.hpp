@@ -15,6 +15,8 @@ struct DrawCounts {
 DrawCounts draw_scene(Canvas& canvas, TileArt& art, const SceneView& view);
 
 // The map's tile layers alone (part of draw_scene; exposed for tests and the bench).
-size_t draw_map(Canvas& canvas, TileArt& art, const Tilemap& map, int64_t cam_x, int64_t cam_y);
+// time_ms is the game's clock, for animated tiles (SceneView::time_ms).
+size_t draw_map(Canvas& canvas, TileArt& art, const Tilemap& map, int64_t cam_x, int64_t cam_y,
+                double time_ms = 0);
 
 }  // namespace ds::render

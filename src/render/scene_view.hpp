@@ -32,6 +32,9 @@ struct SceneView {
     // Indices into entities of the pairs pushed apart in the last frame.
     std::span<const std::pair<uint32_t, uint32_t>> pushed_pairs;
     std::span<const Trail> trails;
+    // The game's clock in ms (frame number × frame delay): which frame of
+    // each animated tile shows.
+    double time_ms = 0;
 };
 
 // The cells of a layer that can show in a view: columns [col0, col1) and

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "render_error.hpp"
+#include "tile_animation.hpp"
 
 namespace ds::render {
 
@@ -106,6 +107,7 @@ SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) 
 void TileArt::bind(const Tilemap* map) {
     map_ = map;
     bound_.clear();
+    animated_.clear();
     if (!map) return;
     for (const Tileset& ts : map->tilesets) {
         const std::string key = ts.image_dir + '\x1f' + ts.image + '\x1f' + ts.name + '\x1f' +
@@ -114,16 +116,22 @@ void TileArt::bind(const Tilemap* map) {
                                 std::to_string(ts.margin) + ',' + std::to_string(ts.spacing) + ',' +
                                 std::to_string(ts.columns);
         bound_.push_back(&sheets_[key]);
+        animated_.push_back(has_animation(ts));
     }
 }
 
-SDL_Surface* TileArt::tile(uint32_t raw_gid) {
+SDL_Surface* TileArt::tile(uint32_t raw_gid, double time_ms) {
     const uint32_t gid = raw_gid & kGidMask;
     if (gid == 0 || !map_) return nullptr;
     const Tileset* ts = map_->tileset_for(gid);
     if (!ts) return nullptr;
-    Sheet& sheet = *bound_[size_t(ts - map_->tilesets.data())];
-    const uint32_t local = gid - ts->firstgid, flips = raw_gid & kFlipBits;
+    const size_t which = size_t(ts - map_->tilesets.data());
+    Sheet& sheet = *bound_[which];
+    uint32_t local = gid - ts->firstgid;
+    if (animated_[which])
+        if (const TileInfo* info = ts->tile(local); info && !info->animation.empty())
+            local = animation_frame(info->animation, time_ms, local);
+    const uint32_t flips = raw_gid & kFlipBits;
     const uint64_t k = uint64_t(local) << 3 | flips >> 29;
     if (auto it = sheet.find(k); it != sheet.end()) return it->second;
     SDL_Surface* s = cut(*ts, local, flips);

@@ -29,9 +29,10 @@ public:
     // The picture for a raw gid of the bound map (flip bits applied:
     // diagonal first, then horizontal, then vertical, as Tiled does), or
     // nullptr for gid 0, no bound map, a gid no tileset holds, or a tile
-    // outside its image. Throws RenderError naming the image file when it
+    // outside its image. An animated tile shows its frame at `time_ms` of
+    // the game's clock. Throws RenderError naming the image file when it
     // cannot be read.
-    SDL_Surface* tile(uint32_t raw_gid);
+    SDL_Surface* tile(uint32_t raw_gid, double time_ms = 0);
 
     // How many images have been read (each file once).
     size_t images_loaded() const { return images_.size(); }
@@ -47,6 +48,7 @@ private:
     std::unordered_map<std::string, Sheet> sheets_;
     const Tilemap* map_ = nullptr;
     std::vector<Sheet*> bound_;  // per tileset of map_
+    std::vector<bool> animated_;  // per tileset of map_: has_animation
 };
 
 // The image path of a tileset (or of one of its collection tiles) as the

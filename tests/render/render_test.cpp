@@ -198,6 +198,30 @@ TEST_CASE("a layer's offset moves its tiles by whole pixels, floored") {
     CHECK(c.pixel(2, 3) == kBackground);
 }
 
+TEST_CASE("an animated tile shows the frame the game's clock is in, and starts over") {
+    Tilemap m = map_with(2, 1, {1, 2 | kFlipHorizontal});
+    TileInfo anim;  // local tile 0 plays 1 (100 ms), 3 (50 ms); tile 1 plays 2 then 0
+    anim.id = 0;
+    anim.animation = {{1, 100}, {3, 50}};
+    TileInfo flipped;
+    flipped.id = 1;
+    flipped.animation = {{2, 10}, {0, 0}, {0, 10}};  // a zero-length frame never shows
+    m.tilesets[0].tiles = {anim, flipped};
+    const struct {
+        double ms;
+        int first, second;
+    } moments[] = {{0, 1, 2}, {99, 1, 0}, {100, 3, 2}, {149, 3, 2}, {150, 1, 0}, {1234, 1, 0}};
+    for (const auto& at : moments) {
+        Canvas c(8, 4);
+        TileArt art;
+        art.bind(&m);
+        CAPTURE(at.ms);
+        CHECK(draw_map(c, art, m, 0, 0, at.ms) == 2);
+        check_tile_at(c, 0, 0, at.first, 0);
+        check_tile_at(c, 4, 0, at.second, kFlipHorizontal);  // the cell's flips turn every frame
+    }
+}
+
 TEST_CASE("only the cells in view are visited, however large the layer") {
     TileLayer big;
     big.width = big.height = 100000;  // no cells needed: the window is pure arithmetic
