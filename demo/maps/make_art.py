@@ -433,6 +433,29 @@ GOAL = [  # a flag on a pole (the goal object is 16x32: it stands on its bottom)
     ".kkkkkkk........",
 ]
 
+GOAL_WAVE = [  # the goal's second frame: the cloth rippled the other way
+    "...kk...........",
+    "..kZYk..........",
+    "..kYdk..........",
+    "...k4kkkk.......",
+    "...k4kRRRkkkkk..",
+    "...k4kpRRRRRRRkk",
+    "...k4kppRRRRRRRk",
+    "...k4kpRRRRRRRRk",
+    "...k4kRRRRRRRRk.",
+    "...k4krRRRRRrrk.",
+    "...k4krrkkkkkk..",
+    "...k4kkk........",
+    "...k3k..........",
+    "..kk3kk.........",
+    ".k33332k........",
+    ".kkkkkkk........",
+]
+
+# Tiled tile animations in sprites.tsx: (sprite, [(frame sprite, ms), ...]).
+# The renderer plays them by the game's clock wherever the sprite is drawn.
+ANIMATIONS = [("goal", [("goal", 300), ("goal-wave", 300)])]
+
 MOVING_PLATFORM = [  # a 16x8 piece of a lift or raft: rows 8-15
     "................",
     "................",
@@ -526,6 +549,7 @@ SPRITES = [
     ("ball", BALL),
     ("spikes", SPIKES),
     ("explosion", EXPLOSION),
+    ("goal-wave", GOAL_WAVE),  # last, so no earlier sprite's id moves
 ]
 
 
@@ -579,7 +603,17 @@ def sprites_tsx():
         f'tileheight="{TILE}" tilecount="{len(SPRITES)}" columns="{SHEET_COLUMNS}">',
         f' <image source="sprites.png" width="{SHEET_COLUMNS * TILE}" height="{rows * TILE}"/>',
     ]
-    lines += [f' <tile id="{i}" type="{kind}"/>' for i, (kind, _) in enumerate(SPRITES)]
+    ids = {kind: i for i, (kind, _) in enumerate(SPRITES)}
+    plays = dict(ANIMATIONS)
+    for i, (kind, _) in enumerate(SPRITES):
+        if kind not in plays:
+            lines.append(f' <tile id="{i}" type="{kind}"/>')
+            continue
+        lines.append(f' <tile id="{i}" type="{kind}">')
+        lines.append('  <animation>')
+        lines += [f'   <frame tileid="{ids[f]}" duration="{ms}"/>' for f, ms in plays[kind]]
+        lines.append('  </animation>')
+        lines.append(' </tile>')
     lines.append("</tileset>")
     return "\n".join(lines) + "\n"
 

@@ -1,6 +1,6 @@
 <?xml version="1.0" encoding="UTF-8"?>
-<tileset version="1.10" tiledversion="1.10.2" name="sprites" tilewidth="16" tileheight="16" tilecount="16" columns="8">
- <image source="sprites.png" width="128" height="32"/>
+<tileset version="1.10" tiledversion="1.10.2" name="sprites" tilewidth="16" tileheight="16" tilecount="17" columns="8">
+ <image source="sprites.png" width="128" height="48"/>
  <tile id="0" type="player"/>
  <tile id="1" type="player-run"/>
  <tile id="2" type="player-jump"/>
@@ -12,9 +12,15 @@
  <tile id="8" type="bullet"/>
  <tile id="9" type="box"/>
  <tile id="10" type="coin"/>
- <tile id="11" type="goal"/>
+ <tile id="11" type="goal">
+  <animation>
+   <frame tileid="11" duration="300"/>
+   <frame tileid="16" duration="300"/>
+  </animation>
+ </tile>
  <tile id="12" type="moving-platform"/>
  <tile id="13" type="ball"/>
  <tile id="14" type="spikes"/>
  <tile id="15" type="explosion"/>
+ <tile id="16" type="goal-wave"/>
 </tileset>

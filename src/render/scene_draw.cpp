@@ -79,7 +79,7 @@ void draw_entities(Canvas& c, TileArt& art, const SceneView& v, int64_t cx, int6
     }
 }
 
-void draw_command(Canvas& c, TileArt& art, const DrawCommand& d, int64_t cx, int64_t cy) {
+void draw_command(Canvas& c, TileArt& art, const DrawCommand& d, int64_t cx, int64_t cy, double time_ms) {
     const int64_t ox = d.space == Space::World ? cx : 0, oy = d.space == Space::World ? cy : 0;
     const int x = clamp_int(pixel_of(d.x) - ox), y = clamp_int(pixel_of(d.y) - oy);
     switch (d.kind) {
@@ -95,7 +95,7 @@ void draw_command(Canvas& c, TileArt& art, const DrawCommand& d, int64_t cx, int
             c.line(x, y, clamp_int(pixel_of(d.x2) - ox), clamp_int(pixel_of(d.y2) - oy), d.color);
             break;
         case DrawCommand::Kind::Sprite:
-            c.blit(art.tile(d.gid), x, y);
+            c.blit(art.tile(d.gid, time_ms), x, y);
             break;
         case DrawCommand::Kind::Text:
             c.text(x, y, d.text, d.color, d.scale);
@@ -230,7 +230,7 @@ DrawCounts draw_scene(Canvas& c, TileArt& art, const SceneView& v) {
     if (v.map) n.tiles = draw_map(c, art, *v.map, cx, cy, v.time_ms);
     draw_entities(c, art, v, cx, cy, n);
     if (v.commands)
-        for (const DrawCommand& d : v.commands->commands) draw_command(c, art, d, cx, cy);
+        for (const DrawCommand& d : v.commands->commands) draw_command(c, art, d, cx, cy, v.time_ms);
     if (v.commands) n.commands = v.commands->commands.size();
     if (v.debug) draw_overlay(c, v, cx, cy);
     return n;
