@@ -29,7 +29,11 @@ std::string byte_text(unsigned char b) {
 std::string declared_encoding(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     if (!text.starts_with("<?xml")) return "";
-    const std::string_view decl = text.substr(0, text.find("?>"));
+    // Only a declaration that closes, so that an unclosed one never reads
+    // an encoding= further on (a layer's <data encoding="csv">).
+    const size_t close = text.find("?>");
+    if (close == std::string_view::npos) return "";
+    const std::string_view decl = text.substr(0, std::min(close, text.find('<', 1)));
     const size_t at = decl.find("encoding");
     if (at == std::string_view::npos) return "";
     size_t q = decl.find_first_of("\"'", at);

@@ -340,6 +340,14 @@ TEST_CASE("a byte not valid in the file's encoding is refused with its line") {
           feature("unknown_encoding.tmx") + ":1: unknown encoding 'KLINGON-8' in the XML declaration");
 }
 
+TEST_CASE("only the XML declaration's own encoding= is read") {
+    // Unclosed: tinyxml2 says what is wrong, not the encoding check.
+    const std::string unclosed =
+        "<?xml version=\"1.0\"\n<map><layer><data encoding=\"csv\">1</data></layer></map>\n";
+    CHECK_THROWS_WITH_AS(parse_tilemap(unclosed, "mem.tmx"), doctest::Contains("mem.tmx:1: malformed XML"),
+                         MapError);
+}
+
 TEST_CASE("the UTF-8 check refuses overlong forms, surrogates and stray bytes") {
     using tmx::first_invalid_utf8;
     CHECK(first_invalid_utf8("plain") == std::string_view::npos);
