@@ -221,14 +221,10 @@
   '(#:type #f #:name "barrel" #:id 7 #:x 32 #:y 32 #:width 24 #:height 32 #:layer "things"
     #:shape tile #:gid 9 #:flips (horizontal))
   (feature-object "barrel"))
-(let ((enemy (or (feature-object "enemy") (quote ()))))
-  (test-equal "template: its type, name and size, the instance's position"
-    (list 'enemy "enemy" 8 48 16 12 10 "things" (scheme-file "tpl/enemy.tx"))
-    (map (lambda (k) (entity-ref enemy k)) '(#:type #:name #:id #:x #:y #:width #:height #:layer #:template)))
-  (test-equal "template properties, the instance's own winning" '(5 1.5)
-    (list (entity-ref enemy #:hp) (entity-ref enemy #:speed)))
-  (test-equal "template: no key twice" (length (delete-duplicates (filter keyword? enemy)))
-    (length (filter keyword? enemy))))
+(test-equal "template: its type, name, size and properties, the instance's position and its own hp"
+  `(#:type enemy #:name "enemy" #:id 8 #:x 48 #:y 16 #:width 12 #:height 10 #:layer "things"
+    #:template ,(scheme-file "tpl/enemy.tx") #:hp 5 #:speed 1.5)
+  (feature-object "enemy"))
 (test-equal "objects in document order" '("box" "ring" "spot" "tri" "path" "sign" "barrel" "enemy")
   (map (lambda (o) (entity-ref o #:name)) feature-objects))
 
