@@ -282,6 +282,23 @@
   (third (entity-ref (first (tilemap-tilesets level1)) #:tiles)))
 (test-equal "no warnings for a map Tiled has nothing to say about" '() (tilemap-warnings features))
 
+;;; ---------------------------------------------------------------- text in any encoding
+;; latin1.tmx declares ISO-8859-1: its bytes E9 (é) and FC (ü) come back as
+;; those characters. stray_byte.tmx has a byte FF in UTF-8 text on line 5.
+(define (chars . codes) (list->string (map integer->char codes)))
+(define latin1 (load-tilemap (map-file "scheme/latin1.tmx")))
+(test-equal "ISO-8859-1 text: a property" (list #:title (chars 67 97 102 233)) (tilemap-properties latin1))
+(test-equal "ISO-8859-1 text: a layer name" (chars 103 114 252 110) (entity-ref (car (tilemap-layers latin1)) #:name))
+(test-equal "ISO-8859-1 text: an object name" (chars 77 252 108 108 101 114)
+  (entity-ref (car (tilemap-objects latin1)) #:name))
+(test-equal "a stray byte: an error naming the file, line and byte, not a decoding-error"
+  (list 'misc-error (string-append "In procedure load-tilemap: " (map-file "scheme/stray_byte.tmx")
+                                   ":5: byte 0xFF is not valid UTF-8\n"))
+  (catch #t
+    (lambda () (load-tilemap (map-file "scheme/stray_byte.tmx")))
+    (lambda (key . args)
+      (list key (call-with-output-string (lambda (port) (print-exception port #f key args)))))))
+
 ;;; ---------------------------------------------------------------- gids beyond every tileset
 ;; beyond.tmx: gid 7 at (1, 0) of layer "ground", beyond its 2-tile tileset.
 (define beyond-output (open-output-string))
