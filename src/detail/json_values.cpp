@@ -126,7 +126,9 @@ bool Node::boolean() const {
     return value->get<bool>();
 }
 
-int64_t Node::integer() const {
+int64_t Node::integer() const { return integer_as("an integer"); }
+
+int64_t Node::integer_as(const char* what) const {
     if (value->is_number_unsigned()) {
         const uint64_t u = value->get<uint64_t>();
         if (u > static_cast<uint64_t>(INT64_MAX)) fail("is " + describe(*value) + ", too large");
@@ -139,11 +141,11 @@ int64_t Node::integer() const {
         if (std::isfinite(d) && d == std::floor(d) && std::fabs(d) < 0x1p62)
             return static_cast<int64_t>(d);
     }
-    fail("is " + describe(*value) + ", expected an integer");
+    fail("is " + describe(*value) + ", expected " + what);
 }
 
 int64_t Node::integer_in(int64_t min, int64_t max, const char* what) const {
-    const int64_t v = integer();
+    const int64_t v = integer_as(what);
     if (v < min || v > max) fail("is " + describe(*value) + ", expected " + what);
     return v;
 }
