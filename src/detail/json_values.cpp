@@ -36,12 +36,19 @@ int line_at(std::string_view text, size_t byte) {
     return line;
 }
 
-// nlohmann's what() starts with its id and position, which the MapError
-// says itself: keep the reason only.
+// nlohmann's what() starts with its id ("[json.exception.parse_error.101] ")
+// and, for parse errors, the position, which the MapError says itself:
+// keep the reason only.
 std::string reason(const char* what) {
     std::string s = what;
-    const size_t at = s.find(": ");
-    if (s.find("parse error") != std::string::npos && at != std::string::npos) s = s.substr(at + 2);
+    if (s.starts_with("[json.exception.")) {
+        const size_t close = s.find("] ");
+        if (close != std::string::npos) s = s.substr(close + 2);
+    }
+    if (s.starts_with("parse error")) {
+        const size_t at = s.find(": ");
+        if (at != std::string::npos) s = s.substr(at + 2);
+    }
     return s;
 }
 
@@ -74,10 +81,8 @@ std::string describe(const Json& v) {
         if (s.size() > 40) s = s.substr(0, 40) + "…";
         return "a string (\"" + s + "\")";
     }
-    default: {
-        // dump() of a number never throws (no strings inside).
-        return "the number " + v.dump();
-    }
+    default:
+        return "the number " + v.dump();  // never throws: no strings inside
     }
 }
 
