@@ -185,7 +185,7 @@
 (test-equal "map properties: every Tiled type; a class is a plist, a list a list"
   '(#:title "Cave" #:gravity 0.25 #:scale 2 #:lives 3 #:dark #t #:fog "#80ff0000"
     #:music "../music/cave.ogg" #:boss 8 #:difficulty "hard"
-    #:spawn (#:count 2 #:at (#:x 4 #:y 1.5)) #:waves (1 "two" #f))
+    #:spawn (#:at (#:x 4 #:y 1.5) #:count 2) #:waves (1 "two" #f))
   (tilemap-properties features))
 (test-equal "a map without properties" '() (tilemap-properties level1))
 (test-equal "a map made in memory has no properties, layers, tilesets or warnings" '(() () () ())
@@ -281,6 +281,35 @@
   '(#:id 2 #:type platform #:properties () #:collision? #t)
   (third (entity-ref (first (tilemap-tilesets level1)) #:tiles)))
 (test-equal "no warnings for a map Tiled has nothing to say about" '() (tilemap-warnings features))
+
+;; features.tmj is the same map in Tiled's JSON format (naming the same .tsx
+;; tileset and .tx template): every accessor gives the same values.
+(define features-json (load-tilemap (map-file "scheme/features.tmj")))
+(for-each
+ (lambda (accessor name)
+   (test-equal (string-append "JSON twin: " name) (accessor features) (accessor features-json)))
+ (list tilemap-properties tilemap-objects tilemap-layers tilemap-tilesets tilemap-warnings
+       tilemap-width tilemap-height tilemap-tile-width tilemap-tile-height)
+ '("properties" "objects" "layers" "tilesets" "warnings" "width" "height" "tile width" "tile height"))
+(test-equal "JSON twin: the same gids" 
+  (map (lambda (c) (tilemap-gid features 0 c 1)) (iota 4))
+  (map (lambda (c) (tilemap-gid features-json 0 c 1)) (iota 4)))
+(test-assert "JSON twin: not an empty map" (pair? (tilemap-objects features-json)))
+
+;; game.tiled-project defines Spawn (at: Point, count 1, label "wave") and
+;; Point (x 0, y 0, z 9): the members features.tmx leaves out are filled in.
+(define project (scheme-file "game.tiled-project"))
+(for-each
+ (lambda (name)
+   (test-equal (string-append name " with a project: the class's defaults filled in, nested too")
+     '(#:at (#:x 4 #:y 1.5 #:z 9) #:count 2 #:label "wave")
+     (entity-ref (tilemap-properties (load-tilemap (map-file (string-append "scheme/" name)) #:project project))
+                 #:spawn)))
+ '("features.tmx" "features.tmj"))
+(test-assert "a missing project file: an error naming it"
+  (mentions? (error-text (lambda () (load-tilemap (map-file "scheme/features.tmx")
+                                                  #:project (scheme-file "none.tiled-project"))))
+             "load-tilemap" "none.tiled-project" "cannot open project file"))
 
 ;;; ---------------------------------------------------------------- text in any encoding
 ;; latin1.tmx declares ISO-8859-1: its bytes E9 (é) and FC (ü) come back as
