@@ -1,7 +1,5 @@
 #include "tilemap_type.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <memory>
 #include <string>
 
@@ -9,6 +7,7 @@
 #include "failure.hpp"
 #include "list_walk.hpp"
 #include "registry.hpp"
+#include "tilemap_info.hpp"
 
 namespace ds::guile {
 
@@ -23,14 +22,6 @@ void finalize_tilemap(SCM obj) {
 
 SCM wrap(std::unique_ptr<MapHandle> handle) {
     return scm_make_foreign_object_1(tilemap_type, handle.release());
-}
-
-// Checks a tilemap argument; the Failure names the procedure's argument.
-bool check_map(SCM obj, const char* proc, Failure& f) {
-    f.proc = proc;
-    if (is_tilemap(obj)) return true;
-    fail(f, "wrong-type-arg", scm_list_1(obj), "expected a tilemap, got ~S");
-    return false;
 }
 
 bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f) {
@@ -55,42 +46,6 @@ bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f
     return true;
 }
 
-// Tiled numbers: integral values come back exact, so 48 stays 48.
-SCM tiled_number(double v) {
-    if (std::trunc(v) == v && std::fabs(v) < kMaxExact) return scm_from_int64(static_cast<int64_t>(v));
-    return scm_from_double(v);
-}
-
-SCM property_value(const Property& p) {
-    const std::string& s = p.value;
-    if (p.type == "bool") return scm_from_bool(property_is_true(p));
-    if (p.type == "int" || p.type == "object") {
-        long long v = 0;
-        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-        if (ec == std::errc() && end == s.data() + s.size()) return scm_from_int64(v);
-    }
-    if (p.type == "float") {
-        char* end = nullptr;
-        const double v = std::strtod(s.c_str(), &end);
-        if (end && *end == '\0' && std::isfinite(v)) return scm_from_double(v);
-    }
-    return scm_from_utf8_string(s.c_str());
-}
-
-SCM keyword(const std::string& name) { return scm_from_utf8_keyword(name.c_str()); }
-
-SCM object_plist(const MapObject& o) {
-    SCM props = SCM_EOL;
-    for (auto it = o.properties.rbegin(); it != o.properties.rend(); ++it)
-        props = scm_cons(keyword(it->name), scm_cons(property_value(*it), props));
-    SCM type = o.type.empty() ? SCM_BOOL_F : scm_from_utf8_symbol(o.type.c_str());
-    SCM head = scm_list_n(keyword("type"), type, keyword("name"), scm_from_utf8_string(o.name.c_str()),
-                          keyword("id"), scm_from_int(o.id), keyword("x"), tiled_number(o.x),
-                          keyword("y"), tiled_number(o.y), keyword("width"), tiled_number(o.width),
-                          keyword("height"), tiled_number(o.height), SCM_UNDEFINED);
-    return scm_append(scm_list_2(head, props));
-}
-
 // A MapLimits field from a keyword: #f keeps the default.
 bool limit_arg(SCM v, const char* name, int64_t& out, Failure& f) {
     if (scm_is_false(v)) return true;
@@ -102,30 +57,48 @@ bool limit_arg(SCM v, const char* name, int64_t& out, Failure& f) {
     return false;
 }
 
-SCM load_tilemap(SCM path, SCM solid_gids, SCM max_cells, SCM max_bytes) {
+// A path argument as a malloc'd UTF-8 copy (the caller frees it), or
+// nullptr with a Failure.
+char* path_arg(SCM v, const char* what, Failure& f) {
+    if (scm_is_string(v)) return scm_to_utf8_string(v);
+    fail_arg(f, what, v, "a file name");
+    return nullptr;
+}
+
+SCM load_tilemap(SCM path, SCM solid_gids, SCM max_cells, SCM max_bytes, SCM strict, SCM project) {
     Failure f{"load-tilemap"};
     MapLimits limits;
     if (!limit_arg(max_cells, "max-cells", limits.max_cells, f) ||
         !limit_arg(max_bytes, "max-bytes", limits.max_bytes, f))
         raise(f);  // a wrong-type-arg; nothing is allocated yet
+    if (!scm_is_bool(strict)) {
+        fail_arg(f, "strict?", strict, "#t or #f");
+        raise(f);
+    }
     SCM result = SCM_BOOL_F;
     if (!scm_is_string(path)) {
         fail(f, "wrong-type-arg", scm_list_1(path), "expected a file name, got ~S");
-    } else {
-        char* cpath = scm_to_utf8_string(path);  // freed below, before any raise
-        {
-            std::vector<uint32_t> gids;
-            std::unique_ptr<MapHandle> handle;
-            guarded(f, nullptr, [&] {
-                if (!gid_list(solid_gids, gids, "solid-gids", f)) return;
-                handle = std::make_unique<MapHandle>();
-                handle->map = ds::load_tilemap(cpath, gids, limits);
-                handle->grid = handle->map.solid_grid();
-            });
-            if (handle) result = wrap(std::move(handle));
-        }
-        free(cpath);
+        raise(f);
     }
+    char* cproject = scm_is_false(project) ? nullptr : path_arg(project, "project", f);
+    if (f) raise(f);
+    char* cpath = scm_to_utf8_string(path);  // both freed below, before any raise
+    {
+        std::unique_ptr<MapHandle> handle;
+        guarded(f, nullptr, [&] {
+            LoadOptions options;
+            if (!gid_list(solid_gids, options.solid_gids, "solid-gids", f)) return;
+            options.limits = limits;
+            options.strict = scm_is_true(strict);
+            if (cproject) options.project_path = cproject;
+            handle = std::make_unique<MapHandle>();
+            handle->map = ds::load_tilemap(cpath, options);
+            handle->grid = handle->map.solid_grid();
+        });
+        if (handle) result = wrap(std::move(handle));
+    }
+    free(cpath);
+    free(cproject);
     if (f) {
         f.key = "misc-error";  // printed as "In procedure load-tilemap: <file>:<line>: …"
         raise(f);
@@ -181,27 +154,10 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
 
 SCM tilemap_p(SCM obj) { return scm_from_bool(is_tilemap(obj)); }
 
-template <typename Get>
-SCM map_accessor(SCM obj, const char* proc, Get get) {
-    Failure f;
-    if (!check_map(obj, proc, f)) raise(f);
-    return get(tilemap_handle(obj).map);
-}
-
 SCM tilemap_width(SCM m) { return map_accessor(m, "tilemap-width", [](const Tilemap& t) { return scm_from_int(t.width); }); }
 SCM tilemap_height(SCM m) { return map_accessor(m, "tilemap-height", [](const Tilemap& t) { return scm_from_int(t.height); }); }
 SCM tilemap_tile_width(SCM m) { return map_accessor(m, "tilemap-tile-width", [](const Tilemap& t) { return scm_from_int(t.tile_width); }); }
 SCM tilemap_tile_height(SCM m) { return map_accessor(m, "tilemap-tile-height", [](const Tilemap& t) { return scm_from_int(t.tile_height); }); }
-
-SCM tilemap_objects(SCM m) {
-    return map_accessor(m, "tilemap-objects", [](const Tilemap& t) {
-        SCM all = SCM_EOL;
-        for (auto layer = t.object_layers.rbegin(); layer != t.object_layers.rend(); ++layer)
-            for (auto o = layer->objects.rbegin(); o != layer->objects.rend(); ++o)
-                all = scm_cons(object_plist(*o), all);
-        return all;
-    });
-}
 
 // Cell indexes are exact integers (any, since cells outside the map are empty).
 void check_cell(SCM col, SCM row, Failure& f) {
@@ -307,6 +263,13 @@ bool is_tilemap(SCM obj) {
            scm_foreign_object_ref(obj, 0) != nullptr;
 }
 
+bool check_map(SCM obj, const char* proc, Failure& f) {
+    f.proc = proc;
+    if (is_tilemap(obj)) return true;
+    fail(f, "wrong-type-arg", scm_list_1(obj), "expected a tilemap, got ~S");
+    return false;
+}
+
 const MapHandle& tilemap_handle(SCM obj) {
     return *static_cast<const MapHandle*>(scm_foreign_object_ref(obj, 0));
 }
@@ -324,8 +287,9 @@ bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
 
 void register_tilemap_procedures() {
     init_tilemap_type();
-    define_procedure<4, 0, 0, load_tilemap>("%load-tilemap",
-        WrapperDoc{"(path solid-gids max-cells max-bytes)", "load-tilemap", "(downstroke tilemap)"});
+    register_tilemap_info_procedures();
+    define_procedure<6, 0, 0, load_tilemap>("%load-tilemap",
+        WrapperDoc{"(path solid-gids max-cells max-bytes strict? project)", "load-tilemap", "(downstroke tilemap)"});
     // Exported as they are (re-exported by (downstroke tilemap)): documented here.
     define_procedure<6, 1, 0, make_tilemap>("make-tilemap",
         "(make-tilemap width height tile-width tile-height cells solid-gids [one-way-gids]): a map "
@@ -348,9 +312,6 @@ void register_tilemap_procedures() {
         "(tilemap-solid-extent tm): the block of cells that can be solid, as the list "
         "(first-col first-row cols rows); every cell outside it is empty (infinite maps may start "
         "at negative cells).");
-    define_procedure<1, 0, 0, tilemap_objects>("tilemap-objects",
-        "(tilemap-objects tm): the objects of every object layer, each as an entity (a keyword "
-        "list).");
     define_procedure<4, 0, 0, tilemap_gid>("tilemap-gid",
         "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
         "number layer, 0 when empty.");

@@ -10,8 +10,9 @@ cd "$(dirname "$0")/.."
 # and xdotool serve the one test that opens a real window on a virtual display; clang and
 # libclang-rt-dev (libFuzzer, not pulled in by --no-install-recommends) build the fuzz targets;
 # emacs-nox and elpa-geiser (Debian 12's Geiser 0.10, Guile support included) run the test
-# that attaches Geiser to a served game.
-packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev libbox2d-dev gnuplot-nox
+# that attaches Geiser to a served game; nlohmann-json3-dev (header-only) reads Tiled's JSON
+# maps, tilesets, templates and project files.
+packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev nlohmann-json3-dev libbox2d-dev gnuplot-nox
           libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev xvfb xauth x11-apps xdotool clang libclang-rt-dev
           emacs-nox elpa-geiser)
 missing=()

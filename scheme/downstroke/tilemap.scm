@@ -5,13 +5,27 @@
                tilemap-tile-width tilemap-tile-height tilemap-cell-solid?
                tilemap-cell-one-way? tilemap-set-tile
                tilemap-solid-extent
-               tilemap-objects tilemap-gid)
+               tilemap-objects tilemap-gid
+               tilemap-properties tilemap-layers tilemap-tilesets
+               tilemap-warnings)
   #:export (load-tilemap))
 
-(define* (load-tilemap path #:key (solid-gids '()) (max-cells #f) (max-bytes #f))
-  "Load a Tiled .tmx map (and its .tsx tilesets). SOLID-GIDS marks more gids
-solid, for maps whose tilesets carry no collision metadata. MAX-CELLS bounds
-the cells of all its tile layers together (default 67108864, 64 M), MAX-BYTES
-the bytes read for the map and its tilesets together (default 67108864,
-64 MiB); #f keeps the default. Only regular files are read."
-  (%load-tilemap path solid-gids max-cells max-bytes))
+(define* (load-tilemap path #:key (solid-gids '()) (max-cells #f) (max-bytes #f)
+                       (strict? #f) (project #f))
+  "Load a Tiled map (.tmx or .tmj) and the tilesets (.tsx, .tsj) and
+templates (.tx, .tj) it names. SOLID-GIDS marks more gids solid, for maps
+whose tilesets carry no collision metadata. MAX-CELLS bounds the cells of all
+its tile layers together (default 67108864, 64 M), MAX-BYTES the bytes read
+for the map and every file it names together (default 67108864, 64 MiB); #f
+keeps the default. Only regular files are read. A gid beyond every tileset
+loads as an empty, non-solid cell with a warning on (current-warning-port),
+kept in (tilemap-warnings map); STRICT? #t makes it an error instead.
+PROJECT names a Tiled project file (.tiled-project) whose class types fill in
+the members a class property leaves at their defaults."
+  (let ((tm (%load-tilemap path solid-gids max-cells max-bytes strict? project)))
+    (for-each (lambda (warning)
+                (display "load-tilemap: warning: " (current-warning-port))
+                (display warning (current-warning-port))
+                (newline (current-warning-port)))
+              (tilemap-warnings tm))
+    tm))

@@ -1,6 +1,7 @@
 // The public entry points of loading a map, and the dispatch that sends each
 // file (map, tileset, template) to the reader its content calls for.
 #include "map_build.hpp"
+#include "project.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
 
@@ -11,7 +12,8 @@ namespace build {
 Syntax sniff_syntax(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     const size_t first = text.find_first_not_of(" \t\r\n");
-    return first != std::string_view::npos && text[first] == '{' ? Syntax::Json : Syntax::Xml;
+    return first != std::string_view::npos && (text[first] == '{' || text[first] == '[') ? Syntax::Json
+                                                                                 : Syntax::Xml;
 }
 
 Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
@@ -71,7 +73,9 @@ Tilemap load_tilemap(const std::string& path, const LoadOptions& options) {
     std::string error;
     const auto text = build::read_counted(state, path, error);
     if (!text) throw MapError(path, 0, "cannot open map: " + error);
-    return build::read_map(*text, path, state);
+    Tilemap map = build::read_map(*text, path, state);
+    build::apply_project(state, map);  // the class defaults of LoadOptions::project_path
+    return map;
 }
 
 Tilemap parse_tilemap(std::string_view text, const std::string& path,

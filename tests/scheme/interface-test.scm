@@ -52,10 +52,12 @@
     "(downstroke): scene-tilemap"
     "(downstroke): tilemap-cell-one-way?" "(downstroke): tilemap-cell-solid?"
     "(downstroke): tilemap-gid" "(downstroke): tilemap-gid-at"
-    "(downstroke): tilemap-height" "(downstroke): tilemap-objects"
+    "(downstroke): tilemap-height" "(downstroke): tilemap-layers"
+    "(downstroke): tilemap-objects" "(downstroke): tilemap-properties"
     "(downstroke): tilemap-set-tile" "(downstroke): tilemap-solid-at?"
     "(downstroke): tilemap-solid-cells" "(downstroke): tilemap-solid-extent"
     "(downstroke): tilemap-tile-height" "(downstroke): tilemap-tile-width"
+    "(downstroke): tilemap-tilesets" "(downstroke): tilemap-warnings"
     "(downstroke): tilemap-width" "(downstroke): tilemap?")
   (sort (filter (lambda (line) (string-prefix? "(downstroke):" line))
                 (map (lambda (line) (car (string-split line #\tab))) (apropos-lines "tilemap")))

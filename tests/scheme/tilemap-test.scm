@@ -177,6 +177,180 @@
 (test-equal #f (tilemap? 'map))
 (test-equal #f (tilemap? #(0 1)))
 
+;;; ---------------------------------------------------------------- what else a map holds
+;; tests/data/maps/scheme/features.tmx: every kind of property, layer, object
+;; and tileset field the accessors report (the file says what each is).
+(define features (load-tilemap (map-file "scheme/features.tmx")))
+(define (scheme-file name) (string-append data "/maps/scheme/" name))
+(test-equal "map properties: every Tiled type; a class is a plist, a list a list"
+  '(#:title "Cave" #:gravity 0.25 #:scale 2 #:lives 3 #:dark #t #:fog "#80ff0000"
+    #:music "../music/cave.ogg" #:boss 8 #:difficulty "hard"
+    #:spawn (#:at (#:x 4 #:y 1.5) #:count 2) #:waves (1 "two" #f))
+  (tilemap-properties features))
+(test-equal "a map without properties" '() (tilemap-properties level1))
+(test-equal "a map made in memory has no properties, layers, tilesets or warnings" '(() () () ())
+  (list (tilemap-properties mv) (tilemap-layers mv) (tilemap-tilesets mv) (tilemap-warnings mv)))
+
+(define feature-objects (tilemap-objects features))
+(define (feature-object name) (object-named features name))
+(test-equal "a custom property spelled like a built-in key is prefixed, again while taken"
+  '(#:type crate #:name "box" #:id 1 #:x 0 #:y 0 #:width 16 #:height 16 #:layer "things"
+    #:property-name "Boxy" #:property-property-name "p" #:property-gid 7 #:weight 2.5)
+  (feature-object "box"))
+(test-equal "ellipse"
+  '(#:type #f #:name "ring" #:id 2 #:x 16 #:y 0 #:width 8 #:height 8 #:layer "things" #:shape ellipse)
+  (feature-object "ring"))
+(test-equal "point"
+  '(#:type #f #:name "spot" #:id 3 #:x 4 #:y 4 #:width 0 #:height 0 #:layer "things" #:shape point)
+  (feature-object "spot"))
+(test-equal "polygon: relative points, rotation"
+  '(#:type #f #:name "tri" #:id 4 #:x 10 #:y 20 #:width 0 #:height 0 #:layer "things"
+    #:shape polygon #:points ((0 . 0) (8 . 0) (4 . -6.5)) #:rotation 45)
+  (feature-object "tri"))
+(test-equal "polyline, hidden"
+  '(#:type #f #:name "path" #:id 5 #:x 0 #:y 30 #:width 0 #:height 0 #:layer "things"
+    #:shape polyline #:points ((0 . 0) (10 . 5)) #:visible? #f)
+  (feature-object "path"))
+(test-equal "text: its text and every attribute"
+  '(#:type #f #:name "sign" #:id 6 #:x 0 #:y 24 #:width 48 #:height 16 #:layer "things" #:shape text
+    #:text (#:text "Hello" #:font-family "serif" #:pixel-size 12 #:wrap? #t #:bold? #t #:italic? #f
+            #:underline? #f #:strikeout? #f #:kerning? #t #:color "#ff336699" #:halign center
+            #:valign bottom))
+  (feature-object "sign"))
+(test-equal "tile object: gid without the flip bits, and the flips"
+  '(#:type #f #:name "barrel" #:id 7 #:x 32 #:y 32 #:width 24 #:height 32 #:layer "things"
+    #:shape tile #:gid 9 #:flips (horizontal))
+  (feature-object "barrel"))
+(test-equal "template: its type, name, size and properties, the instance's position and its own hp"
+  `(#:type enemy #:name "enemy" #:id 8 #:x 48 #:y 16 #:width 12 #:height 10 #:layer "things"
+    #:template ,(scheme-file "tpl/enemy.tx") #:hp 5 #:speed 1.5)
+  (feature-object "enemy"))
+(test-equal "objects in document order" '("box" "ring" "spot" "tri" "path" "sign" "barrel" "enemy")
+  (map (lambda (o) (entity-ref o #:name)) feature-objects))
+
+;; Element i, or () when there are fewer: a missing layer fails its own test only.
+(define (nth l i) (if (> (length l) i) (list-ref l i) '()))
+(define (head l n) (if (>= (length l) n) (list-head l n) l))
+(define feature-layers (tilemap-layers features))
+(test-equal "layers in file order, groups nested" '((tile "ground") (group "fore") (object "things"))
+  (map (lambda (l) (list (entity-ref l #:kind) (entity-ref l #:name))) feature-layers))
+(test-equal "a tile layer"
+  '(#:kind tile #:name "ground" #:id 1 #:type #f #:visible? #t #:opacity 1 #:offset-x 0 #:offset-y 0
+    #:parallax-x 1 #:parallax-y 1 #:tint #f #:properties () #:layer 0)
+  (nth feature-layers 0))
+(let ((group (nth feature-layers 1)))
+  (test-equal "a group: its own attributes"
+    '(#:kind group #:name "fore" #:id 2 #:type #f #:visible? #t #:opacity 0.5 #:offset-x 4 #:offset-y -2
+      #:parallax-x 1 #:parallax-y 1 #:tint #f #:properties (#:depth 2))
+    (head group 24))
+  (test-equal "a hidden, tinted tile layer in the group: its own values, its number"
+    '(#:kind tile #:name "deco" #:id 3 #:type #f #:visible? #f #:opacity 0.5 #:offset-x 0 #:offset-y 0
+      #:parallax-x 0.5 #:parallax-y 1 #:tint "#ff00ff00" #:properties () #:layer 1)
+    (nth (entity-ref group #:layers '()) 0))
+  (test-equal "an image layer: the path resolved against the map's folder"
+    `(#:kind image #:name "sky" #:id 4 #:type #f #:visible? #t #:opacity 1 #:offset-x 1.5 #:offset-y 0
+      #:parallax-x 1 #:parallax-y 1 #:tint #f #:properties () #:image ,(scheme-file "art/sky.png")
+      #:image-width 320 #:image-height 240 #:repeat-x? #t #:repeat-y? #f)
+    (nth (entity-ref group #:layers '()) 1)))
+(test-equal "the #:layer of a tile layer is the one tilemap-gid reads" '(2 2)
+  (list (tilemap-gid features 1 3 0) (tilemap-gid features 0 1 0)))
+(test-equal "an object layer holds its objects" feature-objects (entity-ref (nth feature-layers 2) #:objects #f))
+(test-equal "an object layer's other keys"
+  '(#:kind object #:name "things" #:id 5 #:type #f #:visible? #t #:opacity 1 #:offset-x 0 #:offset-y 0
+    #:parallax-x 1 #:parallax-y 1 #:tint #f #:properties ())
+  (head (nth feature-layers 2) 24))
+
+(define feature-tilesets (tilemap-tilesets features))
+(test-equal "an external tileset: its image resolved against the .tsx's folder; animation frames"
+  `(#:first-gid 1 #:name "anim" #:type terrain #:source "tsx/anim.tsx" #:tile-width 16 #:tile-height 16
+    #:tile-count 8 #:columns 4 #:margin 2 #:spacing 1 #:image ,(scheme-file "tsx/../art/tiles.png")
+    #:image-width 70 #:image-height 36 #:tile-offset (0 . 4) #:properties (#:kind "rock")
+    #:tiles ((#:id 0 #:type #f #:properties (#:solid #t))
+             (#:id 1 #:type water #:properties () #:animation ((1 . 100) (2 . 150)))))
+  (first feature-tilesets))
+(test-equal "a sparse image collection: no image of its own, one per tile"
+  `(#:first-gid 9 #:name "props" #:type #f #:source #f #:tile-width 32 #:tile-height 32 #:tile-count 2
+    #:columns 0 #:margin 0 #:spacing 0 #:image #f #:tile-offset (0 . 0) #:properties ()
+    #:tiles ((#:id 0 #:type #f #:properties () #:image ,(scheme-file "props/barrel.png")
+              #:image-width 24 #:image-height 32)
+             (#:id 5 #:type lamp #:properties () #:image ,(scheme-file "props/lamp.png")
+              #:image-width 8 #:image-height 32)))
+  (second feature-tilesets))
+(test-equal "a sparse image collection's tile 5 (gid 14) loads" 14 (tilemap-gid features 0 2 1))
+(test-equal "collision shapes are reported"
+  '(#:id 2 #:type platform #:properties () #:collision? #t)
+  (third (entity-ref (first (tilemap-tilesets level1)) #:tiles)))
+(test-equal "no warnings for a map Tiled has nothing to say about" '() (tilemap-warnings features))
+
+;; features.tmj is the same map in Tiled's JSON format (naming the same .tsx
+;; tileset and .tx template): every accessor gives the same values.
+(define features-json (load-tilemap (map-file "scheme/features.tmj")))
+(for-each
+ (lambda (accessor name)
+   (test-equal (string-append "JSON twin: " name) (accessor features) (accessor features-json)))
+ (list tilemap-properties tilemap-objects tilemap-layers tilemap-tilesets tilemap-warnings
+       tilemap-width tilemap-height tilemap-tile-width tilemap-tile-height)
+ '("properties" "objects" "layers" "tilesets" "warnings" "width" "height" "tile width" "tile height"))
+(test-equal "JSON twin: the same gids" 
+  (map (lambda (c) (tilemap-gid features 0 c 1)) (iota 4))
+  (map (lambda (c) (tilemap-gid features-json 0 c 1)) (iota 4)))
+(test-assert "JSON twin: not an empty map" (pair? (tilemap-objects features-json)))
+
+;; game.tiled-project defines Spawn (at: Point, count 1, label "wave") and
+;; Point (x 0, y 0, z 9): the members features.tmx leaves out are filled in.
+(define project (scheme-file "game.tiled-project"))
+(for-each
+ (lambda (name)
+   (test-equal (string-append name " with a project: the class's defaults filled in, nested too")
+     '(#:at (#:x 4 #:y 1.5 #:z 9) #:count 2 #:label "wave")
+     (entity-ref (tilemap-properties (load-tilemap (map-file (string-append "scheme/" name)) #:project project))
+                 #:spawn)))
+ '("features.tmx" "features.tmj"))
+(test-assert "a missing project file: an error naming it"
+  (mentions? (error-text (lambda () (load-tilemap (map-file "scheme/features.tmx")
+                                                  #:project (scheme-file "none.tiled-project"))))
+             "load-tilemap" "none.tiled-project" "cannot open project file"))
+
+;;; ---------------------------------------------------------------- text in any encoding
+;; latin1.tmx declares ISO-8859-1: its bytes E9 (é) and FC (ü) come back as
+;; those characters. stray_byte.tmx has a byte FF in UTF-8 text on line 5.
+(define (chars . codes) (list->string (map integer->char codes)))
+(define latin1 (load-tilemap (map-file "scheme/latin1.tmx")))
+(test-equal "ISO-8859-1 text: a property" (list #:title (chars 67 97 102 233)) (tilemap-properties latin1))
+(test-equal "ISO-8859-1 text: a layer name" (chars 103 114 252 110) (entity-ref (car (tilemap-layers latin1)) #:name))
+(test-equal "ISO-8859-1 text: an object name" (chars 77 252 108 108 101 114)
+  (entity-ref (car (tilemap-objects latin1)) #:name))
+(test-equal "a stray byte: an error naming the file, line and byte, not a decoding-error"
+  (list 'misc-error (string-append "In procedure load-tilemap: " (map-file "scheme/stray_byte.tmx")
+                                   ":5: byte 0xFF is not valid UTF-8\n"))
+  (catch #t
+    (lambda () (load-tilemap (map-file "scheme/stray_byte.tmx")))
+    (lambda (key . args)
+      (list key (call-with-output-string (lambda (port) (print-exception port #f key args)))))))
+
+;;; ---------------------------------------------------------------- gids beyond every tileset
+;; beyond.tmx: gid 7 at (1, 0) of layer "ground", beyond its 2-tile tileset.
+(define beyond-output (open-output-string))
+(define beyond
+  (parameterize ((current-warning-port beyond-output))
+    (load-tilemap (map-file "scheme/beyond.tmx"))))
+(test-equal "loaded, the gid beyond as a non-solid cell" '(#t #f #t)
+  (map (lambda (c) (tilemap-cell-solid? beyond c 0)) '(0 1 2)))
+(test-equal "one warning, naming the map and line, the layer and the cell"
+  (list (string-append (map-file "scheme/beyond.tmx")
+                       ":14: gid 7 at cell (1, 0) of layer 'ground' is beyond every tileset; "
+                       "loaded as a missing, non-solid tile"))
+  (tilemap-warnings beyond))
+(test-equal "the cell keeps its gid (drawn as a missing tile)" 7 (tilemap-gid beyond 0 1 0))
+(test-equal "each warning is one line on the warning port"
+  (string-append "load-tilemap: warning: " (car (tilemap-warnings beyond)) "\n")
+  (get-output-string beyond-output))
+(test-assert "#:strict? #t refuses it, naming the file, layer and cell"
+  (mentions? (error-text (lambda () (load-tilemap (map-file "scheme/beyond.tmx") #:strict? #t)))
+             "load-tilemap" "beyond.tmx" "ground" "beyond every tileset"))
+(test-equal "#:strict? #f is the default" '() 
+  (tilemap-warnings (load-tilemap "demo/maps/level1.tmx" #:strict? #t)))
+
 ;;; ---------------------------------------------------------------- errors
 (test-assert "missing file: the message names the file"
   (mentions? (error-text (lambda () (load-tilemap (map-file "no-such-map.tmx")))) "load-tilemap" "no-such-map.tmx"))
@@ -221,5 +395,16 @@
 (test-assert "tilemap-width on a non-tilemap"
   (mentions? (error-text (lambda () (tilemap-width "map"))) "tilemap-width"))
 (test-assert "tilemap-objects on a non-tilemap" (error-text (lambda () (tilemap-objects #f))))
+
+(for-each
+ (lambda (proc name)
+   (test-assert (string-append name " on a non-tilemap names itself and the value")
+     (mentions? (error-text (lambda () (proc 'level))) name "level")))
+ (list tilemap-properties tilemap-layers tilemap-tilesets tilemap-warnings tilemap-objects)
+ '("tilemap-properties" "tilemap-layers" "tilemap-tilesets" "tilemap-warnings" "tilemap-objects"))
+(test-assert "load-tilemap: strict? not a boolean"
+  (mentions? (error-text (lambda () (load-tilemap "demo/maps/level1.tmx" #:strict? 'yes))) "load-tilemap" "strict?" "yes"))
+(test-assert "load-tilemap: project not a file name"
+  (mentions? (error-text (lambda () (load-tilemap "demo/maps/level1.tmx" #:project 42))) "load-tilemap" "project" "42"))
 
 (test-end "tilemap")
