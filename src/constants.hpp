@@ -68,6 +68,11 @@ constexpr int64_t kMaxImageSide = int64_t{1} << 16;
 // loader's recursion shallow whatever tinyxml2's own depth limit is.
 constexpr int kMaxGroupDepth = 32;
 
+// Class properties inside class (and list) properties: Tiled's own types
+// nest a few levels; the bound keeps the loader's recursion shallow and a
+// hostile file from building a deep chain of members.
+constexpr int kMaxPropertyDepth = 32;
+
 // Arrays and objects nested in a JSON map, tileset, template or project
 // file. A map nests 2 levels per group layer (its "layers" array and the
 // layer), so kMaxGroupDepth groups fit with room for class properties

@@ -1,7 +1,5 @@
 // The public entry points of loading a map, and the dispatch that sends each
 // file (map, tileset, template) to the reader its content calls for.
-#include <algorithm>
-
 #include "map_build.hpp"
 #include "project.hpp"
 #include "readers.hpp"
@@ -47,17 +45,13 @@ void load_tileset_file(const std::string& path, LoadState& s, const Where& from,
 std::shared_ptr<const ObjectTemplate> load_template_file(const std::string& path, LoadState& s,
                                                          const Where& from) {
     if (auto it = s.templates.find(path); it != s.templates.end()) return it->second;
-    if (std::find(s.templates_open.begin(), s.templates_open.end(), path) != s.templates_open.end())
-        from.fail("template '" + path + "' uses itself");
     std::string error;
     const auto text = read_counted(s, path, error);
     if (!text) from.fail("cannot open template '" + path + "': " + error);
     const Where file{path, 0, named_at("template", from)};
-    s.templates_open.push_back(path);
     auto tmpl = std::make_shared<ObjectTemplate>(sniff_syntax(*text) == Syntax::Json
                                                      ? read_json_template(*text, file, s)
                                                      : read_tx_template(*text, file, s));
-    s.templates_open.pop_back();
     tmpl->path = path;
     s.templates.emplace(path, tmpl);
     return tmpl;
@@ -70,7 +64,6 @@ Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids,
     LoadOptions options;
     options.solid_gids = std::move(solid_gids);
     options.limits = limits;
-    options.strict = true;
     return load_tilemap(path, options);
 }
 
@@ -91,7 +84,6 @@ Tilemap parse_tilemap(std::string_view text, const std::string& path,
     LoadOptions options;
     options.solid_gids = std::move(solid_gids);
     options.limits = limits;
-    options.strict = true;
     build::LoadState state(options);
     build::count_text(state, text, path);
     return build::read_map(text, path, state);

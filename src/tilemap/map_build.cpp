@@ -76,10 +76,15 @@ void check_tile_size(const Where& w, const Tileset& ts) {
 }
 
 void check_gid_range(const Where& w, const Tileset& ts) {
-    if (ts.tile_count == 0 || static_cast<uint32_t>(ts.tile_count - 1) <= kGidMask - ts.firstgid)
-        return;
-    w.fail("tileset '" + ts.name + "' firstgid=" + std::to_string(ts.firstgid) + " with tilecount=" +
-           std::to_string(ts.tile_count) + " runs past the largest gid " + std::to_string(kGidMask));
+    if (ts.tile_count > 0 && static_cast<uint32_t>(ts.tile_count - 1) > kGidMask - ts.firstgid)
+        w.fail("tileset '" + ts.name + "' firstgid=" + std::to_string(ts.firstgid) +
+               " with tilecount=" + std::to_string(ts.tile_count) + " runs past the largest gid " +
+               std::to_string(kGidMask));
+    // Sorted: the last tile has the largest id.
+    if (ts.image_collection() && !ts.tiles.empty() && ts.tiles.back().id > kGidMask - ts.firstgid)
+        w.fail("tileset '" + ts.name + "' firstgid=" + std::to_string(ts.firstgid) + " with tile id " +
+               std::to_string(ts.tiles.back().id) + " runs past the largest gid " +
+               std::to_string(kGidMask));
 }
 
 void sort_tiles(Tileset& ts) {
@@ -378,9 +383,12 @@ uint32_t map_tile_gid(const Where& w, LoadState& s, const ObjectTemplate& tmpl, 
         if (added.firstgid > kGidMask)
             w.fail("template '" + tmpl.path + "': no gid is left for its tileset '" +
                    tmpl.tileset_path + "'");
+        const auto map_dir = std::filesystem::path(map.path).parent_path().lexically_normal();
         added.source = std::filesystem::path(tmpl.tileset_path)
-                           .lexically_relative(std::filesystem::path(map.path).parent_path())
+                           .lexically_normal()
+                           .lexically_relative(map_dir.empty() ? "." : map_dir)
                            .string();
+        if (added.source.empty()) added.source = tmpl.tileset_path;  // no relative path to it
         load_tileset_file(tmpl.tileset_path, s, w, added);
         check_gid_range(w, added);
         map.tilesets.push_back(std::move(added));  // after the last: still sorted

@@ -32,7 +32,6 @@ struct LoadState {
     int64_t bytes_left;
     CellBudget cells;
     std::map<std::string, std::shared_ptr<const ObjectTemplate>> templates;  // by resolved path
-    std::vector<std::string> templates_open;  // being read now, to refuse a loop
 
     const MapLimits& limits() const { return options.limits; }
 };
@@ -77,7 +76,8 @@ void check_map_header(const Where& w, const LoadState& s, const Tilemap& map,
 void check_firstgid(const Where& w, uint32_t firstgid, const std::string& written);
 // Tile sizes of a tileset within kMaxTileSize.
 void check_tile_size(const Where& w, const Tileset& ts);
-// Its gids, firstgid … firstgid+tilecount−1, must all be gids.
+// Its gids, firstgid … firstgid+tilecount−1 (and, in an image collection,
+// firstgid + its largest tile id), must all be gids.
 void check_gid_range(const Where& w, const Tileset& ts);
 // Sorts by id, so Tileset::tile can search.
 void sort_tiles(Tileset& ts);

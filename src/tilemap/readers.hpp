@@ -38,7 +38,8 @@ Tilemap read_map(std::string_view text, const std::string& path, LoadState& s);
 void load_tileset_file(const std::string& path, LoadState& s, const Where& from, Tileset& ts);
 
 // The template file `path` (resolved), named at `from`; read once per load
-// (cached in s.templates), a template that is being read refused as a loop.
+// (cached in s.templates). A template's own template= is not followed
+// (Tiled's templates do not nest), so templates cannot loop.
 std::shared_ptr<const ObjectTemplate> load_template_file(const std::string& path, LoadState& s,
                                                          const Where& from);
 

@@ -36,7 +36,11 @@ struct Failure {
 
 Failure failure_of(const std::string& path, const MapLimits& limits = {}) {
     try {
-        load_tilemap(path, {}, limits);
+        // Strict: a gid beyond every tileset is the error these cases expect.
+        LoadOptions options;
+        options.limits = limits;
+        options.strict = true;
+        load_tilemap(path, options);
     } catch (const MapError& e) {
         return {e.what(), e.file(), e.line()};
     }
@@ -260,6 +264,38 @@ TEST_CASE("parse_tilemap reads a map from memory, as load_tilemap would") {
                          MapError);
     CHECK_THROWS_WITH_AS(parse_tilemap(text, "mem.tmx", {}, {.max_cells = 0}),
                          "mem.tmx: max-cells 0 is not positive", MapError);
+}
+
+TEST_CASE("templates: FIFOs are refused, a template naming itself is not followed") {
+    const TempDir dir;
+    const std::string fifo = (dir.path / "pipe.tx").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string objects = "\n <objectgroup name=\"o\"><object id=\"1\" template=\"pipe.tx\"/></objectgroup>";
+    const std::string map = dir.write("m.tmx", small_map(kCsv, kTileset + objects));
+    CHECK(failure_of(map).what ==
+          map + ":4: cannot open template '" + fifo + "': is not a regular file (a FIFO)");
+    // Templates do not nest (Tiled's do not), so a loop cannot start.
+    dir.write("loop.tx", "<template><object name=\"l\" template=\"loop.tx\"/></template>");
+    const std::string looped = dir.write(
+        "l.tmx", small_map(kCsv, kTileset + "\n <objectgroup name=\"o\"><object id=\"1\" template=\"loop.tx\"/></objectgroup>"));
+    CHECK(load_tilemap(looped).object_layers.at(0).objects.at(0).name == "l");
+}
+
+TEST_CASE("class properties nest at most kMaxPropertyDepth deep") {
+    const auto nested = [](int depth) {
+        std::string inner = "<property name=\"leaf\" value=\"x\"/>";
+        for (int i = 0; i < depth; ++i)
+            inner = "<property name=\"c\" type=\"class\"><properties>" + inner + "</properties></property>";
+        return small_map(kCsv, kTileset + "\n <properties>" + inner + "</properties>");
+    };
+    const Tilemap deepest = parse_tilemap(nested(kMaxPropertyDepth), "mem.tmx");
+    const Property* p = &deepest.properties.at(0);
+    for (int i = 1; i < kMaxPropertyDepth; ++i) p = &p->members.at(0);
+    CHECK(p->members.at(0).name == "leaf");
+    CHECK_THROWS_WITH_AS(parse_tilemap(nested(kMaxPropertyDepth + 1), "mem.tmx"),
+                         "mem.tmx:4: properties nested more than 32 deep", MapError);
+    // Far deeper than tinyxml2 parses: its own refusal, still a MapError.
+    CHECK_THROWS_AS(parse_tilemap(nested(100000), "mem.tmx"), MapError);
 }
 
 TEST_CASE("make_tilemap keeps the loader's sizes") {
