@@ -133,6 +133,16 @@ void same_object(const MapObject& a, const MapObject& b) {
         CHECK(a.points[i].y == b.points[i].y);
     }
     CHECK(a.text.text == b.text.text);
+    CHECK(a.text.font_family == b.text.font_family);
+    CHECK(a.text.pixel_size == b.text.pixel_size);
+    CHECK(a.text.wrap == b.text.wrap);
+    CHECK(a.text.bold == b.text.bold);
+    CHECK(a.text.italic == b.text.italic);
+    CHECK(a.text.kerning == b.text.kerning);
+    CHECK(a.text.color == b.text.color);
+    CHECK(a.text.halign == b.text.halign);
+    CHECK(a.text.valign == b.text.valign);
+    CHECK(a.template_path.empty() == b.template_path.empty());
     same_properties(a.properties, b.properties, "object");
 }
 
@@ -207,7 +217,8 @@ TEST_SUITE("tmj") {
 
 TEST_CASE("each JSON twin loads into the model its TMX map loads into") {
     for (const char* name : {"level_xml", "level_csv", "level_base64", "level_zlib", "level_gzip",
-                             "level_zstd", "level_zstd_stream", "layers", "tilesets", "infinite"}) {
+                             "level_zstd", "level_zstd_stream", "layers", "tilesets", "infinite",
+                             "features/objects", "features/templates"}) {
         INFO(name);
         LoadOptions options;
         const Tilemap tmx = load_tilemap(map_path(std::string(name) + ".tmx"), options);
