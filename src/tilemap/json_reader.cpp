@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "../detail/json_properties.hpp"
-#include "../detail/json_values.hpp"
+#include "json_properties.hpp"
+#include "json_values.hpp"
 #include "map_build.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
@@ -168,7 +168,7 @@ std::vector<AnimationFrame> read_animation(const Node& list) {
     return frames;
 }
 
-TileInfo read_tile(const Node& n) {
+TileInfo read_tile(const JsonFile& f, const Node& n) {
     n.object();
     TileInfo t;
     t.id = json::uint_or(n, "id", std::nullopt);
@@ -178,7 +178,11 @@ TileInfo read_tile(const Node& n) {
     if (n.has("objectgroup")) {
         const Node group = n["objectgroup"];
         group.object();
-        t.has_collision_shapes = !json::array_or_empty(group, "objects").empty();
+        const Json& objects = json::array_or_empty(group, "objects");
+        t.has_collision_shapes = !objects.empty();
+        const Node list{&objects, group.path + ".objects"};
+        // No map: a template's gid stays as its template has it.
+        for (size_t i = 0; i < objects.size(); ++i) t.objects.push_back(read_map_object(f, list[i], nullptr));
     }
     if (n.has("image")) {
         t.image = n["image"].string();
@@ -214,7 +218,7 @@ void read_tileset_body(const JsonFile& f, const Node& n, Tileset& ts) {
     ts.properties = read_properties(n);
     if (n.has("tiles")) {
         const Node tiles = n["tiles"];
-        for (size_t i = 0; i < tiles.array().size(); ++i) ts.tiles.push_back(read_tile(tiles[i]));
+        for (size_t i = 0; i < tiles.array().size(); ++i) ts.tiles.push_back(read_tile(f, tiles[i]));
     }
     sort_tiles(ts);
 }

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "../detail/json_properties.hpp"
-#include "../detail/json_values.hpp"
+#include "json_properties.hpp"
+#include "json_values.hpp"
 #include "map_build.hpp"
 
 namespace ds {
@@ -156,8 +156,11 @@ void fill_class_defaults(Tilemap& map, const ProjectTypes& types) {
     f.fill_tree(map.layer_tree);
     for (Tileset& ts : map.tilesets) {
         f.fill_all(ts.properties, "tileset '" + ts.name + "'");
-        for (TileInfo& t : ts.tiles)
-            f.fill_all(t.properties, "tile " + std::to_string(t.id) + " of tileset '" + ts.name + "'");
+        for (TileInfo& t : ts.tiles) {
+            const std::string where = "tile " + std::to_string(t.id) + " of tileset '" + ts.name + "'";
+            f.fill_all(t.properties, where);
+            for (MapObject& o : t.objects) f.fill_all(o.properties, "object of " + where);
+        }
     }
 }
 

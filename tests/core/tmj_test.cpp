@@ -58,6 +58,8 @@ void same_properties(const Properties& a, const Properties& b, const std::string
     for (size_t i = 0; i < a.size(); ++i) same_property(a[i], b[i], where);
 }
 
+void same_object(const MapObject& a, const MapObject& b);
+
 void same_tileset(const Tileset& a, const Tileset& b) {
     INFO("tileset '" << a.name << "'");
     CHECK(a.firstgid == b.firstgid);
@@ -86,6 +88,13 @@ void same_tileset(const Tileset& a, const Tileset& b) {
         CHECK(s.image_width == t.image_width);
         CHECK(s.image_height == t.image_height);
         same_properties(s.properties, t.properties, "tile");
+        REQUIRE(s.animation.size() == t.animation.size());
+        for (size_t k = 0; k < s.animation.size(); ++k) {
+            CHECK(s.animation[k].tile_id == t.animation[k].tile_id);
+            CHECK(s.animation[k].duration_ms == t.animation[k].duration_ms);
+        }
+        REQUIRE(s.objects.size() == t.objects.size());
+        for (size_t k = 0; k < s.objects.size(); ++k) same_object(s.objects[k], t.objects[k]);
     }
 }
 
@@ -117,7 +126,51 @@ void same_object(const MapObject& a, const MapObject& b) {
     CHECK(a.rotation == b.rotation);
     CHECK(a.gid == b.gid);
     CHECK(a.visible == b.visible);
+    CHECK(a.shape == b.shape);
+    REQUIRE(a.points.size() == b.points.size());
+    for (size_t i = 0; i < a.points.size(); ++i) {
+        CHECK(a.points[i].x == b.points[i].x);
+        CHECK(a.points[i].y == b.points[i].y);
+    }
+    CHECK(a.text.text == b.text.text);
+    CHECK(a.text.font_family == b.text.font_family);
+    CHECK(a.text.pixel_size == b.text.pixel_size);
+    CHECK(a.text.wrap == b.text.wrap);
+    CHECK(a.text.bold == b.text.bold);
+    CHECK(a.text.italic == b.text.italic);
+    CHECK(a.text.kerning == b.text.kerning);
+    CHECK(a.text.color == b.text.color);
+    CHECK(a.text.halign == b.text.halign);
+    CHECK(a.text.valign == b.text.valign);
+    CHECK(a.template_path.empty() == b.template_path.empty());
     same_properties(a.properties, b.properties, "object");
+}
+
+void same_tree(const std::vector<LayerInfo>& a, const std::vector<LayerInfo>& b) {
+    REQUIRE(a.size() == b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        const LayerInfo &s = a[i], &t = b[i];
+        INFO("layer tree '" << s.name << "'");
+        CHECK(s.kind == t.kind);
+        CHECK(s.id == t.id);
+        CHECK(s.name == t.name);
+        CHECK(s.type == t.type);
+        CHECK(s.visible == t.visible);
+        CHECK(s.opacity == t.opacity);
+        CHECK(s.offset_x == t.offset_x);
+        CHECK(s.offset_y == t.offset_y);
+        CHECK(s.parallax_x == t.parallax_x);
+        CHECK(s.parallax_y == t.parallax_y);
+        CHECK(s.tint_color == t.tint_color);
+        CHECK(s.index == t.index);
+        CHECK(s.image == t.image);
+        CHECK(s.image_width == t.image_width);
+        CHECK(s.image_height == t.image_height);
+        CHECK(s.repeat_x == t.repeat_x);
+        CHECK(s.repeat_y == t.repeat_y);
+        same_properties(s.properties, t.properties, "layer tree");
+        same_tree(s.children, t.children);
+    }
 }
 
 // Field by field: what both readers produce for the same map. (The paths
@@ -141,6 +194,9 @@ void same_model(const Tilemap& a, const Tilemap& b) {
         REQUIRE(s.objects.size() == t.objects.size());
         for (size_t j = 0; j < s.objects.size(); ++j) same_object(s.objects[j], t.objects[j]);
     }
+    same_tree(a.layer_tree, b.layer_tree);
+    CHECK(a.type == b.type);
+    CHECK(a.background_color == b.background_color);
     CHECK(a.warnings.size() == b.warnings.size());
     const TileGrid ga = a.solid_grid(), gb = b.solid_grid();
     CHECK(ga.cols() == gb.cols());
@@ -161,7 +217,8 @@ TEST_SUITE("tmj") {
 
 TEST_CASE("each JSON twin loads into the model its TMX map loads into") {
     for (const char* name : {"level_xml", "level_csv", "level_base64", "level_zlib", "level_gzip",
-                             "level_zstd", "level_zstd_stream", "layers", "tilesets", "infinite"}) {
+                             "level_zstd", "level_zstd_stream", "layers", "tilesets", "infinite",
+                             "features/objects", "features/templates"}) {
         INFO(name);
         LoadOptions options;
         const Tilemap tmx = load_tilemap(map_path(std::string(name) + ".tmx"), options);
@@ -455,6 +512,10 @@ TEST_CASE("refusals name the file, the JSON path and the reason") {
           "m.tmj: layers[0].chunks[0].width is a string (\"2\"), expected a non-negative integer");
     CHECK(parse_error(head + R"("tilesets":[{"firstgid":1,"source":"nope.tsj"}]})", json_path("m.tmj")) ==
           json_path("m.tmj") + ": cannot open tileset '" + json_path("nope.tsj") + "': No such file or directory");
+    std::string deep = "{}";
+    for (int i = 0; i < 40; ++i) deep = "{\"a\":" + deep + "}";
+    CHECK(parse_error(head + R"("properties":[{"name":"p","type":"class","value":)" + deep + "}]}").find(
+              " nests properties more than 32 deep") != std::string::npos);
     CHECK(parse_error(std::string(200, '[') + std::string(200, ']')) == "m.tmj: JSON nested more than 128 deep");
 }
 

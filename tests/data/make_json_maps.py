@@ -66,17 +66,35 @@ def gids(data):
     return (data.text or "").strip()  # base64: the same string
 
 
+def text_of(t):
+    d = {"text": t.text or ""}
+    for k in ("fontfamily", "color", "halign", "valign"):
+        if t.get(k) is not None:
+            d[k] = t.get(k)
+    if t.get("pixelsize") is not None:
+        d["pixelsize"] = int(t.get("pixelsize"))
+    for k in ("wrap", "bold", "italic", "underline", "strikeout", "kerning"):
+        if t.get(k) is not None:
+            d[k] = t.get(k) == "1"
+    return d
+
+
 def obj(o):
-    d = {"id": int(o.get("id", "0")), "name": o.get("name", "")}
-    if o.get("type") is not None:
-        d["type"] = o.get("type")
-    if o.get("class") is not None:
-        d["class"] = o.get("class")
+    """Only the fields the TMX writes, as Tiled's JSON does for a template
+    instance (the rest comes from its template)."""
+    d = {"id": int(o.get("id", "0"))}
+    if o.get("template"):
+        d["template"] = o.get("template").replace(".tx", ".tj")
+    for k in ("name", "type", "class"):
+        if o.get(k) is not None:
+            d[k] = o.get(k)
     for k in ("x", "y", "width", "height", "rotation"):
-        d[k] = number(o.get(k, "0"))
+        if o.get(k) is not None:
+            d[k] = number(o.get(k))
     if o.get("gid"):
         d["gid"] = int(o.get("gid"))
-    d["visible"] = o.get("visible", "1") == "1"
+    if o.get("visible") is not None:
+        d["visible"] = o.get("visible") == "1"
     if o.find("point") is not None:
         d["point"] = True
     if o.find("ellipse") is not None:
@@ -86,7 +104,19 @@ def obj(o):
         if s is not None:
             d[shape] = [{"x": number(a), "y": number(b)} for a, b in
                         (pt.split(",") for pt in s.get("points").split())]
+    if o.find("text") is not None:
+        d["text"] = text_of(o.find("text"))
     return with_props(d, o)
+
+
+def convert_template(src, dst):
+    root = ET.parse(os.path.join(MAPS, src)).getroot()
+    d = {"type": "template", "object": obj(root.find("object"))}
+    d["object"].pop("template", None)  # templates do not nest
+    ts = root.find("tileset")
+    if ts is not None:
+        d["tileset"] = {"firstgid": int(ts.get("firstgid")), "source": ts.get("source").replace(".tsx", ".tsj")}
+    write(dst, d)
 
 
 def layer_common(e, kind):
@@ -191,11 +221,11 @@ def convert_map(src, dst):
     root = ET.parse(os.path.join(MAPS, src)).getroot()
     infinite = root.get("infinite") == "1"
     d = {"type": "map", "version": "1.10", "tiledversion": "1.10.2", "compressionlevel": -1,
-         "orientation": root.get("orientation"), "renderorder": root.get("renderorder"),
+         "orientation": root.get("orientation"), "renderorder": root.get("renderorder", "right-down"),
          "width": int(root.get("width")), "height": int(root.get("height")),
          "tilewidth": int(root.get("tilewidth")), "tileheight": int(root.get("tileheight")),
-         "infinite": infinite, "nextlayerid": int(root.get("nextlayerid")),
-         "nextobjectid": int(root.get("nextobjectid")),
+         "infinite": infinite, "nextlayerid": int(root.get("nextlayerid", "1")),
+         "nextobjectid": int(root.get("nextobjectid", "1")),
          "tilesets": [tileset_ref(t) for t in root.findall("tileset")],
          "layers": layers(root, infinite)}
     write(dst, with_props(d, root))
@@ -222,6 +252,12 @@ def main():
     for name in ("layers", "tilesets", "infinite"):
         convert_map(f"{name}.tmx", f"{name}.tmj")
     convert_tileset("tilesets/terrain.tsx", "tilesets/terrain.tsj")
+    # The TMX features (tests/data/make_feature_maps.py): shapes and text,
+    # templates in maps and in a tileset's tile.
+    for name in ("objects", "templates"):
+        convert_map(f"features/{name}.tmx", f"features/{name}.tmj")
+    for name in ("spawn", "crate", "self"):
+        convert_template(f"features/templates/{name}.tx", f"features/templates/{name}.tj")
 
 
 if __name__ == "__main__":

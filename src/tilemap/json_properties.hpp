@@ -6,13 +6,15 @@
 #pragma once
 #include <string>
 
-#include "../tilemap/tilemap.hpp"
+#include "tilemap.hpp"
 #include "json_values.hpp"
 
 namespace ds::json {
 
-// One property or class member definition: `n` is its {type, value, ...} object.
-Property read_typed(const Node& n, std::string name);
+// One property or class member definition: `n` is its {type, value, ...}
+// object, `depth` how many classes or lists it is inside (at most
+// kMaxPropertyDepth, as TMX).
+Property read_typed(const Node& n, std::string name, int depth = 0);
 // The "properties" array of `owner`, empty when absent.
 Properties read_properties(const Node& owner);
 
