@@ -123,8 +123,10 @@ def json_props(lst):
 
 def json_class_members(value):
     # A class's value is an object of member name → value; a member's type is
-    # not written, so it is guessed from the JSON value (a nested object is
-    # a class).
+    # not written (only a project file knows it), so it is taken from the
+    # JSON value: an object is a class, an array a list of typed items, true
+    # and false a bool, a number with no fraction an int, any other number a
+    # float, text a string (a color or file member reads as a string).
     members = []
     for k, v in (value or {}).items():
         members.append(json_value_prop(k, v))
@@ -135,7 +137,7 @@ def json_value_prop(name, v):
     if isinstance(v, dict):
         return Prop(name, "class", "", "", json_class_members(v))
     if isinstance(v, list):
-        return Prop(name, "list", "", "", [json_value_prop("", i) for i in v])
+        return Prop(name, "list", "", "", [json_item(i) for i in v])
     if isinstance(v, bool):
         return Prop(name, "bool", v)
     if isinstance(v, int):
@@ -482,8 +484,9 @@ def read_template(m, path):
 
 
 def resolve_template(m, obj):
-    """Tiled's order: the template's fields, then the instance's own; the
-    template's properties, then the instance's by name."""
+    """As Tiled resolves it: the template's fields, then the instance's own;
+    the template's properties, each replaced by the instance's of that name,
+    then the instance's others."""
     base = read_template(m, rel(m.path, obj["template"]))
     out = dict(base)
     for k, v in obj.items():
@@ -491,7 +494,11 @@ def resolve_template(m, obj):
             out[k] = v
     props = list(base["props"])
     for p in obj["props"]:
-        props = [q for q in props if q.name != p.name] + [p]
+        same = [i for i, q in enumerate(props) if q.name == p.name]
+        if same:
+            props[same[0]] = p  # an instance's value takes the template's place
+        else:
+            props.append(p)
     out["props"] = props
     return out
 

@@ -58,7 +58,6 @@ BENCH_MAP = "bench/maps/platformer-60x15.tmx"
 MAP_NEEDS = {
     "data/tilesets": {"sparse"},
     "features/templates": {"templates"},
-    "features/properties": {"nested-props"},
     "features/sparse": {"sparse"},
 }
 
@@ -259,6 +258,25 @@ def make_group(group, manifest):
         os.remove(tmp.name)
 
 
+# Maps written by hand in a newer Tiled's format than Debian's Tiled 1.8 can
+# write (class members, list properties), copied into maps/features/ as
+# they are.
+HANDMADE = os.path.join(HERE, "sources", "handmade")
+HANDMADE_NEEDS = {}  # by name; properties.tmx loads today, its members are the nested-props part
+
+
+def copy_handmade(manifest):
+    out_dir = os.path.join(OUT, "features")
+    for f in sorted(os.listdir(HANDMADE)):
+        name, ext = os.path.splitext(f)
+        shutil.copy(os.path.join(HANDMADE, f), os.path.join(out_dir, f))
+        if ext in (".tmx", ".tmj"):
+            needs = set(HANDMADE_NEEDS.get(name, set()))
+            if ext == ".tmj":
+                needs.add("json")
+            manifest.append((os.path.join(out_dir, f), needs))
+
+
 def main():
     if shutil.which("tiled") is None:
         raise SystemExit("make_corpus: needs Tiled (Debian: apt-get install tiled)")
@@ -267,6 +285,7 @@ def main():
     manifest = []
     for group in GROUPS:
         make_group(group, manifest)
+    copy_handmade(manifest)
     with open(os.path.join(OUT, "MANIFEST"), "w", encoding="utf-8") as f:
         f.write("# Written by make_corpus.py: each corpus map and what the loader must read to load it.\n")
         for path, needs in manifest:
