@@ -1,0 +1,96 @@
+// The public entry points of loading a map, and the dispatch that sends each
+// file (map, tileset, template) to the reader its content calls for.
+#include <algorithm>
+
+#include "map_build.hpp"
+#include "readers.hpp"
+#include "tilemap.hpp"
+
+namespace ds {
+
+namespace build {
+
+Syntax sniff_syntax(std::string_view text) {
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+    const size_t first = text.find_first_not_of(" \t\r\n");
+    return first != std::string_view::npos && text[first] == '{' ? Syntax::Json : Syntax::Xml;
+}
+
+Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
+    const Where file{path, 0, ""};
+    return sniff_syntax(text) == Syntax::Json ? read_json_map(text, file, s)
+                                              : read_tmx_map(text, file, s);
+}
+
+namespace {
+
+std::string named_at(const char* what, const Where& from) {
+    return std::string(" (") + what + " of " + from.file +
+           (from.line > 0 ? ":" + std::to_string(from.line) : "") + ")";
+}
+
+}  // namespace
+
+void load_tileset_file(const std::string& path, LoadState& s, const Where& from, Tileset& ts) {
+    std::string error;
+    const auto text = read_counted(s, path, error);
+    if (!text) from.fail("cannot open tileset '" + path + "': " + error);
+    const Where file{path, 0, named_at("tileset", from)};
+    if (sniff_syntax(*text) == Syntax::Json)
+        read_json_tileset(*text, file, s, ts);
+    else
+        read_tsx_tileset(*text, file, s, ts);
+}
+
+std::shared_ptr<const ObjectTemplate> load_template_file(const std::string& path, LoadState& s,
+                                                         const Where& from) {
+    if (auto it = s.templates.find(path); it != s.templates.end()) return it->second;
+    if (std::find(s.templates_open.begin(), s.templates_open.end(), path) != s.templates_open.end())
+        from.fail("template '" + path + "' uses itself");
+    std::string error;
+    const auto text = read_counted(s, path, error);
+    if (!text) from.fail("cannot open template '" + path + "': " + error);
+    const Where file{path, 0, named_at("template", from)};
+    s.templates_open.push_back(path);
+    auto tmpl = std::make_shared<ObjectTemplate>(sniff_syntax(*text) == Syntax::Json
+                                                     ? read_json_template(*text, file, s)
+                                                     : read_tx_template(*text, file, s));
+    s.templates_open.pop_back();
+    tmpl->path = path;
+    s.templates.emplace(path, tmpl);
+    return tmpl;
+}
+
+}  // namespace build
+
+Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids,
+                     const MapLimits& limits) {
+    LoadOptions options;
+    options.solid_gids = std::move(solid_gids);
+    options.limits = limits;
+    options.strict = true;
+    return load_tilemap(path, options);
+}
+
+Tilemap load_tilemap(const std::string& path, const LoadOptions& options) {
+    build::check_limits(path, options.limits);
+    build::LoadState state(options);
+    std::string error;
+    const auto text = build::read_counted(state, path, error);
+    if (!text) throw MapError(path, 0, "cannot open map: " + error);
+    return build::read_map(*text, path, state);
+}
+
+Tilemap parse_tilemap(std::string_view text, const std::string& path,
+                      std::vector<uint32_t> solid_gids, const MapLimits& limits) {
+    build::check_limits(path, limits);
+    LoadOptions options;
+    options.solid_gids = std::move(solid_gids);
+    options.limits = limits;
+    options.strict = true;
+    build::LoadState state(options);
+    build::count_text(state, text, path);
+    return build::read_map(text, path, state);
+}
+
+}  // namespace ds
