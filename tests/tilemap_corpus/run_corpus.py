@@ -14,7 +14,8 @@ read yet stays out of the comparison by name, not by accident:
   tileset-extra (tile offsets, animations, classes, layer offsets);
 - what a map needs to load at all (MANIFEST's needs=): json (.tmj maps,
   .tsj tilesets), templates (.tx), nested-props (class/list members),
-  sparse (gids beyond a tileset, sparse image collections).
+  sparse (gids beyond a tileset, sparse image collections), text-encodings
+  (a map declaring ISO-8859-1).
 
 DEFAULT_ENABLED is what the loader reads on this branch; --enable adds
 features, --all enables every one, and DS_CORPUS_ENABLE (comma-separated)
@@ -32,11 +33,12 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, HERE)
 import decode_tiled  # noqa: E402
 
-LOAD_FEATURES = ("json", "templates", "sparse")
+LOAD_FEATURES = ("json", "templates", "sparse", "text-encodings")
 ALL_FEATURES = tuple(p for p in decode_tiled.ALL_PARTS if p != "base") + LOAD_FEATURES
 # What ds::load_tilemap reads on this branch (issue 22 in progress: the JSON
-# reader, templates, shapes and the layer tree are still being written).
-DEFAULT_ENABLED = ()
+# reader, templates, shapes, class members, the layer tree and text in
+# other encodings are still being written).
+DEFAULT_ENABLED = ("sparse",)
 
 
 def read_manifest(corpus):
@@ -69,8 +71,9 @@ def features_from(args):
 
 
 def loader_dump(dump_map, path, parts_arg):
-    r = subprocess.run([dump_map, parts_arg, path], capture_output=True, text=True, timeout=60)
-    return r.returncode, r.stdout, r.stderr
+    r = subprocess.run([dump_map, parts_arg, path], capture_output=True, timeout=60)
+    # Bytes that are not UTF-8 show in the diff instead of stopping it.
+    return r.returncode, r.stdout.decode("utf-8", "backslashreplace"), r.stderr.decode("utf-8", "backslashreplace")
 
 
 def decoder_dump(path, parts):
