@@ -109,7 +109,7 @@ def xml_prop(p):
     if ptype == "class":
         return Prop(name, ptype, "", p.get("propertytype", ""), xml_props(p))
     if ptype == "list":
-        items = [xml_prop(i) for i in p.findall("item")]
+        items = [xml_prop(i) for i in p.findall("value")]  # a list's items are <value>s
         return Prop(name, ptype, "", p.get("propertytype", ""), items)
     value = p.get("value")
     if value is None:
@@ -293,7 +293,7 @@ def tile_from_xml(t):
     anim = t.find("animation")
     return {
         "id": int(t.get("id", "0")),
-        "type": t.get("class", t.get("type", "")),
+        "type": type_or_class(t.get("type"), t.get("class")),
         "props": xml_props(t),
         "shapes": og is not None and og.find("object") is not None,
         "image": img.get("source", "") if img is not None else "",
@@ -321,7 +321,7 @@ def tile_from_json(t):
     og = t.get("objectgroup")
     return {
         "id": int(t.get("id", 0)),
-        "type": t.get("class", t.get("type", "")),
+        "type": type_or_class(t.get("type"), t.get("class")),
         "props": json_props(t.get("properties")),
         "shapes": bool(og and og.get("objects")),
         "image": t.get("image", ""),
@@ -409,6 +409,12 @@ def layer_solidity(props):
 
 # --- objects and templates ----------------------------------------------------
 
+def type_or_class(type_, class_):
+    """An object's or tile's type: type= (Tiled up to 1.8, and again from
+    1.10), else class= (Tiled 1.9); semantics §7, "type or class"."""
+    return type_ if type_ else (class_ or "")
+
+
 OBJECT_FIELDS = ("id", "name", "type", "x", "y", "width", "height", "rotation", "visible", "gid")
 
 
@@ -418,7 +424,7 @@ def object_from_xml(o):
         if o.get(k) is not None:
             obj[k] = o.get(k)
     if o.get("class") is not None or o.get("type") is not None:
-        obj["type"] = o.get("class", o.get("type"))
+        obj["type"] = type_or_class(o.get("type"), o.get("class"))
     if o.get("visible") is not None:
         obj["visible"] = truthy(o.get("visible"))
     if o.get("template") is not None:
@@ -447,7 +453,7 @@ def object_from_json(o):
         if k in o:
             obj[k] = o[k]
     if "class" in o or "type" in o:
-        obj["type"] = o.get("class", o.get("type"))
+        obj["type"] = type_or_class(o.get("type"), o.get("class"))
     if o.get("ellipse"):
         obj["shape"] = "ellipse"
     if o.get("point"):

@@ -12,6 +12,7 @@ maps; not bad/ or hostile/) and each hand-made feature map in sources/:
 - the map with its layer data rewritten here into each encoding (XML
   tiles, CSV, base64, base64+zlib/gzip/zstd), then loaded and re-saved by
   Tiled, so that every corpus file is Tiled's own writing: NAME.ENC.tmx;
+- the maps of tests/data/maps also as shipped (data-shipped/);
 - each of those exported to JSON (NAME.ENC.tmj; XML tiles and CSV are both
   an array there, so the CSV one stands for both), the CSV one with its
   tilesets embedded (NAME.embedded.tmj), and the CSV one naming the .tsj
@@ -44,6 +45,10 @@ ENCODINGS = ("xml", "csv", "base64", "zlib", "gzip", "zstd")
 GROUPS = {
     "demo": ("demo/maps", ["level1", "platformer", "sandbox", "shmup", "topdown", "tweens"]),
     "data": ("tests/data/maps", ["infinite", "layers", "level_csv", "tilesets"]),
+    # Copied as shipped (Tiled 1.10's writing, and a zstd stream without a
+    # content size), beside the re-saved tilesets: the level_* maps are one
+    # map in each encoding, which the re-saved level_csv covers again.
+    "data-shipped": ("tests/data/maps", None),
     "render": ("tests/data/maps/render", ["render", "no-image"]),
     "features": ("tests/tilemap_corpus/sources", None),  # every .tmx there
 }
@@ -244,6 +249,12 @@ def make_group(group, manifest):
     resave_tilesets(out_dir)
     if names is None:
         names = sorted(f[:-4] for f in os.listdir(src_dir) if f.endswith(".tmx"))
+    if group == "data-shipped":
+        for f in sorted(os.listdir(src_dir)):
+            if f.endswith(".tmx"):
+                shutil.copy(os.path.join(src_dir, f), os.path.join(out_dir, f))
+                manifest.append((os.path.join(out_dir, f), set(MAP_NEEDS.get("data/" + f[:-4], set()))))
+        return
     for name in names:
         print("corpus: %s/%s" % (group, name))
         needs = set(MAP_NEEDS.get(group + "/" + name, set()))
