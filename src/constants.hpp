@@ -68,6 +68,11 @@ constexpr int64_t kMaxImageSide = int64_t{1} << 16;
 // loader's recursion shallow whatever tinyxml2's own depth limit is.
 constexpr int kMaxGroupDepth = 32;
 
+// Class properties inside class (and list) properties: Tiled's own types
+// nest a few levels; the bound keeps the loader's recursion shallow and a
+// hostile file from building a deep chain of members.
+constexpr int kMaxPropertyDepth = 32;
+
 // ---- speed: each changes only how fast an answer comes, never the answer
 // Bodies per block of the per-entity steps: 1024 × 168 B (172 KB) stays in
 // L2 while all seven steps pass over it.

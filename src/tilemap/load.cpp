@@ -68,7 +68,6 @@ Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids,
     LoadOptions options;
     options.solid_gids = std::move(solid_gids);
     options.limits = limits;
-    options.strict = true;
     return load_tilemap(path, options);
 }
 
@@ -87,7 +86,6 @@ Tilemap parse_tilemap(std::string_view text, const std::string& path,
     LoadOptions options;
     options.solid_gids = std::move(solid_gids);
     options.limits = limits;
-    options.strict = true;
     build::LoadState state(options);
     build::count_text(state, text, path);
     return build::read_map(text, path, state);

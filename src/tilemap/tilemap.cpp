@@ -98,7 +98,9 @@ const Tileset* Tilemap::tileset_for(uint32_t gid) const {
 
 bool Tilemap::gid_solid(uint32_t gid) const {
     gid &= kGidMask;
-    if (gid == 0) return false;
+    // A gid beyond every tileset (loaded with a warning) is drawn as missing
+    // and never solid, whatever the layer or the script say.
+    if (gid == 0 || !gid_known(gid)) return false;
     for (const uint32_t s : extra_solid_gids)
         if ((s & kGidMask) == gid) return true;
     const Tileset* ts = tileset_for(gid);
@@ -109,7 +111,7 @@ bool Tilemap::cell_solid(int64_t col, int64_t row) const {
     for (const TileLayer& layer : layers) {
         if (layer.solidity == LayerSolidity::None) continue;
         const uint32_t gid = layer.raw_gid(col, row) & kGidMask;
-        if (gid == 0) continue;
+        if (gid == 0 || !gid_known(gid)) continue;
         if (layer.solidity == LayerSolidity::All || gid_solid(gid)) return true;
     }
     return false;
@@ -168,19 +170,22 @@ TileGrid Tilemap::solid_grid() const {
     std::vector<uint8_t> solid(static_cast<size_t>(cols) * static_cast<size_t>(rows), 0);
     // Layer by layer rather than cell_solid per cell: one pass over each
     // layer's own cells, with each distinct gid's metadata looked up once.
-    std::unordered_map<uint32_t, uint8_t> gid_cache;  // gid → cell kind
+    // gid → the cell kind its tile metadata gives, or kUnknownGid.
+    constexpr uint8_t kUnknownGid = 0xFF;
+    std::unordered_map<uint32_t, uint8_t> gid_cache;
     for (const TileLayer& l : layers) {
         if (l.solidity == LayerSolidity::None) continue;
         for (int r = 0; r < l.height; ++r) {
             for (int c = 0; c < l.width; ++c) {
                 const uint32_t gid = l.cells[static_cast<size_t>(r) * l.width + c] & kGidMask;
                 if (gid == 0) continue;
-                uint8_t kind = kSolidCell;
-                if (l.solidity != LayerSolidity::All) {
-                    auto [it, fresh] = gid_cache.try_emplace(gid, kEmptyCell);
-                    if (fresh) it->second = gid_solid(gid) ? kSolidCell : gid_one_way(gid) ? kOneWayCell : kEmptyCell;
-                    kind = it->second;
-                }
+                auto [it, fresh] = gid_cache.try_emplace(gid, kUnknownGid);
+                if (fresh && gid_known(gid))
+                    it->second = gid_solid(gid) ? kSolidCell : gid_one_way(gid) ? kOneWayCell : kEmptyCell;
+                // Unknown gids are never solid, even in a solid layer.
+                const uint8_t kind = it->second == kUnknownGid           ? kEmptyCell
+                                     : l.solidity == LayerSolidity::All ? kSolidCell
+                                                                        : it->second;
                 if (kind == kEmptyCell) continue;
                 const int64_t gc = l.origin_col + c - b.col0, gr = l.origin_row + r - b.row0;
                 uint8_t& cell = solid[static_cast<size_t>(gr * cols + gc)];

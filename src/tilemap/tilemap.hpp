@@ -47,6 +47,39 @@ struct AnimationFrame {
     int duration_ms = 0;
 };
 
+// What an object is, as Tiled draws it. A tile object is one with a gid.
+enum class ObjectShape : uint8_t { Rectangle, Ellipse, Point, Polygon, Polyline, Text, Tile };
+
+struct ObjectPoint {
+    double x = 0, y = 0;  // px, relative to the object's x, y
+};
+
+// A text object's text and the attributes Tiled writes for it.
+struct ObjectText {
+    std::string text;
+    std::string font_family = "sans-serif";
+    int pixel_size = 16;
+    bool wrap = false, bold = false, italic = false, underline = false, strikeout = false;
+    bool kerning = true;
+    std::string color = "#000000";  // as written: #RRGGBB or #AARRGGBB
+    std::string halign = "left", valign = "top";
+};
+
+struct MapObject {
+    int id = 0;
+    std::string name, type;  // type= or class=
+    double x = 0, y = 0, width = 0, height = 0, rotation = 0;  // rotation in degrees, clockwise
+    uint32_t gid = 0;  // raw (flip bits kept), for tile objects
+    bool visible = true;
+    ObjectShape shape = ObjectShape::Rectangle;
+    std::vector<ObjectPoint> points;  // a polygon's or polyline's
+    ObjectText text;                  // a text object's
+    // The template it was made from, resolved against the map's folder (empty
+    // when none); its fields are already merged in (template, then instance).
+    std::string template_path;
+    Properties properties;
+};
+
 struct TileInfo {  // a tileset's <tile> that carries something
     uint32_t id = 0;  // local id within its tileset
     std::string type; // type= (Tiled ≤1.8) or class= (≥1.9)
@@ -57,6 +90,8 @@ struct TileInfo {  // a tileset's <tile> that carries something
     std::string image;
     int image_width = 0, image_height = 0;
     std::vector<AnimationFrame> animation;  // empty when the tile is still
+    // The shapes of its <objectgroup> (templates merged in), in tile px.
+    std::vector<MapObject> objects;
 };
 
 struct Tileset {
@@ -114,39 +149,6 @@ struct TileLayer {
     double offset_x = 0, offset_y = 0;
 
     uint32_t raw_gid(int64_t col, int64_t row) const;  // 0 outside the layer
-};
-
-// What an object is, as Tiled draws it. A tile object is one with a gid.
-enum class ObjectShape : uint8_t { Rectangle, Ellipse, Point, Polygon, Polyline, Text, Tile };
-
-struct ObjectPoint {
-    double x = 0, y = 0;  // px, relative to the object's x, y
-};
-
-// A text object's text and the attributes Tiled writes for it.
-struct ObjectText {
-    std::string text;
-    std::string font_family = "sans-serif";
-    int pixel_size = 16;
-    bool wrap = false, bold = false, italic = false, underline = false, strikeout = false;
-    bool kerning = true;
-    std::string color = "#000000";  // as written: #RRGGBB or #AARRGGBB
-    std::string halign = "left", valign = "top";
-};
-
-struct MapObject {
-    int id = 0;
-    std::string name, type;  // type= or class=
-    double x = 0, y = 0, width = 0, height = 0, rotation = 0;  // rotation in degrees, clockwise
-    uint32_t gid = 0;  // raw (flip bits kept), for tile objects
-    bool visible = true;
-    ObjectShape shape = ObjectShape::Rectangle;
-    std::vector<ObjectPoint> points;  // a polygon's or polyline's
-    ObjectText text;                  // a text object's
-    // The template it was made from, resolved against the map's folder (empty
-    // when none); its fields are already merged in (template, then instance).
-    std::string template_path;
-    Properties properties;
 };
 
 struct ObjectLayer {

@@ -19,6 +19,7 @@
 #include "map_build.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
+#include "xml_encoding.hpp"
 
 namespace ds::build {
 
@@ -52,7 +53,15 @@ std::string xml_error(const tinyxml2::XMLDocument& doc) {
     return message;
 }
 
-void parse_xml(XmlFile& f, std::string_view text) {
+// The text in UTF-8 first (xml_encoding.hpp), so every string read from it
+// and every message quoting it is valid UTF-8; tinyxml2 copies it.
+void parse_xml(XmlFile& f, std::string_view raw) {
+    std::string text;
+    try {
+        text = tmx::xml_text_as_utf8(raw);
+    } catch (const tmx::EncodingError& e) {
+        f.where.at(e.line()).fail(e.what());
+    }
     if (f.doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
         f.where.at(f.doc.ErrorLineNum()).fail(xml_error(f.doc));
 }
@@ -146,18 +155,43 @@ void each_child(const XMLElement* parent, const char* name, Fn fn) {
         fn(c);
 }
 
-Properties read_properties(const XMLElement* owner) {
+Property read_property(const XmlFile& f, const XMLElement* p, int depth);
+
+// The <property> (or, in a list, <value>) children of `list`.
+Properties read_property_list(const XmlFile& f, const XMLElement* list, const char* child,
+                              int depth) {
+    if (depth > kMaxPropertyDepth)
+        f.fail(list, "properties nested more than " + std::to_string(kMaxPropertyDepth) + " deep");
     Properties out;
-    const XMLElement* list = owner->FirstChildElement("properties");
-    if (!list) return out;
-    each_child(list, "property", [&](const XMLElement* p) {
-        // Multi-line strings are written as the element's text, not value=.
-        const char* value = p->Attribute("value");
-        if (!value) value = p->GetText();
-        out.push_back({str_attr(p, "name"), str_attr(p, "type", "string"), value ? value : "", "", {}});
-    });
+    each_child(list, child, [&](const XMLElement* p) { out.push_back(read_property(f, p, depth)); });
     return out;
 }
+
+// A class keeps its members (its nested <properties>), a list its items
+// (<value> children, nameless); a scalar its value=, or, for multi-line
+// strings, the element's text.
+Property read_property(const XmlFile& f, const XMLElement* p, int depth) {
+    Property out{str_attr(p, "name"), str_attr(p, "type", "string"), "",
+                 str_attr(p, "propertytype"), {}};
+    if (out.type == "class") {
+        if (const XMLElement* members = p->FirstChildElement("properties"))
+            out.members = read_property_list(f, members, "property", depth + 1);
+    } else if (out.type == "list") {
+        out.members = read_property_list(f, p, "value", depth + 1);
+    } else {
+        const char* value = p->Attribute("value");
+        if (!value) value = p->GetText();
+        out.value = value ? value : "";
+    }
+    return out;
+}
+
+Properties read_properties(const XmlFile& f, const XMLElement* owner) {
+    const XMLElement* list = owner->FirstChildElement("properties");
+    return list ? read_property_list(f, list, "property", 0) : Properties{};
+}
+
+MapObject read_object(const XmlFile& f, const XMLElement* e, Tilemap* map, ObjectFields* written);
 
 // --- tilesets ---------------------------------------------------------------
 
@@ -179,14 +213,23 @@ TileInfo read_tile(const XmlFile& f, const XMLElement* e) {
     TileInfo t;
     t.id = uint_attr(f, e, "id", std::nullopt);
     t.type = type_or_class(e);
-    t.properties = read_properties(e);
+    t.properties = read_properties(f, e);
     // Only an <objectgroup> holding at least one shape counts as collision.
     const XMLElement* shapes = e->FirstChildElement("objectgroup");
     t.has_collision_shapes = shapes && shapes->FirstChildElement("object");
+    if (shapes)
+        each_child(shapes, "object", [&](const XMLElement* o) {
+            t.objects.push_back(read_object(f, o, nullptr, nullptr));
+        });
     if (const XMLElement* img = e->FirstChildElement("image")) {
         t.image = str_attr(img, "source");
         read_image_size(f, img, t.image_width, t.image_height);
     }
+    if (const XMLElement* anim = e->FirstChildElement("animation"))
+        each_child(anim, "frame", [&](const XMLElement* fr) {
+            t.animation.push_back({uint_attr(f, fr, "tileid", std::nullopt),
+                                   size_attr(f, fr, "duration", std::nullopt)});
+        });
     return t;
 }
 
@@ -201,6 +244,12 @@ void read_tileset_body(const XmlFile& f, const XMLElement* e, Tileset& ts) {
     ts.columns = bounded_attr(f, e, "columns", kMaxImageSide);
     ts.spacing = bounded_attr(f, e, "spacing", kMaxImageSide);
     ts.margin = bounded_attr(f, e, "margin", kMaxImageSide);
+    ts.type = type_or_class(e);
+    ts.properties = read_properties(f, e);
+    if (const XMLElement* off = e->FirstChildElement("tileoffset")) {
+        ts.tile_offset_x = int_attr(f, off, "x", 0);
+        ts.tile_offset_y = int_attr(f, off, "y", 0);
+    }
     if (const XMLElement* img = e->FirstChildElement("image")) {
         ts.image = str_attr(img, "source");
         read_image_size(f, img, ts.image_width, ts.image_height);
@@ -300,18 +349,26 @@ std::pair<int, int> layer_size(const XmlFile& f, const XMLElement* e, const Tile
 LayerInfo read_layer_info(const XmlFile& f, const XMLElement* e, LayerKind kind) {
     LayerInfo info;
     info.kind = kind;
+    info.id = int_attr(f, e, "id", 0);
     info.name = str_attr(e, "name");
+    info.type = type_or_class(e);
     info.visible = flag_attr(f, e, "visible", true);
     info.opacity = double_attr(f, e, "opacity", 1.0);
+    info.offset_x = double_attr(f, e, "offsetx", 0);
+    info.offset_y = double_attr(f, e, "offsety", 0);
+    info.parallax_x = double_attr(f, e, "parallaxx", 1);
+    info.parallax_y = double_attr(f, e, "parallaxy", 1);
+    info.tint_color = str_attr(e, "tintcolor");
+    info.properties = read_properties(f, e);
     return info;
 }
 
-void read_tile_layer(const XmlFile& f, const XMLElement* e, GroupState g, Tilemap& map) {
-    const LayerInfo info = read_layer_info(f, e, LayerKind::Tile);
+void read_tile_layer(const XmlFile& f, const XMLElement* e, GroupState g, Tilemap& map,
+                     LayerInfo& info) {
     TileLayer l;
     l.name = info.name;
     g.apply(info, l);
-    l.properties = read_properties(e);
+    l.properties = info.properties;
     l.solidity = layer_solidity(l.properties);
     const XMLElement* data = e->FirstChildElement("data");
     if (!data) f.fail(e, "layer '" + l.name + "' has no <data>");
@@ -327,11 +384,86 @@ void read_tile_layer(const XmlFile& f, const XMLElement* e, GroupState g, Tilema
         l.cells = cells;
     }
     warn_unknown_gids(f.where, l.name, unknown, map);
+    info.index = map.layers.size();
     map.layers.push_back(std::move(l));
 }
 
-MapObject read_object(const XmlFile& f, const XMLElement* e) {
+// "x,y x,y …", each number strict: Tiled refuses the map otherwise.
+std::vector<ObjectPoint> read_points(const XmlFile& f, const XMLElement* e) {
+    const std::string written = str_attr(e, "points");
+    std::vector<ObjectPoint> points;
+    std::string_view rest = written;
+    while (!rest.empty()) {
+        const size_t start = rest.find_first_not_of(' ');
+        if (start == std::string_view::npos) break;
+        rest.remove_prefix(start);
+        const std::string_view pair = rest.substr(0, rest.find(' '));
+        rest.remove_prefix(pair.size());
+        const size_t comma = pair.find(',');
+        const auto x = comma == std::string_view::npos ? std::nullopt : parse_number<double>(pair.substr(0, comma));
+        const auto y = x ? parse_number<double>(pair.substr(comma + 1)) : std::nullopt;
+        if (!y)
+            f.fail(e, tag(e) + " points='" + written + "' has '" + std::string(pair) +
+                          "', not an x,y pair of numbers");
+        points.push_back({*x, *y});
+    }
+    return points;
+}
+
+ObjectText read_text(const XmlFile& f, const XMLElement* e) {
+    ObjectText t;
+    t.font_family = str_attr(e, "fontfamily", "sans-serif");
+    t.pixel_size = size_attr(f, e, "pixelsize", 16);
+    t.wrap = flag_attr(f, e, "wrap", false);
+    t.bold = flag_attr(f, e, "bold", false);
+    t.italic = flag_attr(f, e, "italic", false);
+    t.underline = flag_attr(f, e, "underline", false);
+    t.strikeout = flag_attr(f, e, "strikeout", false);
+    t.kerning = flag_attr(f, e, "kerning", true);
+    t.color = str_attr(e, "color", "#000000");
+    t.halign = str_attr(e, "halign", "left");
+    t.valign = str_attr(e, "valign", "top");
+    const char* text = e->GetText();
+    t.text = text ? text : "";
+    return t;
+}
+
+// The shape child of an <object>, if it has one.
+void read_shape(const XmlFile& f, const XMLElement* e, MapObject& o, ObjectFields& fields) {
+    for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        const std::string_view name = c->Name();
+        if (name == "ellipse") {
+            o.shape = ObjectShape::Ellipse;
+        } else if (name == "point") {
+            o.shape = ObjectShape::Point;
+        } else if (name == "polygon" || name == "polyline") {
+            o.shape = name == "polygon" ? ObjectShape::Polygon : ObjectShape::Polyline;
+            o.points = read_points(f, c);
+        } else if (name == "text") {
+            o.shape = ObjectShape::Text;
+            o.text = read_text(f, c);
+            fields.text = true;
+        } else {
+            continue;
+        }
+        fields.shape = true;
+    }
+}
+
+// An <object>; a template instance (template=) takes what it does not write
+// from its template. `map` is the map it is in (nullptr in a tileset).
+MapObject read_object(const XmlFile& f, const XMLElement* e, Tilemap* map, ObjectFields* written) {
     MapObject o;
+    ObjectFields fields;
+    fields.name = e->Attribute("name");
+    fields.type = e->Attribute("type") || e->Attribute("class");
+    fields.x = e->Attribute("x");
+    fields.y = e->Attribute("y");
+    fields.width = e->Attribute("width");
+    fields.height = e->Attribute("height");
+    fields.rotation = e->Attribute("rotation");
+    fields.gid = e->Attribute("gid");
+    fields.visible = e->Attribute("visible");
     o.id = int_attr(f, e, "id", 0);
     o.name = str_attr(e, "name");
     o.type = type_or_class(e);
@@ -342,16 +474,34 @@ MapObject read_object(const XmlFile& f, const XMLElement* e) {
     o.rotation = double_attr(f, e, "rotation", 0);
     o.gid = uint_attr(f, e, "gid", 0u);
     o.visible = flag_attr(f, e, "visible", true);
-    o.properties = read_properties(e);
+    o.properties = read_properties(f, e);
+    read_shape(f, e, o, fields);
+    if (o.gid != 0) o.shape = ObjectShape::Tile;
+    if (written) *written = fields;
+    if (const char* tmpl = e->Attribute("template"); tmpl && !written) {
+        const auto t = load_template_file(resolve_path(f.where.file, tmpl), *f.state, f.at(e));
+        merge_template(f.at(e), *f.state, *t, fields, o, map);
+    }
     return o;
 }
 
-void read_object_layer(const XmlFile& f, const XMLElement* e, Tilemap& map) {
+void read_object_layer(const XmlFile& f, const XMLElement* e, Tilemap& map, LayerInfo& info) {
     ObjectLayer l;
-    l.name = str_attr(e, "name");
-    l.properties = read_properties(e);
-    each_child(e, "object", [&](const XMLElement* o) { l.objects.push_back(read_object(f, o)); });
+    l.name = info.name;
+    l.properties = info.properties;
+    each_child(e, "object",
+               [&](const XMLElement* o) { l.objects.push_back(read_object(f, o, &map, nullptr)); });
+    info.index = map.object_layers.size();
     map.object_layers.push_back(std::move(l));
+}
+
+void read_image_layer(const XmlFile& f, const XMLElement* e, LayerInfo& info) {
+    info.repeat_x = flag_attr(f, e, "repeatx", false);
+    info.repeat_y = flag_attr(f, e, "repeaty", false);
+    if (const XMLElement* img = e->FirstChildElement("image")) {
+        info.image = str_attr(img, "source");
+        read_image_size(f, img, info.image_width, info.image_height);
+    }
 }
 
 // Each child of `parent` with fn(child), descending into groups (fn sees
@@ -389,18 +539,27 @@ void check_cell_total(const XmlFile& f, const XMLElement* root, const Tilemap& m
     });
 }
 
-// Tile and object layers in file order, descending into groups.
-void read_layers(const XmlFile& f, const XMLElement* parent, GroupState g, Tilemap& map) {
+// Every layer in file order into `tree`, groups nested; tile and object
+// layers also into map.layers and map.object_layers.
+void read_layers(const XmlFile& f, const XMLElement* parent, GroupState g, Tilemap& map,
+                 std::vector<LayerInfo>& tree) {
     for (const XMLElement* c = parent->FirstChildElement(); c; c = c->NextSiblingElement()) {
         const std::string_view name = c->Name();
-        if (name == "layer") {
-            read_tile_layer(f, c, g, map);
-        } else if (name == "objectgroup") {
-            read_object_layer(f, c, map);
-        } else if (name == "group") {
-            // check_cell_total bounded the depth.
-            read_layers(f, c, g.inside(read_layer_info(f, c, LayerKind::Group)), map);
-        }
+        const LayerKind kind = name == "layer"         ? LayerKind::Tile
+                               : name == "objectgroup" ? LayerKind::Object
+                               : name == "imagelayer"  ? LayerKind::Image
+                                                       : LayerKind::Group;
+        if (kind == LayerKind::Group && name != "group") continue;
+        LayerInfo info = read_layer_info(f, c, kind);
+        if (kind == LayerKind::Tile)
+            read_tile_layer(f, c, g, map, info);
+        else if (kind == LayerKind::Object)
+            read_object_layer(f, c, map, info);
+        else if (kind == LayerKind::Image)
+            read_image_layer(f, c, info);
+        else  // check_cell_total bounded the depth
+            read_layers(f, c, g.inside(info), map, info.children);
+        tree.push_back(std::move(info));
     }
 }
 
@@ -413,8 +572,10 @@ void read_map_header(const XmlFile& f, const XMLElement* root, Tilemap& map) {
     map.tile_width = int_attr(f, root, "tilewidth", std::nullopt);
     map.tile_height = int_attr(f, root, "tileheight", std::nullopt);
     map.infinite = flag_attr(f, root, "infinite", false);
+    map.type = type_or_class(root);
+    map.background_color = str_attr(root, "backgroundcolor");
     check_map_header(f.at(root), *f.state, map, orientation);
-    map.properties = read_properties(root);
+    map.properties = read_properties(f, root);
 }
 
 }  // namespace
@@ -430,7 +591,7 @@ Tilemap read_tmx_map(std::string_view text, const Where& file, LoadState& s) {
     check_cell_total(f, root, map);
     // Tilesets first, wherever they sit, so layers can check their gids.
     read_tilesets(f, root, map);
-    read_layers(f, root, {}, map);
+    read_layers(f, root, {}, map, map.layer_tree);
     if (map.infinite) fit_infinite_bounds(f.at(root), s, map);
     return map;
 }
@@ -452,7 +613,7 @@ ObjectTemplate read_tx_template(std::string_view text, const Where& file, LoadSt
     const XMLElement* object = root->FirstChildElement("object");
     if (!object) f.fail(root, "template has no <object>");
     ObjectTemplate t;
-    t.object = read_object(f, object);
+    t.object = read_object(f, object, nullptr, &t.fields);
     if (const XMLElement* ts = root->FirstChildElement("tileset")) {
         t.tileset_firstgid = uint_attr(f, ts, "firstgid", std::nullopt);
         check_firstgid(f.at(ts), t.tileset_firstgid, str_attr(ts, "firstgid"));

@@ -36,7 +36,11 @@ struct Failure {
 
 Failure failure_of(const std::string& path, const MapLimits& limits = {}) {
     try {
-        load_tilemap(path, {}, limits);
+        // Strict: a gid beyond every tileset is the error these cases expect.
+        LoadOptions options;
+        options.limits = limits;
+        options.strict = true;
+        load_tilemap(path, options);
     } catch (const MapError& e) {
         return {e.what(), e.file(), e.line()};
     }

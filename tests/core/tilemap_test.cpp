@@ -65,7 +65,10 @@ struct Failure {
 
 Failure load_failure(const std::string& rel) {
     try {
-        load_tilemap(map_path(rel));
+        // Strict: a gid beyond every tileset is the error these cases expect.
+        LoadOptions options;
+        options.strict = true;
+        load_tilemap(map_path(rel), options);
     } catch (const MapError& e) {
         return {e.what(), e.file(), e.line()};
     }
