@@ -73,6 +73,19 @@ constexpr int kMaxGroupDepth = 32;
 // hostile file from building a deep chain of members.
 constexpr int kMaxPropertyDepth = 32;
 
+// Arrays and objects nested in a JSON map, tileset, template or project
+// file. A map nests 2 levels per group layer (its "layers" array and the
+// layer), so kMaxGroupDepth groups fit with room for class properties
+// inside classes; the bound keeps the JSON readers' recursion shallow.
+constexpr int kMaxJsonDepth = 4 * kMaxGroupDepth;
+
+// Class members a Tiled project file fills into one map's properties (the
+// defaults a map leaves out). A class whose members are classes multiplies
+// at each level, so a hostile project of a few lines could ask for billions;
+// real projects fill a few per object, and a million leaves room for maps
+// with tens of thousands of objects.
+constexpr int64_t kMaxFilledMembers = int64_t{1} << 20;
+
 // ---- speed: each changes only how fast an answer comes, never the answer
 // Bodies per block of the per-entity steps: 1024 × 168 B (172 KB) stays in
 // L2 while all seven steps pass over it.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "map_build.hpp"
+#include "project.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
 
@@ -77,7 +78,9 @@ Tilemap load_tilemap(const std::string& path, const LoadOptions& options) {
     std::string error;
     const auto text = build::read_counted(state, path, error);
     if (!text) throw MapError(path, 0, "cannot open map: " + error);
-    return build::read_map(*text, path, state);
+    Tilemap map = build::read_map(*text, path, state);
+    build::apply_project(state, map);  // the class defaults of LoadOptions::project_path
+    return map;
 }
 
 Tilemap parse_tilemap(std::string_view text, const std::string& path,

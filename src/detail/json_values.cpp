@@ -1,0 +1,194 @@
+// json_values.hpp: typed access with messages that name the JSON path.
+#include "json_values.hpp"
+
+#include <climits>
+#include <cmath>
+
+namespace ds::json {
+
+namespace {
+
+// Open brackets at the deepest point, strings skipped; stops past `max`.
+bool deeper_than(std::string_view text, int max) {
+    int depth = 0;
+    bool in_string = false, escaped = false;
+    for (const char c : text) {
+        if (in_string) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max) return true;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return false;
+}
+
+int line_at(std::string_view text, size_t byte) {
+    if (byte > text.size()) byte = text.size();
+    int line = 1;
+    for (size_t i = 0; i + 1 < byte; ++i)
+        if (text[i] == '\n') ++line;
+    return line;
+}
+
+// nlohmann's what() starts with its id and position, which the MapError
+// says itself: keep the reason only.
+std::string reason(const char* what) {
+    std::string s = what;
+    const size_t at = s.find(": ");
+    if (s.find("parse error") != std::string::npos && at != std::string::npos) s = s.substr(at + 2);
+    return s;
+}
+
+std::string key_path(const std::string& path, const char* key) {
+    return path.empty() ? key : path + "." + key;
+}
+
+}  // namespace
+
+Json parse(std::string_view text, int max_depth) {
+    if (deeper_than(text, max_depth))
+        throw JsonSyntaxError(0, "JSON nested more than " + std::to_string(max_depth) + " deep");
+    try {
+        return Json::parse(text.begin(), text.end());
+    } catch (const Json::parse_error& e) {
+        throw JsonSyntaxError(line_at(text, e.byte), "malformed JSON: " + reason(e.what()));
+    } catch (const Json::exception& e) {
+        throw JsonSyntaxError(0, "malformed JSON: " + reason(e.what()));
+    }
+}
+
+std::string describe(const Json& v) {
+    switch (v.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::boolean: return v.get<bool>() ? "true" : "false";
+    case Json::value_t::string: {
+        std::string s = v.get<std::string>();
+        if (s.size() > 40) s = s.substr(0, 40) + "…";
+        return "a string (\"" + s + "\")";
+    }
+    default: {
+        // dump() of a number never throws (no strings inside).
+        return "the number " + v.dump();
+    }
+    }
+}
+
+bool Node::has(const char* key) const {
+    if (!value->is_object()) return false;
+    const auto it = value->find(key);
+    return it != value->end() && !it->is_null();
+}
+
+Node Node::operator[](const char* key) const {
+    return {&value->at(key), key_path(path, key)};
+}
+
+Node Node::operator[](size_t index) const {
+    return {&(*value)[index], path + "[" + std::to_string(index) + "]"};
+}
+
+void Node::fail(const std::string& problem) const {
+    throw JsonError((path.empty() ? std::string("the document") : path) + " " + problem);
+}
+
+const Json& Node::object() const {
+    if (!value->is_object()) fail("is " + describe(*value) + ", expected an object");
+    return *value;
+}
+
+const Json& Node::array() const {
+    if (!value->is_array()) fail("is " + describe(*value) + ", expected an array");
+    return *value;
+}
+
+std::string Node::string() const {
+    if (!value->is_string()) fail("is " + describe(*value) + ", expected a string");
+    return value->get<std::string>();
+}
+
+double Node::number() const {
+    if (!value->is_number()) fail("is " + describe(*value) + ", expected a number");
+    const double d = value->get<double>();
+    if (!std::isfinite(d)) fail("is " + describe(*value) + ", expected a finite number");
+    return d;
+}
+
+bool Node::boolean() const {
+    if (!value->is_boolean()) fail("is " + describe(*value) + ", expected true or false");
+    return value->get<bool>();
+}
+
+int64_t Node::integer() const {
+    if (value->is_number_unsigned()) {
+        const uint64_t u = value->get<uint64_t>();
+        if (u > static_cast<uint64_t>(INT64_MAX)) fail("is " + describe(*value) + ", too large");
+        return static_cast<int64_t>(u);
+    }
+    if (value->is_number_integer()) return value->get<int64_t>();
+    if (value->is_number_float()) {
+        const double d = value->get<double>();
+        // 2^62 keeps the cast exact and far from overflow.
+        if (std::isfinite(d) && d == std::floor(d) && std::fabs(d) < 0x1p62)
+            return static_cast<int64_t>(d);
+    }
+    fail("is " + describe(*value) + ", expected an integer");
+}
+
+int64_t Node::integer_in(int64_t min, int64_t max, const char* what) const {
+    const int64_t v = integer();
+    if (v < min || v > max) fail("is " + describe(*value) + ", expected " + what);
+    return v;
+}
+
+std::string string_or(const Node& n, const char* key, std::string_view fallback) {
+    return n.has(key) ? n[key].string() : std::string(fallback);
+}
+
+double number_or(const Node& n, const char* key, double fallback) {
+    return n.has(key) ? n[key].number() : fallback;
+}
+
+bool bool_or(const Node& n, const char* key, bool fallback) {
+    return n.has(key) ? n[key].boolean() : fallback;
+}
+
+namespace {
+
+template <class T>
+T field(const Node& n, const char* key, std::optional<T> fallback, int64_t min, int64_t max,
+        const char* what) {
+    if (!n.has(key)) {
+        if (fallback) return *fallback;
+        n.fail("has no \"" + std::string(key) + "\"");
+    }
+    return static_cast<T>(n[key].integer_in(min, max, what));
+}
+
+}  // namespace
+
+int int_or(const Node& n, const char* key, std::optional<int> fallback) {
+    return field<int>(n, key, fallback, INT_MIN, INT_MAX, "an integer");
+}
+
+int size_or(const Node& n, const char* key, std::optional<int> fallback) {
+    return field<int>(n, key, fallback, 0, INT_MAX, "a non-negative integer");
+}
+
+uint32_t uint_or(const Node& n, const char* key, std::optional<uint32_t> fallback) {
+    return field<uint32_t>(n, key, fallback, 0, UINT32_MAX, "a non-negative 32-bit integer");
+}
+
+const Json& array_or_empty(const Node& n, const char* key) {
+    static const Json empty = Json::array();
+    return n.has(key) ? n[key].array() : empty;
+}
+
+}  // namespace ds::json
