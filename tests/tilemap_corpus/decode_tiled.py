@@ -252,6 +252,7 @@ class Chunk:
 
 def paste_chunks(layer, chunks):
     """An infinite layer: its chunks over their bounding box."""
+    layer["pieces"] = chunks
     chunks = [c for c in chunks if c.w > 0 and c.h > 0]
     if not chunks:
         layer.update(col=0, row=0, w=0, h=0, cells=[])
@@ -398,6 +399,40 @@ class Map:
         return "."
 
 
+def has_tile(ts, local):
+    """Whether a tileset has local tile id `local`: any id when its tilecount
+    is unknown (0); in an image collection (no picture of its own, tiles
+    with pictures) only the ids of its tiles, which may have gaps; else an
+    id below tilecount."""
+    if ts["count"] == 0:
+        return True
+    if not ts["image"] and any(t["image"] for t in ts["tiles"].values()):
+        return local in ts["tiles"]
+    return local < ts["count"]
+
+
+def unknown_gids(m):
+    """Per tile layer with gids beyond every tileset: (layer name, the first
+    such raw gid in file order, its col, row, how many cells)."""
+    out = []
+    for l in m.tile_layers:
+        first, count = None, 0
+        for c in l.get("pieces", []):
+            for i, raw in enumerate(c.gids):
+                gid = raw & GID_MASK
+                if gid == 0:
+                    continue
+                ts = m.tileset_for(gid)
+                if ts is not None and has_tile(ts, gid - ts["firstgid"]):
+                    continue
+                count += 1
+                if first is None:
+                    first = (raw, c.x + i % c.w, c.y + i // c.w)
+        if count:
+            out.append((l["name"], first[0], first[1], first[2], count))
+    return out
+
+
 def layer_solidity(props):
     p = find_prop(props, "solid")
     if p is None:
@@ -480,13 +515,28 @@ def read_template(m, path):
         tsel = doc.find("tileset")
         ts_first, ts_source = (int(tsel.get("firstgid", "1")), tsel.get("source")) if tsel is not None else (1, None)
     if "gid" in obj and ts_source:
-        want = os.path.normpath(rel(path, ts_source))
+        ts = template_tileset(m, rel(path, ts_source))
         raw = int(obj["gid"])
-        for ts in m.tilesets:
-            if ts["source"] and os.path.normpath(rel(m.path, ts["source"])) == want:
-                obj["gid"] = ((raw & GID_MASK) - ts_first + ts["firstgid"]) | (raw & FLIP_BITS)
-                break
+        obj["gid"] = ((raw & GID_MASK) - ts_first + ts["firstgid"]) | (raw & FLIP_BITS)
     return obj
+
+
+def template_tileset(m, ts_path):
+    """The map's tileset read from the file a template's tileset names; when
+    the map has none from that file (its tilesets are embedded, or other
+    files), that file joins the map's tilesets after the last gid in use, as
+    Tiled adds a template's tileset to the map it is used in."""
+    want = os.path.normpath(ts_path)
+    for ts in m.tilesets:
+        if ts["source"] and os.path.normpath(rel(m.path, ts["source"])) == want:
+            return ts
+    end = 1
+    for ts in m.tilesets:
+        ids = max(ts["tiles"]) + 1 if ts["tiles"] else 0
+        end = max(end, ts["firstgid"] + max(ts["count"], ids))
+    ts = external_tileset(m.path, os.path.relpath(want, os.path.dirname(m.path) or "."), end)
+    m.tilesets.append(ts)
+    return ts
 
 
 def resolve_template(m, obj):
@@ -569,6 +619,7 @@ def read_xml_layers(m, parent, vis, opac, ox, oy, parts):
                 w, h = int(el.get("width", m.width)), int(el.get("height", m.height))
                 layer.update(col=0, row=0, w=w, h=h,
                              cells=decode_xml_data(data, enc, comp, w * h, what))
+                layer["pieces"] = [Chunk(0, 0, w, h, layer["cells"])]
             info["index"] = len(m.tile_layers)
             m.tile_layers.append(layer)
             tree.append(info)
@@ -641,6 +692,7 @@ def read_json_layers(m, layers, vis, opac, ox, oy, parts):
                 w, h = int(o.get("width", m.width)), int(o.get("height", m.height))
                 layer.update(col=0, row=0, w=w, h=h,
                              cells=decode_json_data(o.get("data", []), enc, comp, w * h, what))
+                layer["pieces"] = [Chunk(0, 0, w, h, layer["cells"])]
             info["index"] = len(m.tile_layers)
             m.tile_layers.append(layer)
             tree.append(info)
