@@ -6,7 +6,7 @@ json-map-format.rst) and docs/semantics.org §7 and §9, not from the loader in
 src/tilemap: the corpus test compares what this prints with what
 downstroke-dump-map prints from ds::load_tilemap, map by map.
 
-    decode_tiled.py [--parts base,shapes,...] MAP
+    decode_tiled.py [--parts=base,shapes,...] [--project=FILE.tiled-project] MAP
 
 prints the canonical dump (see dump_format() below and README.org). Python 3
 standard library, plus the zstandard module (Debian python3-zstandard) for
@@ -65,10 +65,11 @@ def truthy(text):
 # --- properties ---------------------------------------------------------------
 
 class Prop:
-    def __init__(self, name, ptype, value, propertytype="", members=None):
+    def __init__(self, name, ptype, value, propertytype="", members=None, guessed=False):
         self.name, self.type, self.value = name, ptype, value
         self.propertytype = propertytype
         self.members = members or []
+        self.guessed = guessed  # a JSON class member, its type read off its value
 
 
 def scalar_text(ptype, value):
@@ -135,16 +136,16 @@ def json_class_members(value):
 
 def json_value_prop(name, v):
     if isinstance(v, dict):
-        return Prop(name, "class", "", "", json_class_members(v))
+        return Prop(name, "class", "", "", json_class_members(v), guessed=True)
     if isinstance(v, list):
-        return Prop(name, "list", "", "", [json_item(i) for i in v])
+        return Prop(name, "list", "", "", [json_item(i) for i in v], guessed=True)
     if isinstance(v, bool):
-        return Prop(name, "bool", v)
-    if isinstance(v, int):
-        return Prop(name, "int", v)
+        return Prop(name, "bool", v, guessed=True)
+    if isinstance(v, int) or (isinstance(v, float) and v.is_integer()):
+        return Prop(name, "int", int(v), guessed=True)
     if isinstance(v, float):
-        return Prop(name, "float", v)
-    return Prop(name, "string", v)
+        return Prop(name, "float", v, guessed=True)
+    return Prop(name, "string", v, guessed=True)
 
 
 def json_prop(p):
@@ -192,6 +193,86 @@ def find_prop(props, name):
 
 def prop_true(p):
     return p is not None and scalar_text("bool", p.value) == "true"
+
+
+# --- a Tiled project's class defaults ----------------------------------------
+
+def read_project(path):
+    """The class types of a Tiled project file (JSON "propertyTypes"): name
+    → [(member name, type, default value, propertyType)], in the project's
+    order."""
+    with open(path, "rb") as f:
+        doc = json.loads(f.read().decode("utf-8"))
+    classes = {}
+    for t in doc.get("propertyTypes", []):
+        if t.get("type") == "class":
+            classes[t["name"]] = [(mb["name"], mb.get("type", "string"), mb.get("value"),
+                                   mb.get("propertyType", "")) for mb in t.get("members", [])]
+    return classes
+
+
+def default_prop(name, ptype, value, propertytype):
+    if ptype == "class":
+        return Prop(name, "class", "", propertytype, json_class_members(value))
+    if ptype == "list":
+        return Prop(name, "list", "", propertytype, [json_item(i) for i in (value or [])])
+    return Prop(name, ptype, value, propertytype)
+
+
+def fill_defaults(props, classes):
+    """Tiled writes only the members of a class that differ from its type's
+    defaults: each class property gets the rest from the project, in the
+    class's member order, the members the class does not define after them;
+    a member whose type JSON could not tell takes the class's; a class
+    member's own default (some of its type's members) comes before its
+    type's. Inside classes and lists too."""
+    for p in props:
+        if p.type == "list":
+            fill_defaults(p.members, classes)
+        if p.type != "class" or getattr(p, "filled", False):
+            continue
+        p.filled = True
+        members = classes.get(p.propertytype)
+        if members is None:
+            fill_defaults(p.members, classes)
+            continue
+        have = {q.name: q for q in p.members}
+        out = []
+        for name, ptype, value, ptt in members:
+            q = have.pop(name, None)
+            if q is None:
+                q = default_prop(name, ptype, value, ptt)
+            else:
+                if q.guessed:
+                    q.type = ptype
+                    if ptt:
+                        q.propertytype = ptt
+                if ptype == "class" and isinstance(value, dict):
+                    # The member's own default (a class member may set some
+                    # of its type's members) under what the map set.
+                    set_here = {r.name for r in q.members}
+                    q.members += [r for r in json_class_members(value) if r.name not in set_here]
+            out.append(q)
+        out += [q for q in p.members if q.name in have]
+        p.members = out
+        fill_defaults(p.members, classes)
+
+
+def fill_map_defaults(m, classes):
+    lists = [m.props] + [l["props"] for l in m.tile_layers]
+    for ol in m.object_layers:
+        lists.append(ol["props"])
+        lists += [o["props"] for o in ol["objects"]]
+    stack = list(m.tree)
+    while stack:
+        e = stack.pop()
+        lists.append(e["props"])
+        stack += e.get("children", [])
+    for ts in m.tilesets:
+        lists.append(ts["props"])
+        lists += [t["props"] for t in ts["tiles"].values()]
+    for props in lists:
+        fill_defaults(props, classes)
 
 
 # --- layer data ---------------------------------------------------------------
@@ -716,10 +797,12 @@ def read_json_layers(m, layers, vis, opac, ox, oy, parts):
     return tree
 
 
-def read_map(path, parts):
+def read_map(path, parts, project=None):
     kind, doc = load_any(path)
     m = read_json_map(path, doc, parts) if kind == "json" else read_xml_map(path, doc, parts)
     m.tilesets.sort(key=lambda ts: ts["firstgid"])
+    if project:
+        fill_map_defaults(m, read_project(project))
     if m.infinite:
         live = [l for l in m.tile_layers if l["w"] > 0 and l["h"] > 0]
         if live:
@@ -857,13 +940,19 @@ def parse_parts(text):
 
 
 def main(argv):
-    parts = {"base"}
+    parts, project = {"base"}, None
     args = argv[1:]
-    if args and args[0].startswith("--parts="):
-        parts = parse_parts(args.pop(0)[len("--parts="):])
+    while args and args[0].startswith("--"):
+        a = args.pop(0)
+        if a.startswith("--parts="):
+            parts = parse_parts(a[len("--parts="):])
+        elif a.startswith("--project="):
+            project = a[len("--project="):]
+        else:
+            raise SystemExit("decode_tiled: unknown option " + a)
     if len(args) != 1:
-        raise SystemExit("usage: decode_tiled.py [--parts=base,shapes,...] MAP")
-    m = read_map(args[0], parts)
+        raise SystemExit("usage: decode_tiled.py [--parts=base,shapes,...] [--project=FILE] MAP")
+    m = read_map(args[0], parts, project)
     sys.stdout.reconfigure(encoding="utf-8")
     sys.stdout.write("\n".join(dump(m, parts)) + "\n")
 

@@ -2,7 +2,7 @@
 // corpus test's canonical dump of the model (tilemap.hpp) and its
 // solid_grid(), line for line what decode_tiled.py prints from the file.
 //
-//   downstroke-dump-map [--parts=base,shapes,...] [--strict] MAP
+//   downstroke-dump-map [--parts=base,shapes,...] [--strict] [--project=FILE] MAP
 //
 // Exit status 0 with the dump on stdout; 1 with the loader's message on
 // stderr when the map is refused; 2 on a bad command line.
@@ -257,6 +257,8 @@ int main(int argc, char** argv) {
             if (!parse_parts(a.substr(8), parts)) return 2;
         } else if (a == "--strict") {
             options.strict = true;
+        } else if (a.rfind("--project=", 0) == 0) {
+            options.project_path = a.substr(10);
         } else if (path.empty()) {
             path = a;
         } else {
@@ -265,7 +267,7 @@ int main(int argc, char** argv) {
         }
     }
     if (path.empty()) {
-        std::cerr << "usage: downstroke-dump-map [--parts=base,shapes,...] [--strict] MAP\n";
+        std::cerr << "usage: downstroke-dump-map [--parts=base,shapes,...] [--strict] [--project=FILE] MAP\n";
         return 2;
     }
     try {

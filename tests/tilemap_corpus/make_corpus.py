@@ -273,6 +273,8 @@ def make_group(group, manifest):
 # write (class members, list properties), copied into maps/features/ as
 # they are.
 HANDMADE = os.path.join(HERE, "sources", "handmade")
+# A map NAME with a NAME.tiled-project beside it is listed twice, the second
+# time with the project (LoadOptions::project_path), needing "project".
 # By name; properties.tmx loads without them (its members are the dump's
 # nested-props part).
 HANDMADE_NEEDS = {"latin1": {"text-encodings"}}
@@ -288,6 +290,10 @@ def copy_handmade(manifest):
             if ext == ".tmj":
                 needs.add("json")
             manifest.append((os.path.join(out_dir, f), needs))
+            project = os.path.join(HANDMADE, name + ".tiled-project")
+            if os.path.exists(project):  # once more, its class defaults filled in
+                manifest.append((os.path.join(out_dir, f), needs | {"project"},
+                                 os.path.join(out_dir, name + ".tiled-project")))
 
 
 def main():
@@ -301,10 +307,12 @@ def main():
     copy_handmade(manifest)
     with open(os.path.join(OUT, "MANIFEST"), "w", encoding="utf-8") as f:
         f.write("# Written by make_corpus.py: each corpus map and what the loader must read to load it.\n")
-        for path, needs in manifest:
+        for path, needs, *project in manifest:
             line = os.path.relpath(path, OUT)
             if needs:
                 line += " needs=" + ",".join(sorted(needs))
+            if project:
+                line += " project=" + os.path.relpath(project[0], OUT)
             f.write(line + "\n")
     print("corpus: %d maps" % len(manifest))
 

@@ -18,7 +18,8 @@ the comparison by name, not by accident:
   .tsj tilesets), templates (.tx), sparse (gids beyond a tileset, sparse
   image collections: their warnings, and the refusal under --strict, are
   checked against the cells the decoder finds), text-encodings (a map
-  declaring ISO-8859-1).
+  declaring ISO-8859-1), project (a map loaded with its Tiled project file,
+  whose class defaults fill the members the map leaves out).
 
 Every feature is compared by default; --disable (or DS_CORPUS_DISABLE,
 comma-separated) leaves some out, and maps needing a disabled feature are
@@ -35,7 +36,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, HERE)
 import decode_tiled  # noqa: E402
 
-LOAD_FEATURES = ("json", "sparse", "text-encodings")  # and templates, a dump part too
+LOAD_FEATURES = ("json", "sparse", "text-encodings", "project")  # and templates, a dump part too
 ALL_FEATURES = tuple(p for p in decode_tiled.ALL_PARTS if p != "base") + LOAD_FEATURES
 
 
@@ -47,11 +48,13 @@ def read_manifest(corpus):
             if not line or line.startswith("#"):
                 continue
             fields = line.split()
-            needs = set()
+            needs, project = set(), None
             for extra in fields[1:]:
                 if extra.startswith("needs="):
                     needs |= set(extra[len("needs="):].split(","))
-            entries.append((fields[0], needs))
+                elif extra.startswith("project="):
+                    project = os.path.join(corpus, extra[len("project="):])
+            entries.append((fields[0], needs, project))
     return entries
 
 
@@ -66,16 +69,17 @@ def features_from(args):
     return set(ALL_FEATURES) - disabled
 
 
-def loader_dump(dump_map, path, parts_arg, strict=False):
-    args = [dump_map, parts_arg] + (["--strict"] if strict else []) + [path]
+def loader_dump(dump_map, path, parts_arg, strict=False, project=None):
+    args = [dump_map, parts_arg] + (["--strict"] if strict else [])
+    args += (["--project=" + project] if project else []) + [path]
     r = subprocess.run(args, capture_output=True, timeout=60)
     # Bytes that are not UTF-8 show in the diff instead of stopping it.
     return r.returncode, r.stdout.decode("utf-8", "backslashreplace"), r.stderr.decode("utf-8", "backslashreplace")
 
 
-def decoder_dump(path, parts):
+def decoder_dump(path, parts, project):
     try:
-        m = decode_tiled.read_map(path, parts)
+        m = decode_tiled.read_map(path, parts, project)
         return "\n".join(decode_tiled.dump(m, parts)) + "\n", "", m
     except Exception as e:  # the decoder refusing a corpus map is a broken corpus
         return None, "%s: %s" % (type(e).__name__, e), None
@@ -127,18 +131,20 @@ def main():
     print("corpus: comparing parts %s" % ", ".join(sorted(parts)))
 
     checked, warned, skipped = 0, 0, {}
-    for rel, needs in read_manifest(args.corpus):
+    for rel, needs, project in read_manifest(args.corpus):
         missing = needs - enabled
         if missing:
             key = ",".join(sorted(missing))
             skipped[key] = skipped.get(key, 0) + 1
             continue
         path = os.path.join(args.corpus, rel)
-        expected, problem, decoded = decoder_dump(path, parts)
+        expected, problem, decoded = decoder_dump(path, parts, project)
         if expected is None:
             print("FAIL %s: the decoder cannot read it: %s" % (rel, problem))
             return 1
-        rc, actual, err = loader_dump(args.dump_map, path, parts_arg)
+        rc, actual, err = loader_dump(args.dump_map, path, parts_arg, project=project)
+        if project:
+            rel += " with " + os.path.relpath(project, args.corpus)
         if rc != 0:
             print("FAIL %s: the loader refused it:\n%s" % (rel, err))
             return 1
