@@ -14,10 +14,12 @@ install(TARGETS downstroke-core EXPORT DownstrokeTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # The public headers are exactly those tests/public_headers.cmake checks:
 # src/*.hpp and src/tilemap/*.hpp (plus the field list they include), never
-# src/detail/ or the renderer.
+# src/detail/, the renderer or the JSON readers' helpers.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/downstroke
   FILES_MATCHING PATTERN "*.hpp" PATTERN "*.def"
-  PATTERN "detail" EXCLUDE PATTERN "render" EXCLUDE)
+  PATTERN "detail" EXCLUDE PATTERN "render" EXCLUDE
+  # The JSON readers' helpers include nlohmann/json.hpp, which the installed core does not need.
+  PATTERN "json_*.hpp" EXCLUDE)
 
 set(_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Downstroke)
 install(EXPORT DownstrokeTargets NAMESPACE Downstroke:: DESTINATION ${_cmake_dir})

@@ -82,9 +82,9 @@ constexpr int kMaxJsonDepth = 4 * kMaxGroupDepth;
 // Class members a Tiled project file fills into one map's properties (the
 // defaults a map leaves out). A class whose members are classes multiplies
 // at each level, so a hostile project of a few lines could ask for billions;
-// real projects fill a few per object, and a million leaves room for maps
-// with tens of thousands of objects.
-constexpr int64_t kMaxFilledMembers = int64_t{1} << 20;
+// real projects fill a few per object, and 262144 leaves room for maps with
+// tens of thousands of objects while a refused fill stays near 40 MB.
+constexpr int64_t kMaxFilledMembers = int64_t{1} << 18;
 
 // ---- speed: each changes only how fast an answer comes, never the answer
 // Bodies per block of the per-entity steps: 1024 × 168 B (172 KB) stays in

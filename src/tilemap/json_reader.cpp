@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "../detail/json_properties.hpp"
-#include "../detail/json_values.hpp"
+#include "json_properties.hpp"
+#include "json_values.hpp"
 #include "map_build.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"

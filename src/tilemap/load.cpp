@@ -14,7 +14,8 @@ namespace build {
 Syntax sniff_syntax(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     const size_t first = text.find_first_not_of(" \t\r\n");
-    return first != std::string_view::npos && text[first] == '{' ? Syntax::Json : Syntax::Xml;
+    return first != std::string_view::npos && (text[first] == '{' || text[first] == '[') ? Syntax::Json
+                                                                                 : Syntax::Xml;
 }
 
 Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {

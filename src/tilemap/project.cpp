@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "../detail/json_properties.hpp"
-#include "../detail/json_values.hpp"
+#include "json_properties.hpp"
+#include "json_values.hpp"
 #include "map_build.hpp"
 
 namespace ds {

@@ -281,4 +281,66 @@ TEST_CASE("make_tilemap keeps the loader's sizes") {
           "coordinates stop being exact");
 }
 
+TEST_CASE("JSON maps: their tilesets, templates and project file keep every limit") {
+    const TempDir dir;
+    const std::string fifo = (dir.path / "pipe.tj").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string head = R"({"width":2,"height":2,"tilewidth":16,"tileheight":16,)";
+    const std::string dev = dir.write("dev.tmj", head + R"("tilesets":[{"firstgid":1,"source":"/dev/zero"}]})");
+    CHECK(failure_of(dev).what ==
+          dev + ": cannot open tileset '/dev/zero': is not a regular file (a character device)");
+    const std::string tpl = dir.write(
+        "tpl.tmj", head + R"("layers":[{"type":"objectgroup","objects":[{"id":1,"template":"pipe.tj"}]}]})");
+    CHECK(failure_of(tpl).what == tpl + ": cannot open template '" + fifo + "': is not a regular file (a FIFO)");
+    // Sizes are refused from the header, before anything is allocated.
+    const std::string huge = dir.write("huge.tmj", R"({"width":1000000,"height":1000000,"tilewidth":16,"tileheight":16,
+        "layers":[{"type":"tilelayer","name":"a","width":1000000,"height":1000000,"data":[]}]})");
+    CHECK(contains(failure_of(huge).what, "max-cells"));
+    const std::string chunk = dir.write("chunk.tmj", head + R"("infinite":true,"layers":[{"type":"tilelayer","name":"a",
+        "chunks":[{"x":0,"y":0,"width":100000,"height":100000,"data":[]}]}]})");
+    CHECK(contains(failure_of(chunk).what, "max-cells"));
+    const std::string inf = dir.write("inf.tmj", head + R"("layers":[{"type":"objectgroup","objects":[{"x":1e999}]}]})");
+    CHECK(failure_of(inf).what == inf + ": malformed JSON: number overflow parsing '1e999'");
+    // max-bytes counts the template and the project file too.
+    const std::string tj = R"({"object":{"name":"t"}})";
+    dir.write("t.tj", tj);
+    const std::string text = head + R"("layers":[{"type":"objectgroup","objects":[{"id":1,"template":"t.tj"}]}]})";
+    const std::string map = dir.write("m.tmj", text);
+    const std::string project_text = R"({"propertyTypes":[]})";
+    const std::string project = dir.write("p.tiled-project", project_text);
+    LoadOptions options;
+    options.project_path = project;
+    options.limits.max_bytes = static_cast<int64_t>(text.size() + tj.size() + project_text.size());
+    CHECK(load_tilemap(map, options).object_layers[0].objects[0].name == "t");
+    options.limits.max_bytes -= 1;
+    try {
+        load_tilemap(map, options);
+        FAIL("no error");
+    } catch (const MapError& e) {
+        CHECK(std::string(e.what()) == project + ": cannot open project file: is " +
+                                           std::to_string(project_text.size()) + " bytes, more than the " +
+                                           std::to_string(project_text.size() - 1) + " bytes max-bytes leaves");
+    }
+    // A project whose classes hold classes, two of each, 30 deep, is refused
+    // after kMaxFilledMembers, not expanded into 2^30 members.
+    std::string types;
+    for (int i = 0; i < 30; ++i)
+        types += (i ? "," : "") + std::string(R"({"name":"C)") + std::to_string(i) +
+                 R"(","type":"class","members":[{"name":"a","type":"class","propertyType":"C)" +
+                 std::to_string(i + 1) + R"(","value":{}},{"name":"b","type":"class","propertyType":"C)" +
+                 std::to_string(i + 1) + R"(","value":{}}]})";
+    types += R"(,{"name":"C30","type":"class","members":[]})";
+    const std::string bomb = dir.write("bomb.tiled-project", R"({"propertyTypes":[)" + types + "]}");
+    const std::string uses = dir.write("uses.tmj", head + R"("properties":[{"name":"p","type":"class","propertytype":"C0","value":{}}]})");
+    options = {};
+    options.project_path = bomb;
+    try {
+        load_tilemap(uses, options);
+        FAIL("no error");
+    } catch (const MapError& e) {
+        CHECK(std::string(e.what()) ==
+              bomb + ": filling class defaults needs more than 262144 members (kMaxFilledMembers)");
+    }
+}
+
 }  // TEST_SUITE

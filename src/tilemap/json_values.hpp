@@ -50,6 +50,7 @@ struct Node {
     double number() const;  // finite
     bool boolean() const;
     int64_t integer() const;  // an integral number (1 and 1.0 alike)
+    int64_t integer_as(const char* what) const;  // the same, `what` naming it in the message
     // An integer in [min, max]; `what` names the range in the message.
     int64_t integer_in(int64_t min, int64_t max, const char* what) const;
 

@@ -6,7 +6,7 @@
 #pragma once
 #include <string>
 
-#include "../tilemap/tilemap.hpp"
+#include "tilemap.hpp"
 #include "json_values.hpp"
 
 namespace ds::json {

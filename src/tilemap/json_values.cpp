@@ -36,12 +36,19 @@ int line_at(std::string_view text, size_t byte) {
     return line;
 }
 
-// nlohmann's what() starts with its id and position, which the MapError
-// says itself: keep the reason only.
+// nlohmann's what() starts with its id ("[json.exception.parse_error.101] ")
+// and, for parse errors, the position, which the MapError says itself:
+// keep the reason only.
 std::string reason(const char* what) {
     std::string s = what;
-    const size_t at = s.find(": ");
-    if (s.find("parse error") != std::string::npos && at != std::string::npos) s = s.substr(at + 2);
+    if (s.starts_with("[json.exception.")) {
+        const size_t close = s.find("] ");
+        if (close != std::string::npos) s = s.substr(close + 2);
+    }
+    if (s.starts_with("parse error")) {
+        const size_t at = s.find(": ");
+        if (at != std::string::npos) s = s.substr(at + 2);
+    }
     return s;
 }
 
@@ -74,10 +81,8 @@ std::string describe(const Json& v) {
         if (s.size() > 40) s = s.substr(0, 40) + "…";
         return "a string (\"" + s + "\")";
     }
-    default: {
-        // dump() of a number never throws (no strings inside).
-        return "the number " + v.dump();
-    }
+    default:
+        return "the number " + v.dump();  // never throws: no strings inside
     }
 }
 
@@ -126,7 +131,9 @@ bool Node::boolean() const {
     return value->get<bool>();
 }
 
-int64_t Node::integer() const {
+int64_t Node::integer() const { return integer_as("an integer"); }
+
+int64_t Node::integer_as(const char* what) const {
     if (value->is_number_unsigned()) {
         const uint64_t u = value->get<uint64_t>();
         if (u > static_cast<uint64_t>(INT64_MAX)) fail("is " + describe(*value) + ", too large");
@@ -139,11 +146,11 @@ int64_t Node::integer() const {
         if (std::isfinite(d) && d == std::floor(d) && std::fabs(d) < 0x1p62)
             return static_cast<int64_t>(d);
     }
-    fail("is " + describe(*value) + ", expected an integer");
+    fail("is " + describe(*value) + ", expected " + what);
 }
 
 int64_t Node::integer_in(int64_t min, int64_t max, const char* what) const {
-    const int64_t v = integer();
+    const int64_t v = integer_as(what);
     if (v < min || v > max) fail("is " + describe(*value) + ", expected " + what);
     return v;
 }
