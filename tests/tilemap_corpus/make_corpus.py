@@ -12,7 +12,8 @@ maps; not bad/ or hostile/) and each hand-made feature map in sources/:
 - the map with its layer data rewritten here into each encoding (XML
   tiles, CSV, base64, base64+zlib/gzip/zstd), then loaded and re-saved by
   Tiled, so that every corpus file is Tiled's own writing: NAME.ENC.tmx;
-- the maps of tests/data/maps also as shipped (data-shipped/);
+- the maps of tests/data/maps also as shipped (data-shipped/), with their
+  JSON twins (tests/data/maps/json);
 - each of those exported to JSON (NAME.ENC.tmj; XML tiles and CSV are both
   an array there, so the CSV one stands for both), the CSV one with its
   tilesets embedded (NAME.embedded.tmj), and the CSV one naming the .tsj
@@ -171,7 +172,7 @@ def copy_support(src_dir, out_dir):
     """The tilesets, templates and pictures beside the source maps."""
     for base, _dirs, files in os.walk(src_dir):
         rel = os.path.relpath(base, src_dir)
-        if rel.split(os.sep)[0] in ("bad", "hostile", "render") and src_dir.endswith("tests/data/maps"):
+        if rel.split(os.sep)[0] in ("bad", "hostile", "render", "json") and src_dir.endswith("tests/data/maps"):
             continue
         for f in files:
             if f.endswith((".tsx", ".tx", ".png", ".tiled-project")):
@@ -254,6 +255,15 @@ def make_group(group, manifest):
             if f.endswith(".tmx"):
                 shutil.copy(os.path.join(src_dir, f), os.path.join(out_dir, f))
                 manifest.append((os.path.join(out_dir, f), set(MAP_NEEDS.get("data/" + f[:-4], set()))))
+        # The JSON twins of those maps (tests/data/maps/json, written by the
+        # JSON part's make_json_maps.py), with their tilesets and templates.
+        json_src = os.path.join(src_dir, "json")
+        shutil.copytree(json_src, os.path.join(out_dir, "json"))
+        for f in sorted(os.listdir(json_src)):
+            if f.endswith(".tmj"):
+                with open(os.path.join(json_src, f), encoding="utf-8") as j:
+                    needs = {"json"} | ({"templates"} if '"template"' in j.read() else set())
+                manifest.append((os.path.join(out_dir, "json", f), needs))
         return
     for name in names:
         print("corpus: %s/%s" % (group, name))
