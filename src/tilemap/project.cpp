@@ -87,6 +87,20 @@ struct Filler {
         if (from_text || from_int) m.type = def.type;
     }
 
+    // A class member's own default (Spawn.inner = {"weight": 2.5}) comes
+    // before its class's (Inner.weight = 0.5), as Tiled resolves it: what
+    // the map leaves out of a member it wrote is taken from there first.
+    void inherit_member_defaults(const Property& def, Property& m) {
+        if (def.type != "class" || m.type != "class") return;
+        for (const Property& d : def.members) {
+            const bool written = std::any_of(m.members.begin(), m.members.end(),
+                                             [&](const Property& x) { return x.name == d.name; });
+            if (written) continue;
+            take(1);
+            m.members.push_back(d);
+        }
+    }
+
     void fill(Property& p, const std::string& where, int depth) {
         if (depth > kMaxJsonDepth)
             fail("class '" + p.property_type + "' nests itself more than " +
@@ -106,6 +120,7 @@ struct Filler {
                 out.push_back(def);
             } else {
                 adopt_type(def, *it);
+                inherit_member_defaults(def, *it);
                 out.push_back(std::move(*it));
                 p.members.erase(it);
             }
