@@ -4,6 +4,7 @@
 // gid checks, templates) is map_build's. Every failure is a MapError naming
 // the file, the JSON path and the reason (the line too when the JSON itself
 // is malformed); unknown keys are skipped.
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -272,8 +273,16 @@ std::vector<uint32_t> node_cells(const JsonFile& f, const Node& owner, CellEncod
     CellData cells{enc, {}, &gids};
     if (enc.kind == CellEncoding::Kind::Array) {
         const size_t max = max_array_gids(w, h);
-        for (size_t i = 0; i < data.array().size() && gids.size() < max; ++i)
-            gids.push_back(static_cast<uint32_t>(data[i].integer_in(0, UINT32_MAX, "a gid (0 … 4294967295)")));
+        const auto& items = data.array();
+        gids.reserve(std::min(items.size(), max));
+        for (size_t i = 0; i < items.size() && gids.size() < max; ++i) {
+            // A gid is read straight from the array; only a bad one pays for
+            // the node (and the path string) its message needs.
+            if (items[i].is_number_unsigned() && items[i].get<uint64_t>() <= UINT32_MAX)
+                gids.push_back(static_cast<uint32_t>(items[i].get<uint64_t>()));
+            else
+                gids.push_back(static_cast<uint32_t>(data[i].integer_in(0, UINT32_MAX, "a gid (0 … 4294967295)")));
+        }
     } else {
         text = data.string();
         cells.text = text;
