@@ -1,5 +1,6 @@
 #include "common/command_line.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace bench {
@@ -33,6 +34,19 @@ int count_arg(const std::string& opt, const std::string& v, int least) {
     const bool whole = parse_whole(v, n, [](const std::string& s, size_t* used) { return std::stoi(s, used); });
     if (!whole || n < least) throw std::invalid_argument(opt + ": expected a count, got '" + v + "'");
     return n;
+}
+
+bool rounds_and_org(int argc, char** argv, const char* mode, int& rounds, std::string& org) {
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--rounds" && i + 1 < argc) rounds = count_arg(a, argv[++i], 1);
+        else if (a == "--org" && i + 1 < argc) org = argv[++i];
+        else {
+            std::fprintf(stderr, "usage: downstroke-bench %s [--rounds R] [--org FILE]\n", mode);
+            return false;
+        }
+    }
+    return true;
 }
 
 std::string command_line(int argc, char** argv) {

@@ -14,4 +14,9 @@ std::string command_line(int argc, char** argv);
 // ("OPT: expected a positive number, got 'V'") otherwise.
 double positive_arg(const std::string& opt, const std::string& v);
 
+// The options of a mode that takes only --rounds R and --org FILE (argv[1]
+// is the mode): fills what is given, leaving the defaults otherwise; false,
+// with the usage printed, on anything else.
+bool rounds_and_org(int argc, char** argv, const char* mode, int& rounds, std::string& org);
+
 }  // namespace bench

@@ -120,15 +120,7 @@ std::string row(const Pair& p, const Stats& x, const Stats& j) {
 int map_load_main(int argc, char** argv) {
     int rounds = 40;
     std::string org = "docs/benchmarks.org";
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--rounds" && i + 1 < argc) rounds = count_arg(a, argv[++i], 1);
-        else if (a == "--org" && i + 1 < argc) org = argv[++i];
-        else {
-            std::fprintf(stderr, "usage: downstroke-bench map-load [--rounds R] [--org FILE]\n");
-            return 2;
-        }
-    }
+    if (!rounds_and_org(argc, argv, "map-load", rounds, org)) return 2;
     const std::string command = command_line(argc, argv);
     const int64_t start = now_ns();
     const std::string demo = std::string(kCorpus) + "platformer.";

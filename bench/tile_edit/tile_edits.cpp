@@ -102,15 +102,7 @@ uint32_t ground_gid(const ds::Tilemap& m) {
 int tile_edit_main(int argc, char** argv) {
     int rounds = 40;
     std::string org = "docs/benchmarks.org";
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--rounds" && i + 1 < argc) rounds = count_arg(a, argv[++i], 1);
-        else if (a == "--org" && i + 1 < argc) org = argv[++i];
-        else {
-            std::fprintf(stderr, "usage: downstroke-bench tile-edit [--rounds R] [--org FILE]\n");
-            return 2;
-        }
-    }
+    if (!rounds_and_org(argc, argv, "tile-edit", rounds, org)) return 2;
     const std::string command = command_line(argc, argv);
     const int64_t start = now_ns();
     const std::string path = "demo/maps/platformer.tmx";
