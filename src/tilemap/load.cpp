@@ -18,8 +18,10 @@ Syntax sniff_syntax(std::string_view text) {
 
 Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
     const Where file{path, 0, ""};
-    return sniff_syntax(text) == Syntax::Json ? read_json_map(text, file, s)
-                                              : read_tmx_map(text, file, s);
+    Tilemap map = sniff_syntax(text) == Syntax::Json ? read_json_map(text, file, s)
+                                                     : read_tmx_map(text, file, s);
+    inherit_tile_classes(map);
+    return map;
 }
 
 namespace {

@@ -422,4 +422,16 @@ void merge_template(const Where& w, LoadState& s, const ObjectTemplate& tmpl,
     object.template_path = tmpl.path;
 }
 
+void inherit_tile_classes(Tilemap& map) {
+    for (ObjectLayer& layer : map.object_layers)
+        for (MapObject& o : layer.objects) {
+            const uint32_t gid = o.gid & kGidMask;
+            const Tileset* ts = gid ? map.tileset_for(gid) : nullptr;
+            const TileInfo* tile = ts ? ts->tile(gid - ts->firstgid) : nullptr;
+            if (!tile) continue;
+            if (o.type.empty()) o.type = tile->type;
+            if (!tile->properties.empty()) merge_properties(tile->properties, o.properties);
+        }
+}
+
 }  // namespace ds::build

@@ -222,4 +222,10 @@ void merge_template(const Where& w, LoadState& s, const ObjectTemplate& tmpl,
 // the map lacks it (as Tiled does).
 uint32_t map_tile_gid(const Where& w, LoadState& s, const ObjectTemplate& tmpl, Tilemap& map);
 
+// Tile objects as Tiled shows them (its "effective class"): an object
+// layer's object with a gid and no class of its own takes its tile's, and
+// its properties are the tile's, then its own (templates merged already)
+// replacing by name. A gid no tileset holds leaves the object as it is.
+void inherit_tile_classes(Tilemap& map);
+
 }  // namespace ds::build

@@ -364,7 +364,11 @@ TEST_CASE("object layers: objects, type or class, typed properties") {
     const MapObject& crate = ents.objects[2];
     CHECK(crate.gid == (7 | H));
     CHECK_FALSE(crate.visible);
-    CHECK(crate.type.empty());
+    // No class of its own: its tile's (terrain's tile 6), with the tile's
+    // properties, as Tiled shows a tile object.
+    CHECK(crate.type == "ladder");
+    REQUIRE(crate.properties.size() == 1);
+    CHECK(crate.properties[0].name == "climbable");
 
     CHECK(ents.objects[3].name == "zone");
     CHECK(ents.objects[3].width == 64);

@@ -341,7 +341,8 @@ TEST_CASE("templates: the template's fields, tile and properties, then the insta
     CHECK(slime.shape == ObjectShape::Tile);
     CHECK(slime.gid == (7 | kFlipHorizontal));  // the map's terrain tileset, firstgid 1
     CHECK(slime.template_path == json_path("templates/slime.tj"));
-    REQUIRE(slime.properties.size() == 2);
+    REQUIRE(slime.properties.size() == 3);
+    CHECK(slime.properties[0].name == "climbable");  // its tile's (terrain's tile 6) come first
     CHECK(prop(slime.properties, "hp").value == "5");  // the instance's
     CHECK(prop(slime.properties, "kind").value == "green");  // the template's
     const MapObject& pit = o[1];

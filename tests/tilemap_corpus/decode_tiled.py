@@ -648,6 +648,23 @@ def finish_object(m, obj, parts):
     return obj
 
 
+def inherit_from_tiles(m):
+    """Tiled's effective class of a tile object: with no class of its own it
+    shows its tile's, and the tile's properties under its own (its own value
+    of a name wins; its other properties follow the tile's)."""
+    for ol in m.object_layers:
+        for obj in ol["objects"]:
+            gid = int(obj.get("gid", 0) or 0) & GID_MASK
+            tile = m.tile_of(gid) if gid else None
+            if tile is None:
+                continue
+            if not obj.get("type"):
+                obj["type"] = tile["type"]
+            own = {p.name: p for p in obj["props"]}
+            merged = [own.pop(p.name, p) for p in tile["props"]]
+            obj["props"] = merged + [p for p in obj["props"] if p.name in own]
+
+
 # --- reading a map ------------------------------------------------------------
 
 def read_xml_map(path, root, parts):
@@ -801,6 +818,7 @@ def read_map(path, parts, project=None):
     kind, doc = load_any(path)
     m = read_json_map(path, doc, parts) if kind == "json" else read_xml_map(path, doc, parts)
     m.tilesets.sort(key=lambda ts: ts["firstgid"])
+    inherit_from_tiles(m)
     if project:
         fill_map_defaults(m, read_project(project))
     if m.infinite:
