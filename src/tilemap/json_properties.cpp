@@ -40,7 +40,8 @@ Property read_member(const std::string& name, const Node& v, int depth) {
         check_depth(v, depth);
         for (const auto& [key, member] : v.value->items())
             p.members.push_back(read_member(key, {&member, v.path + "." + key}, depth + 1));
-    } else if (v.value->is_array()) {
+    } else if (v.value->is_array() || v.value->is_binary()) {  // binary: a packed "data" array
+        v.array();  // unpacks it
         p.type = "list";
         check_depth(v, depth);
         for (size_t i = 0; i < v.value->size(); ++i) p.members.push_back(read_list_item(v[i], depth + 1));

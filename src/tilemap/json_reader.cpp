@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "json_dom.hpp"
 #include "json_properties.hpp"
 #include "json_values.hpp"
 #include "map_build.hpp"
@@ -271,7 +272,9 @@ std::vector<uint32_t> node_cells(const JsonFile& f, const Node& owner, CellEncod
     std::vector<uint32_t> gids;
     std::string text;
     CellData cells{enc, {}, &gids};
-    if (enc.kind == CellEncoding::Kind::Array) {
+    if (enc.kind == CellEncoding::Kind::Array && json::is_packed_gids(*data.value)) {
+        gids = json::packed_gids(*data.value, max_array_gids(w, h));  // every element a gid
+    } else if (enc.kind == CellEncoding::Kind::Array) {
         const size_t max = max_array_gids(w, h);
         const auto& items = data.array();
         gids.reserve(std::min(items.size(), max));

@@ -1,6 +1,8 @@
 // json_values.hpp: typed access with messages that name the JSON path.
 #include "json_values.hpp"
 
+#include "json_dom.hpp"
+
 #include <climits>
 #include <cmath>
 
@@ -61,20 +63,22 @@ std::string key_path(const std::string& path, const char* key) {
 Json parse(std::string_view text, int max_depth) {
     if (deeper_than(text, max_depth))
         throw JsonSyntaxError(0, "JSON nested more than " + std::to_string(max_depth) + " deep");
+    Json doc;
+    DomError error;
     try {
-        return Json::parse(text.begin(), text.end());
-    } catch (const Json::parse_error& e) {
-        throw JsonSyntaxError(line_at(text, e.byte), "malformed JSON: " + reason(e.what()));
+        if (parse_dom(text, doc, error)) return doc;
     } catch (const Json::exception& e) {
         throw JsonSyntaxError(0, "malformed JSON: " + reason(e.what()));
     }
+    throw JsonSyntaxError(line_at(text, error.byte), "malformed JSON: " + reason(error.what.c_str()));
 }
 
 std::string describe(const Json& v) {
     switch (v.type()) {
     case Json::value_t::null: return "null";
     case Json::value_t::object: return "an object";
-    case Json::value_t::array: return "an array";
+    case Json::value_t::array:
+    case Json::value_t::binary: return "an array";  // a packed gid array (json_dom.hpp)
     case Json::value_t::boolean: return v.get<bool>() ? "true" : "false";
     case Json::value_t::string: {
         std::string s = v.get<std::string>();
@@ -110,6 +114,9 @@ const Json& Node::object() const {
 }
 
 const Json& Node::array() const {
+    // A "data" array read as a plain array after all (not as a layer's
+    // cells): unpacked once, in the document the reader owns.
+    if (is_packed_gids(*value)) unpack_gids(const_cast<Json&>(*value));
     if (!value->is_array()) fail("is " + describe(*value) + ", expected an array");
     return *value;
 }

@@ -513,6 +513,14 @@ TEST_CASE("refusals name the file, the JSON path and the reason") {
           "m.tmj: layers[0].chunks[0].width is a string (\"2\"), expected a non-negative integer");
     CHECK(parse_error(head + R"("tilesets":[{"firstgid":1,"source":"nope.tsj"}]})", json_path("m.tmj")) ==
           json_path("m.tmj") + ": cannot open tileset '" + json_path("nope.tsj") + "': No such file or directory");
+    // A "data" array outside a layer is packed while parsing (json_dom.hpp)
+    // but read as the array it is: a class member's raw numbers are refused
+    // as any array of non-objects.
+    CHECK(parse_error(head + R"("properties":[{"name":"p","type":"class","value":{"data":[1,2]}}]})") ==
+          "m.tmj: properties[0].value.data[0] is the number 1, expected an object");
+    // Packing stops at the first element that is not a gid; the rest still loads.
+    const Tilemap mixed = parse_tilemap(layer(R"({"type":"tilelayer","name":"a","width":2,"height":1,"data":[3,2.0]})"), "m.tmj");
+    CHECK(mixed.layers.at(0).raw_gid(0, 0) == 3);
     std::string deep = "{}";
     for (int i = 0; i < 40; ++i) deep = "{\"a\":" + deep + "}";
     CHECK(parse_error(head + R"("properties":[{"name":"p","type":"class","value":)" + deep + "}]}").find(
