@@ -371,25 +371,15 @@ LayerInfo read_layer_info(const Node& n) {
 
 void read_tile_layer(const JsonFile& f, const Node& n, const GroupState& g, LayerInfo& info,
                      Tilemap& map) {
-    TileLayer l;
-    l.name = info.name;
-    g.apply(info, l);
-    l.properties = info.properties;
-    l.solidity = layer_solidity(l.properties);
     const CellEncoding enc = read_encoding(f, n);
-    UnknownGids unknown;
-    if (map.infinite) {
-        read_chunks(f, n, enc, map, l, unknown);
-    } else {
+    add_tile_layer(f.where, g, info, map, [&](TileLayer& l, UnknownGids& unknown) {
+        if (map.infinite) return read_chunks(f, n, enc, map, l, unknown);
         std::tie(l.width, l.height) = layer_size(f, n, map);
         const std::vector<uint32_t> cells =
             node_cells(f, n, enc, l.width, l.height, "layer '" + l.name + "'");
         check_gids(f.where, *f.state, map, cells, l.width, 0, 0, l.name, unknown);
         l.cells = cells;
-    }
-    warn_unknown_gids(f.where, l.name, unknown, map);
-    info.index = map.layers.size();
-    map.layers.push_back(std::move(l));
+    });
 }
 
 void read_object_layer(const JsonFile& f, const Node& n, LayerInfo& info, Tilemap& map) {

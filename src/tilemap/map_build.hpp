@@ -183,6 +183,25 @@ struct GroupState {
     // A layer's own values combined with its groups'.
     void apply(const LayerInfo& own, TileLayer& l) const;
 };
+// A tile layer of either format: its own attributes (`info`) and its
+// groups' (`g`) give its name, drawing state and solidity; fill(layer,
+// unknown) decodes its cells into it (chunks, or one block), noting the gids
+// no tileset holds. It then joins map.layers, info.index pointing at it,
+// with one warning for those gids.
+template <class Fill>
+void add_tile_layer(const Where& w, const GroupState& g, LayerInfo& info, Tilemap& map, Fill fill) {
+    TileLayer l;
+    l.name = info.name;
+    g.apply(info, l);
+    l.properties = info.properties;
+    l.solidity = layer_solidity(l.properties);
+    UnknownGids unknown;
+    fill(l, unknown);
+    warn_unknown_gids(w, l.name, unknown, map);
+    info.index = map.layers.size();
+    map.layers.push_back(std::move(l));
+}
+
 // Refuses a group nested deeper than kMaxGroupDepth (depth counts from 0).
 void check_group_depth(const Where& w, int depth);
 

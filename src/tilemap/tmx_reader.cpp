@@ -365,27 +365,17 @@ LayerInfo read_layer_info(const XmlFile& f, const XMLElement* e, LayerKind kind)
 
 void read_tile_layer(const XmlFile& f, const XMLElement* e, GroupState g, Tilemap& map,
                      LayerInfo& info) {
-    TileLayer l;
-    l.name = info.name;
-    g.apply(info, l);
-    l.properties = info.properties;
-    l.solidity = layer_solidity(l.properties);
     const XMLElement* data = e->FirstChildElement("data");
-    if (!data) f.fail(e, "layer '" + l.name + "' has no <data>");
+    if (!data) f.fail(e, "layer '" + info.name + "' has no <data>");
     const CellEncoding enc = read_encoding(f, data);
-    UnknownGids unknown;
-    if (map.infinite) {
-        read_chunks(f, data, enc, map, l, unknown);
-    } else {
+    add_tile_layer(f.where, g, info, map, [&](TileLayer& l, UnknownGids& unknown) {
+        if (map.infinite) return read_chunks(f, data, enc, map, l, unknown);
         std::tie(l.width, l.height) = layer_size(f, e, map);
         const std::vector<uint32_t> cells =
             element_cells(f, data, enc, l.width, l.height, "layer '" + l.name + "'");
         check_gids(f.at(data), *f.state, map, cells, l.width, 0, 0, l.name, unknown);
         l.cells = cells;
-    }
-    warn_unknown_gids(f.where, l.name, unknown, map);
-    info.index = map.layers.size();
-    map.layers.push_back(std::move(l));
+    });
 }
 
 // "x,y x,y …", each number strict: Tiled refuses the map otherwise.
