@@ -2,6 +2,7 @@
 #include "json_values.hpp"
 
 #include "json_dom.hpp"
+#include "utf8.hpp"
 
 #include <climits>
 #include <cmath>
@@ -30,13 +31,9 @@ bool deeper_than(std::string_view text, int max) {
     return false;
 }
 
-int line_at(std::string_view text, size_t byte) {
-    if (byte > text.size()) byte = text.size();
-    int line = 1;
-    for (size_t i = 0; i + 1 < byte; ++i)
-        if (text[i] == '\n') ++line;
-    return line;
-}
+// nlohmann's byte count includes the character it stopped at: the line is
+// that character's.
+int stop_line(std::string_view text, size_t byte) { return tmx::line_at(text, byte > 0 ? byte - 1 : 0); }
 
 // nlohmann's what() starts with its id ("[json.exception.parse_error.101] ")
 // and, for parse errors, the position, which the MapError says itself:
@@ -70,7 +67,7 @@ Json parse(std::string_view text, int max_depth) {
     } catch (const Json::exception& e) {
         throw JsonSyntaxError(0, "malformed JSON: " + reason(e.what()));
     }
-    throw JsonSyntaxError(line_at(text, error.byte), "malformed JSON: " + reason(error.what.c_str()));
+    throw JsonSyntaxError(stop_line(text, error.byte), "malformed JSON: " + reason(error.what.c_str()));
 }
 
 std::string describe(const Json& v) {
