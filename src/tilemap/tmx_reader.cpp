@@ -56,12 +56,13 @@ std::string xml_error(const tinyxml2::XMLDocument& doc) {
 // The text in UTF-8 first (xml_encoding.hpp), so every string read from it
 // and every message quoting it is valid UTF-8; tinyxml2 copies it.
 void parse_xml(XmlFile& f, std::string_view raw) {
-    std::string text;
+    std::optional<std::string> transcoded;
     try {
-        text = tmx::xml_text_as_utf8(raw);
+        transcoded = tmx::xml_text_as_utf8(raw);
     } catch (const tmx::EncodingError& e) {
         f.where.at(e.line()).fail(e.what());
     }
+    const std::string_view text = transcoded ? std::string_view(*transcoded) : raw;
     if (f.doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
         f.where.at(f.doc.ErrorLineNum()).fail(xml_error(f.doc));
 }

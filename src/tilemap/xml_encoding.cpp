@@ -77,9 +77,16 @@ std::string transcode(std::string_view text, const std::string& from) {
     return out;
 }
 
+// Refuses the first byte of `utf8` that is not valid UTF-8.
+void check_utf8(std::string_view utf8) {
+    if (const size_t bad = first_invalid_utf8(utf8); bad != std::string_view::npos)
+        throw EncodingError(line_at(utf8, bad), "byte " + byte_text(static_cast<unsigned char>(utf8[bad])) +
+                                                    " is not valid UTF-8");
+}
+
 }  // namespace
 
-std::string xml_text_as_utf8(std::string_view text) {
+std::optional<std::string> xml_text_as_utf8(std::string_view text) {
     std::string from;
     if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
         from = "UTF-16";  // iconv reads the mark and drops it
@@ -90,10 +97,12 @@ std::string xml_text_as_utf8(std::string_view text) {
         !text.starts_with("\xFE\xFF"))
         throw EncodingError(1, "the XML declaration names " + from +
                                    " but the file has no UTF-16 byte-order mark");
-    std::string utf8 = is_utf8_name(from) ? std::string(text) : transcode(text, from);
-    if (const size_t bad = first_invalid_utf8(utf8); bad != std::string_view::npos)
-        throw EncodingError(line_at(utf8, bad), "byte " + byte_text(static_cast<unsigned char>(utf8[bad])) +
-                                                    " is not valid UTF-8");
+    if (is_utf8_name(from)) {
+        check_utf8(text);
+        return std::nullopt;
+    }
+    std::string utf8 = transcode(text, from);
+    check_utf8(utf8);
     return utf8;
 }
 

@@ -1,6 +1,7 @@
 // An XML file's text as UTF-8, whatever encoding it declares: tinyxml2 reads
 // UTF-8 only, and passes any other byte through into the strings it returns.
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -8,10 +9,11 @@ namespace ds::tmx {
 
 // The text in UTF-8: transcoded (iconv) from the encoding of its XML
 // declaration, or from UTF-16 when it starts with a UTF-16 byte-order mark;
-// UTF-8 text is returned as it is. Throws EncodingError when the encoding is
+// nullopt when it is UTF-8 already (checked, not copied: maps are mostly
+// UTF-8 and may be 64 MiB). Throws EncodingError when the encoding is
 // unknown or a byte is not valid in it (valid UTF-8 included), with the
 // 1-based line of that byte.
-std::string xml_text_as_utf8(std::string_view text);
+std::optional<std::string> xml_text_as_utf8(std::string_view text);
 
 class EncodingError : public std::exception {
 public:
