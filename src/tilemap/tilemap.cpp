@@ -16,6 +16,11 @@ bool iequals(std::string_view a, std::string_view b) {
            });
 }
 
+// gid_known for a nonzero masked gid whose tileset_for is ts.
+bool known_in(const Tilemap& map, const Tileset* ts, uint32_t gid) {
+    return map.tilesets.empty() || (ts && ts->has_tile(gid - ts->firstgid));
+}
+
 std::string where(const std::string& file, int line) {
     return line > 0 ? file + ":" + std::to_string(line) : file;
 }
@@ -98,12 +103,13 @@ const Tileset* Tilemap::tileset_for(uint32_t gid) const {
 
 bool Tilemap::gid_solid(uint32_t gid) const {
     gid &= kGidMask;
+    if (gid == 0) return false;
+    const Tileset* ts = tileset_for(gid);  // looked up once: solid_grid asks every cell
     // A gid beyond every tileset (loaded with a warning) is drawn as missing
     // and never solid, whatever the layer or the script say.
-    if (gid == 0 || !gid_known(gid)) return false;
+    if (!known_in(*this, ts, gid)) return false;
     for (const uint32_t s : extra_solid_gids)
         if ((s & kGidMask) == gid) return true;
-    const Tileset* ts = tileset_for(gid);
     return ts && ts->tile_solid(gid - ts->firstgid);
 }
 
@@ -111,8 +117,8 @@ bool Tilemap::cell_solid(int64_t col, int64_t row) const {
     for (const TileLayer& layer : layers) {
         if (layer.solidity == LayerSolidity::None) continue;
         const uint32_t gid = layer.raw_gid(col, row) & kGidMask;
-        if (gid == 0 || !gid_known(gid)) continue;
-        if (layer.solidity == LayerSolidity::All || gid_solid(gid)) return true;
+        if (gid == 0) continue;
+        if (layer.solidity == LayerSolidity::All ? gid_known(gid) : gid_solid(gid)) return true;
     }
     return false;
 }
@@ -137,9 +143,7 @@ uint8_t Tilemap::cell_kind(int64_t col, int64_t row) const {
 
 bool Tilemap::gid_known(uint32_t gid) const {
     gid &= kGidMask;
-    if (gid == 0 || tilesets.empty()) return true;
-    const Tileset* ts = tileset_for(gid);
-    return ts && ts->has_tile(gid - ts->firstgid);
+    return gid == 0 || known_in(*this, tileset_for(gid), gid);
 }
 
 void Tilemap::set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid) {
