@@ -89,7 +89,7 @@ SCM object_property_key(const std::string& name, SCM emitted) {
         if (!std::string_view(name).starts_with(kTakenPrefix) || scm_is_false(scm_memq(k, emitted))) return k;
     }
     for (;;) {  // a prefixed name is never a built-in key; emitted is finite
-        spelled = scm_string_append(scm_list_2(scm_from_utf8_string("property-"), spelled));
+        spelled = scm_string_append(scm_list_2(text(kTakenPrefix), spelled));
         SCM k = key_of(spelled);
         if (scm_is_false(scm_memq(k, emitted))) return k;
     }
