@@ -40,6 +40,7 @@ void reserve_cache(Batch& batch, size_t n) {
     if (scm_is_true(batch.cache)) scm_gc_unprotect_object(batch.cache);
     batch.cache = grown;
     batch.cached.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
+    batch.known.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
 }
 
 // The #:id of an entity that failed to decode, when it is a name worth
@@ -71,7 +72,6 @@ void name_failed_entity(Failure& f, size_t index, SCM entity) {
 }  // namespace
 
 bool decode_batch(SCM entities, Batch& batch, Failure& f) {
-    batch.before.clear();
     batch.has_tween.clear();
     batch.writes.clear();
     batch.hit.clear();
@@ -95,13 +95,13 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
                 name_failed_entity(f, i, e);
                 return false;
             }
-            c = {d.body, watched_fields(d), scm_is_true(d.tween)};
+            c = {d.places, watched_fields(d), scm_is_true(d.tween), d.body.contacts};
+            batch.known[i] = d.body;
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
             batch.settling.forget(i);  // the mark was another entity's
         }
         batch.hit.push_back(hit);
-        batch.before.push_back(c.body);
-        batch.contact_bodies += c.body.contacts;
+        batch.contact_bodies += c.contacts;
         batch.has_tween.push_back(c.has_tween);
         batch.writes.push_back(FirstWrites{.watched = c.watched});
     }
@@ -109,7 +109,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         fail(f, "wrong-type-arg", scm_list_1(entities), "expected a list of entities, got ~S");
         return false;
     }
-    batch.bodies = batch.before;
+    batch.bodies.assign(batch.known.begin(), batch.known.begin() + static_cast<std::ptrdiff_t>(i));
     return true;
 }
 
@@ -124,7 +124,7 @@ void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
 void note_settled(Batch& batch) {
     bool all = true;
     for (size_t i = 0; i < batch.size(); ++i)
-        all &= batch.settling.settle(i, !batch.changed[i], batch.has_tween[i], batch.before[i], batch.colliders);
+        all &= batch.settling.settle(i, !batch.changed[i], batch.has_tween[i], batch.bodies[i], batch.colliders);
     batch.all_settled = all;
 }
 
@@ -154,17 +154,31 @@ void zero_as_decoded(T&) {}
 // now holds a fixnum, bignum or flonum, so it is present and no longer lossy;
 // exact zeros are +0.0, as decoding makes them. Tweened entities are left to
 // be decoded again: their #:tween changes outside the body.
-void remember(Batch& batch, size_t i, SCM entity) {
+// `placed`: the entity was rewritten in place order (rewrite_placed), so
+// its keys sit where they sat; otherwise they are found again.
+void remember(Batch& batch, size_t i, SCM entity, bool placed) {
     if (batch.has_tween[i]) return;
     CachedEntity& c = batch.cached[i];
-    Body b = batch.bodies[i];
+    Body& b = batch.known[i];
+    b = batch.bodies[i];
 #define DS_FIELD(Name, type, member, keyword, rule) zero_as_decoded(b.member);
 #define DS_KEY(Name, type, member, keyword, rule) zero_as_decoded(b.member);
 #include "body_fields.def"
     const uint32_t edited = batch.fields[i] | batch.writes[i].written();
-    c.body = b;
     c.watched = static_cast<uint16_t>(c.watched & ~edited);
+    if (!placed) c.places = places_of(entity);
     SCM_SIMPLE_VECTOR_SET(batch.cache, i, entity);
+}
+
+// The pairs of an entity's plist that encoding will read: fetched some
+// entities ahead, so that walking the plists is not one memory stall after
+// another (a big scene's plists are far out of cache by the next frame).
+constexpr size_t kPrefetchAhead = 8;
+void prefetch_plist(SCM plist) {
+    const char* cell = reinterpret_cast<const char*>(SCM2PTR(plist));
+    __builtin_prefetch(cell);
+    __builtin_prefetch(cell + 64);  // pairs a frame conses come from one free list, mostly in address order
+    __builtin_prefetch(cell + 128);
 }
 
 
@@ -198,7 +212,7 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
     const bool reports = scm_is_true(names);
     SCM p = entities;  // walked only for a report: the spine stays out of cache otherwise
     for (size_t i = 0; i < batch.size(); ++i) {
-        batch.fields[i] = changed_fields(batch.before[i], batch.bodies[i]);
+        batch.fields[i] = changed_fields(batch.known[i], batch.bodies[i]);
         if (!check_finite(batch.bodies[i], batch.fields[i], f)) return entities;
         batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
         if (reports) {
@@ -211,19 +225,28 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
     if (last == 0) return entities;
     SCM head = SCM_EOL, tail = SCM_BOOL_F;
     p = entities;
+    SCM ahead = entities;
+    for (size_t j = 0; j < kPrefetchAhead && j < last; ++j, ahead = SCM_CDR(ahead))
+        if (batch.changed[j]) prefetch_plist(SCM_CAR(ahead));
     const Conser cons;
     for (size_t i = 0; i < last; ++i, p = SCM_CDR(p)) {
+        if (i + kPrefetchAhead < last) {
+            if (batch.changed[i + kPrefetchAhead]) prefetch_plist(SCM_CAR(ahead));
+            ahead = SCM_CDR(ahead);
+        }
         SCM plist = SCM_CAR(p), entity = plist;
         if (batch.changed[i]) {
-            entity = rewrite_plist(plist, edits, entity_edits(batch, i, plist, names, edits));
-            remember(batch, i, entity);
+            const size_t n = entity_edits(batch, i, plist, names, edits);
+            const bool placed = all_placed(edits, n, batch.cached[i].places);
+            entity = placed ? rewrite_placed(plist, edits, n, batch.cached[i].places) : rewrite_plist(plist, edits, n);
+            remember(batch, i, entity, placed);
         }
         SCM cell = cons(entity, SCM_EOL);
         if (scm_is_false(tail)) head = cell;
-        else scm_set_cdr_x(tail, cell);
+        else SCM_SETCDR(tail, cell);  // a fresh pair: no check, and the collector needs no barrier
         tail = cell;
     }
-    scm_set_cdr_x(tail, p);
+    SCM_SETCDR(tail, p);
     return head;
 }
 

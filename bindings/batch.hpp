@@ -4,27 +4,35 @@
 #include <libguile.h>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "body.hpp"
 #include "contact_report.hpp"
 #include "failure.hpp"
 #include "frame.hpp"
+#include "plist.hpp"
 #include "settle.hpp"
 #include "tile_grid.hpp"
 
 namespace ds::guile {
 
-// What decoding an entity produced, kept for as long as the same plist
-// (eq?) comes back: plists are values, so the same object decodes the same.
+// What decoding an entity produced besides its body, kept for as long as
+// the same plist (eq?) comes back: plists are values, so the same object
+// decodes the same.
 struct CachedEntity {
-    Body body;
+    FieldPlaces places;
     uint16_t watched = 0;
     bool has_tween = false;
+    bool contacts = false;
 };
 
 struct Batch {
-    std::vector<Body> before;  // as decoded
+    // By position: the decoded body of the entity in cache slot i. After
+    // decode_batch, its first size() bodies are the list as decoded (before());
+    // a cache hit costs no copy, and encode_batch writes back only the bodies
+    // that changed.
+    std::vector<Body> known;
     std::vector<Body> bodies;  // what the steps work on
     std::vector<uint8_t> has_tween;
     std::vector<FirstWrites> writes;  // per body: watched fields and first writes
@@ -57,6 +65,8 @@ struct Batch {
     bool all_settled = false;
 
     size_t size() const { return bodies.size(); }
+    // The list as decoded (valid from decode_batch until encode_batch).
+    std::span<const Body> before() const { return {known.data(), bodies.size()}; }
 };
 
 // Decodes a proper list of entity plists. No SCM is kept: the list itself

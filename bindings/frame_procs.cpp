@@ -100,7 +100,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             const auto tweens = static_cast<uint64_t>(
                 std::count(batch.has_tween.begin(), batch.has_tween.end(), uint8_t{1}));
             stats.core.step[kStepTweens] = {tweens, batch.size() - tweens, ms_since(t0)};
-            if (tweened) batch.frame_start = batch.before;  // the scene before the tweens
+            if (tweened) batch.frame_start.assign(batch.before().begin(), batch.before().end());  // the scene before the tweens
             t0 = Clock::now();
             if (!f && (!tweened || decode_batch(list, batch, f))) {
                 stats.decode.ms += ms_since(t0);

@@ -1,5 +1,6 @@
 #include "plist.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <mutex>
@@ -194,6 +195,12 @@ void settle_report(Decoded& d) {
     if (!d.has(kStandingOn)) b.standing_on = kStandingAbsent;
 }
 
+// Records where physics key k first occurs, if it is a field's.
+void place(FieldPlaces& places, uint8_t k, size_t index) {
+    const uint32_t field = field_of(k);
+    if (field != 0 && index <= FieldPlaces::kMaxPlace) places.at[__builtin_ctz(field)] = static_cast<uint8_t>(index);
+}
+
 bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
     Body& b = d.body;
     switch (k) {
@@ -259,8 +266,8 @@ int64_t identity_tag(SCM v) {
 bool decode_entity(SCM plist, Decoded& d, Failure& f) {
     d = Decoded{};
     SCM p = plist;
-    size_t passed = 0;
-    for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p))) {
+    size_t passed = 0, index = 0;
+    for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p)), ++index) {
         SCM key = SCM_CAR(p);
         const uint8_t k = keys->lookup(key);  // a physics key is a keyword: no need to ask
         if (k == kNotPhysics && !scm_is_keyword(key)) {
@@ -281,6 +288,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             continue;
         }
         d.present |= 1u << k;
+        place(d.places, k, index);
         if (!decode_value(k, key, SCM_CAR(SCM_CDR(p)), d, f)) return false;
     }
     if (!scm_is_null(p)) {
@@ -316,7 +324,7 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
     auto emit = [&](SCM key, SCM value) {
         SCM cell = cons(key, cons(value, SCM_EOL));
         if (scm_is_false(tail)) head = cell;
-        else scm_set_cdr_x(tail, cell);
+        else SCM_SETCDR(tail, cell);  // a fresh pair: no check, and the collector needs no barrier
         tail = SCM_CDR(cell);
     };
     // Pass 2: copy up to the last edited key (all of it when appending).
@@ -336,8 +344,48 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
     for (size_t i = 0; i < count; ++i)
         if (!((found >> i) & 1u) && !edits[i].remove) emit(edits[i].key, edits[i].value);
     if (scm_is_false(tail)) return p;  // everything before p was removed
-    scm_set_cdr_x(tail, p);
+    SCM_SETCDR(tail, p);
     return head;
+}
+
+bool all_placed(const Edit* edits, size_t count, const FieldPlaces& places) {
+    for (size_t i = 0; i < count; ++i)
+        if (edits[i].remove || edits[i].field < 0 || places.at[edits[i].field] == FieldPlaces::kUnplaced)
+            return false;
+    return count != 0;
+}
+
+SCM rewrite_placed(SCM plist, const Edit* edits, size_t count, const FieldPlaces& places) {
+    // By pair index up to the last edited pair: which edit replaces its value.
+    int8_t edit_at[FieldPlaces::kMaxPlace + 1];
+    size_t last = 0;
+    for (size_t i = 0; i < count; ++i) last = std::max<size_t>(last, places.at[edits[i].field] + 1u);
+    std::fill_n(edit_at, last, int8_t{-1});
+    for (size_t i = 0; i < count; ++i) edit_at[places.at[edits[i].field]] = static_cast<int8_t>(i);
+    const Conser cons;
+    SCM p = plist, head = SCM_EOL, tail = SCM_EOL;
+    for (size_t index = 0; index < last; ++index, p = SCM_CDR(SCM_CDR(p))) {
+        const SCM value = edit_at[index] < 0 ? SCM_CAR(SCM_CDR(p)) : edits[edit_at[index]].value;
+        SCM cell = cons(SCM_CAR(p), cons(value, SCM_EOL));
+        if (index == 0) head = cell;
+        else SCM_SETCDR(tail, cell);
+        tail = SCM_CDR(cell);
+    }
+    SCM_SETCDR(tail, p);
+    return head;
+}
+
+FieldPlaces places_of(SCM plist) {
+    FieldPlaces places;
+    uint32_t seen = 0;
+    size_t index = 0;
+    for (SCM p = plist; scm_is_pair(p) && index <= FieldPlaces::kMaxPlace; p = SCM_CDR(SCM_CDR(p)), ++index) {
+        const uint8_t k = keys->lookup(SCM_CAR(p));
+        if (k == kNotPhysics || ((seen >> k) & 1u)) continue;
+        seen |= 1u << k;
+        place(places, k, index);
+    }
+    return places;
 }
 
 namespace {
@@ -346,7 +394,7 @@ namespace {
 Edit field_edit(int bit, const Body& b) {
     switch (bit) {
 #define DS_FIELD(Name, type, member, keyword, rule) \
-    case kFieldBit##Name: return {keys->key[k##Name], encode(rule{}, b.member)};
+    case kFieldBit##Name: return {keys->key[k##Name], encode(rule{}, b.member), false, kFieldBit##Name};
 #define DS_KEY(Name, type, member, keyword, rule)
 #include "body_fields.def"
         default: __builtin_unreachable();  // bit < kFieldCount

@@ -13,8 +13,20 @@
 
 namespace ds::guile {
 
+// Where the key of each Field first occurs in a plist, as a pair index (key
+// k of (k0 v0 k1 v1 …) is pair k), or kUnplaced when it is absent or beyond
+// kMaxPlace. Encoding a cached entity then copies just the prefix up to the
+// last edited key, in one walk and without comparing a key (rewrite_placed).
+struct FieldPlaces {
+    static constexpr uint8_t kUnplaced = 255;
+    static constexpr size_t kMaxPlace = 254;  // a uint8_t, kUnplaced aside
+    uint8_t at[kFieldCount];
+    FieldPlaces() { for (uint8_t& a : at) a = kUnplaced; }
+};
+
 struct Decoded {
     Body body;
+    FieldPlaces places;
     uint32_t present = 0;  // bit k set: PhysKey k occurs in the plist
     uint16_t lossy = 0;    // Field bits whose value is not a fixnum or flonum (1/3, 2^70)
     SCM tween = SCM_BOOL_F;
@@ -47,6 +59,7 @@ struct Edit {
     SCM key;
     SCM value;
     bool remove = false;
+    int8_t field = -1;  // the Field bit index the key holds, when it is a field's (field_edits)
 };
 
 // A new plist with each edit applied to the first occurrence of its key
@@ -54,6 +67,15 @@ struct Edit {
 // up to the last edited key and shares the rest; returns plist itself when
 // there are no edits.
 SCM rewrite_plist(SCM plist, const Edit* edits, size_t count);
+
+// Whether rewrite_placed can apply these edits: each replaces a field whose
+// first occurrence `places` knows.
+bool all_placed(const Edit* edits, size_t count, const FieldPlaces& places);
+// rewrite_plist for edits that all_placed accepts: the same new plist, built
+// in one walk of the prefix up to the last edited pair.
+SCM rewrite_placed(SCM plist, const Edit* edits, size_t count, const FieldPlaces& places);
+// The places of a plist decode_entity accepted (walked again).
+FieldPlaces places_of(SCM plist);
 
 // The Field bits a frame must watch: the fields a decoded plist lacks (a
 // first write appends them) and the lossy ones (a write must reach the plist

@@ -772,6 +772,55 @@
               (step-scene faller 16 #:substeps bad)))
           '(0 -1 2.0 1/2 x 100000))
 
+;;; ---------------------------------------------------------------- what a frame conses (issue 23)
+;;; Each frame rewrites an entity's plist only up to its last changed key and
+;;; shares the rest; the second and later frames take the positions of the
+;;; keys from the decoding they remember, so these run three frames each.
+(define (fresh-pairs new old)
+  "How many pairs of NEW come before the first pair it shares with OLD."
+  (let loop ((p new) (n 0))
+    (if (or (null? p) (memq p (let tails ((q old) (acc '())) (if (pair? q) (tails (cdr q) (cons q acc)) acc))))
+        n
+        (loop (cdr p) (+ n 1)))))
+(define (frames scene n)
+  (let loop ((i 0) (s scene) (acc '()))
+    (if (= i n) (reverse acc) (let ((next (step-scene s 16))) (loop (+ i 1) next (cons next acc))))))
+(let* ((mover '(#:type a #:x 0 #:vx 1 #:width 8 #:height 8 #:name "m" #:colour red))
+       (still '(#:type b #:x 50 #:vx 0 #:width 8 #:height 8))
+       (s0 (make-scene #:entities (list mover still)))
+       (ss (frames s0 3)))
+  (test-equal "a moving x rewrites the pairs up to #:x, frame after frame" '(4 4 4)
+    (map (lambda (a b) (fresh-pairs (car (scene-entities b)) (car (scene-entities a))))
+         (cons s0 ss) ss))
+  (test-equal "… and the x is what the frames give" '(1 2 3)
+    (map (lambda (s) (entity-ref (car (scene-entities s)) #:x)) ss))
+  (test-assert "the still entity and the spine after the mover are shared"
+    (every (lambda (s) (eq? (cdr (scene-entities s)) (cdr (scene-entities s0)))) ss)))
+(let* ((dup '(#:x 0 #:vx 2 #:width 8 #:height 8 #:x 99 #:tag t))
+       (ss (frames (make-scene #:entities (list dup)) 3)))
+  (test-equal "only a key's first occurrence is written; the second stays in the shared tail"
+    '((#:x 2 #:vx 2 #:width 8 #:height 8 #:x 99 #:tag t) (#:x 4 #:vx 2 #:width 8 #:height 8 #:x 99 #:tag t)
+      (#:x 6 #:vx 2 #:width 8 #:height 8 #:x 99 #:tag t))
+    (map (lambda (s) (car (scene-entities s))) ss))
+  (test-assert "… sharing from the first #:vx on"
+    (every (lambda (s) (eq? (cddr (car (scene-entities s))) (cddr dup))) ss)))
+(let* ((faller '(#:x 0 #:y 0 #:width 8 #:height 8 #:gravity? #t #:tag t))
+       (ss (frames (make-scene #:entities (list faller)) 3)))
+  (test-equal "a key a frame first writes is appended once, then rewritten where it now sits"
+    (map (lambda (k) (let ((g *gravity*))
+                       (list #:x 0 #:y (* g (/ (* k (+ k 1)) 2)) #:width 8 #:height 8 #:gravity? #t #:tag 't
+                             #:vy (* g k))))
+         '(1 2 3))
+    (map (lambda (s) (car (scene-entities s))) ss)))
+(let* ((long (append '(#:x 0 #:vx 1 #:width 8 #:height 8)
+                     (append-map (lambda (i) (list (symbol->keyword (symbol-append 'k (string->symbol (number->string i)))) i))
+                                 (iota 300))
+                     '(#:vy 1)))
+       (ss (frames (make-scene #:entities (list long)) 3)))
+  (test-equal "a key past the 255th pair is still found and written"
+    '((1 1) (2 2) (3 3))
+    (map (lambda (s) (let ((e (car (scene-entities s)))) (list (entity-ref e #:x) (entity-ref e #:y)))) ss)))
+
 ;;; ---------------------------------------------------------------- resting contacts (beyond the seed)
 (define floor-map (grid-map 4 30 (row 29 4)))
 (define (stack n)
