@@ -794,8 +794,10 @@
          (cons s0 ss) ss))
   (test-equal "… and the x is what the frames give" '(1 2 3)
     (map (lambda (s) (entity-ref (car (scene-entities s)) #:x)) ss))
-  (test-assert "the still entity and the spine after the mover are shared"
-    (every (lambda (s) (eq? (cdr (scene-entities s)) (cdr (scene-entities s0)))) ss)))
+  ;; The native path's promise (the pure-Scheme reference conses a new spine).
+  (when (eq? step-scene (@ (downstroke physics) step-scene))
+    (test-assert "the still entity and the spine after the mover are shared"
+      (every (lambda (s) (eq? (cdr (scene-entities s)) (cdr (scene-entities s0)))) ss))))
 (let* ((dup '(#:x 0 #:vx 2 #:width 8 #:height 8 #:x 99 #:tag t))
        (ss (frames (make-scene #:entities (list dup)) 3)))
   (test-equal "only a key's first occurrence is written; the second stays in the shared tail"
