@@ -24,7 +24,7 @@ struct CachedEntity {
     FieldPlaces places;
     uint16_t watched = 0;
     bool has_tween = false;
-    bool contacts = false;
+    bool contacts = false;  // known[i].contacts, kept here so a cache hit need not read its body
 };
 
 struct Batch {

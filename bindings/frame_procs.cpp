@@ -10,6 +10,7 @@
 #include "registry.hpp"
 #include "scm_number.hpp"
 #include "detail/stopwatch.hpp"
+#include "gc_clock.hpp"
 #include "tilemap_type.hpp"
 #include "tween_step.hpp"
 
@@ -37,13 +38,30 @@ SCM step_list_tweens(SCM entities, const Batch& batch, double dt, Failure& f) {
 }
 
 // The last whole frame stepped on this thread: the core's per-step figures
-// plus the boundary's own (plist decoding and encoding, the tween stage).
+// plus the boundary's own (plist decoding and encoding, the tween stage) and
+// what the collector cost during the call. The boundary's times leave out
+// the collections inside them, which `collect` reports on their own.
 struct LastFrame {
     FrameStats core;
-    StepStats decode, encode;
+    StepStats decode, encode;  // encode: processed = entities rewritten
+    GcReading collect;
     size_t entities = 0;
 };
 thread_local LastFrame last_frame;
+
+// Wall time of one phase of a frame, less the collections that ran inside it.
+struct PhaseTimer {
+    Clock::time_point t0 = Clock::now();
+    uint64_t gc0 = gc_reading().ns;
+    double lap() {
+        const Clock::time_point t1 = Clock::now();
+        const uint64_t gc1 = gc_reading().ns;
+        const double ms = ms_between(t0, t1) - static_cast<double>(gc1 - gc0) / 1e6;
+        t0 = t1;
+        gc0 = gc1;
+        return ms > 0 ? ms : 0;
+    }
+};
 
 // The pairs of the last step-scene on this thread with a contact entity
 // (semantics §10), by index into the list it returned: %frame-contacts
@@ -79,11 +97,12 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
         const TileGrid* grid = nullptr;
         Batch& batch = lease_batch();  // owned by the pool, returned by the dynwind handler
         LastFrame stats;
-        auto t0 = Clock::now();
+        const GcReading gc0 = gc_reading();
+        PhaseTimer timer;
         // The tween stage calls Scheme (custom easings, on-complete): an error
         // or escape there longjmps over this frame, these locals included.
         static_assert(survives_longjmp<decltype(opts), decltype(grid), decltype(batch), decltype(stats),
-                                       decltype(t0)>);
+                                       decltype(gc0), decltype(timer)>);
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
             frame_is_noop(batch, entities, grid, opts)) {
@@ -91,19 +110,19 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             stats.entities = batch.last_count;
             stats.decode.skipped = stats.encode.skipped = batch.last_count;
             for (StepStats& s : stats.core.step) s.skipped = batch.last_count;
+            stats.collect = gc_reading() - gc0;
             last_frame = stats;
         } else if (!f && decode_batch(entities, batch, f)) {
-            stats.decode.ms = ms_since(t0);
-            t0 = Clock::now();
+            stats.decode.ms = timer.lap();
             SCM list = step_list_tweens(entities, batch, opts.dt, f);
             const bool tweened = !scm_is_eq(list, entities);
             const auto tweens = static_cast<uint64_t>(
                 std::count(batch.has_tween.begin(), batch.has_tween.end(), uint8_t{1}));
-            stats.core.step[kStepTweens] = {tweens, batch.size() - tweens, ms_since(t0)};
-            if (tweened) batch.frame_start.assign(batch.before().begin(), batch.before().end());  // the scene before the tweens
-            t0 = Clock::now();
+            stats.core.step[kStepTweens] = {tweens, batch.size() - tweens, timer.lap()};
+            // The scene before the tweens, which ground detection reads.
+            if (tweened) batch.frame_start.assign(batch.before().begin(), batch.before().end());
             if (!f && (!tweened || decode_batch(list, batch, f))) {
-                stats.decode.ms += ms_since(t0);
+                stats.decode.ms += timer.lap();
                 plan_sleep(batch, grid, opts);
                 batch.frame.note_pairs(pushed_pairs());
                 batch.frame.step_physics(batch.bodies, grid, opts,
@@ -111,17 +130,21 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                                                  : std::span<const Body>(),
                                          batch.writes, batch.settling.asleep());
                 gather_contacts(batch);
-                t0 = Clock::now();
+                timer.lap();  // the steps time themselves (batch.frame.stats())
                 result = encode_batch(list, batch, f);
                 if (!f) {
                     note_settled(batch);
                     note_result(batch, result);
-                    stats.encode.ms = ms_since(t0);
+                    stats.encode.ms = timer.lap();
                     const StepStats tween_stats = stats.core.step[kStepTweens];
                     stats.core = batch.frame.stats();
                     stats.core.step[kStepTweens] = tween_stats;
                     stats.entities = batch.size();
-                    stats.decode.processed = stats.encode.processed = batch.size();
+                    stats.decode.processed = batch.size();
+                    stats.encode.processed = static_cast<uint64_t>(
+                        std::count(batch.changed.begin(), batch.changed.end(), uint8_t{1}));
+                    stats.encode.skipped = batch.size() - stats.encode.processed;
+                    stats.collect = gc_reading() - gc0;
                     last_frame = stats;
                 }
             }
@@ -152,7 +175,10 @@ SCM step_stats(const char* name, const StepStats& s) {
 
 SCM frame_stats() {
     const LastFrame& l = last_frame;
-    SCM rows = scm_list_1(step_stats("encode", l.encode));
+    const SCM collect = scm_list_4(scm_from_utf8_symbol("collect"), scm_from_uint64(l.collect.collections),
+                                   scm_from_uint64(l.collect.bytes),
+                                   scm_from_double(static_cast<double>(l.collect.ns) / 1e6));
+    SCM rows = scm_list_2(step_stats("encode", l.encode), collect);
     for (int id = kStepCount - 1; id >= 0; --id)
         rows = scm_cons(step_stats(step_name(static_cast<StepId>(id)), l.core.step[id]), rows);
     return scm_cons(step_stats("decode", l.decode), rows);
@@ -166,7 +192,7 @@ void register_frame_procedures() {
     define_procedure<1, 0, 0, frame_contacts>("%frame-contacts",
         WrapperDoc{"(entities) → ((name-a . name-b) …)", "step-scene", "(downstroke physics)"});
     define_procedure<0, 0, 0, frame_stats>("%frame-stats",
-        WrapperDoc{"() → ((step processed skipped ms) …)", "engine-stats", "(downstroke engine)"});
+        WrapperDoc{"() → ((step processed skipped ms) … (collect collections bytes ms))", "engine-stats", "(downstroke engine)"});
 }
 
 }  // namespace ds::guile

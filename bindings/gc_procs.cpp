@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "failure.hpp"
+#include "gc_clock.hpp"
 #include "registry.hpp"
 
 namespace ds::guile {
@@ -34,6 +35,7 @@ SCM set_gc_space_divisor(SCM n) {
 }  // namespace
 
 void apply_gc_policy() {
+    start_gc_clock();
     // A divisor the user chose in the environment (Boehm read it at start) wins.
     const char* chosen = std::getenv("GC_FREE_SPACE_DIVISOR");
     if (chosen == nullptr || *chosen == '\0') GC_set_free_space_divisor(1);

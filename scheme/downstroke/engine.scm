@@ -221,11 +221,16 @@ frame in order (tweens acceleration gravity velocity-x tile-collisions-x
 velocity-y tile-collisions-y on-solid entity-collisions groups), and encode
 (writing back what changed). PROCESSED counts the entities a step applied
 to; SKIPPED those it left alone (skip-pipelines, no #:gravity?, no speed on
-a tile step's axis, not solid, not in a group). It is the last step-scene run
-on this thread, which for a running game is its own last frame. A last
-row (render drawn culled ms) says what drawing the last frame cost: tiles,
-sprites, boxes and commands drawn, entities outside the view, and time
-(zeros until a frame is drawn, and always in a build without the renderer)."
+a tile step's axis, not solid, not in a group); for encode, the entities
+handed back as new plists and those handed back as they were. Then
+(collect collections bytes ms): the collections that ran during the frame,
+the bytes it allocated (Boehm's count, exact to a few KB) and the time the
+collections took, which the decode and encode times leave out. It is the
+last step-scene run on this thread, which for a running game is its own
+last frame. A last row (render drawn culled ms) says what drawing the last
+frame cost: tiles, sprites, boxes and commands drawn, entities outside the
+view, and time (zeros until a frame is drawn, and always in a build without
+the renderer)."
   (let ((display (game-display game)))
     (append (%frame-stats) (list (if display (%display-stats display) '(render 0 0 0.0))))))
 

@@ -241,18 +241,51 @@
 (define stats18 (engine-stats g18))
 (test-equal "engine-stats: every step in frame order, between decode and encode, then drawing"
   '(decode tweens acceleration gravity velocity-x tile-collisions-x velocity-y tile-collisions-y
-    on-solid entity-collisions groups encode render)
+    on-solid entity-collisions groups encode collect render)
   (map car stats18))
 (test-equal "engine-stats: processed and skipped per step"
   ;; the third box came out of frame 1 unchanged and depends on nobody: from
   ;; then on the frame leaves it alone (velocity-y skips it too)
   '((decode 3 0) (tweens 0 3) (acceleration 1 2) (gravity 1 2) (velocity-x 2 1)
     (tile-collisions-x 0 3) (velocity-y 2 1) (tile-collisions-y 0 3) (on-solid 1 2)
-    (entity-collisions 2 1) (groups 0 3) (encode 3 0)
+    ;; encode: the two solid boxes came back as new plists, the third as itself
+    (entity-collisions 2 1) (groups 0 3) (encode 2 1)
+    (collect 0)                         ; no collection ran in the frame
     (render 0 0))                       ; headless: nothing drawn
-  (map (lambda (row) (list-head row 3)) stats18))
+  (map (lambda (row) (list-head row (if (eq? (car row) 'collect) 2 3))) stats18))
 (test-assert "engine-stats: times are real milliseconds ≥ 0"
   (every (lambda (row) (and (real? (cadddr row)) (>= (cadddr row) 0))) stats18))
+
+;; What the boundary allocates: 2000 falling boxes whose y and vy (pairs 2 and
+;; 5 of the plist) change each frame get six new pairs of key and value each,
+;; and the list a new spine: (6 × 2 + 1) cells of 16 bytes per entity.
+;; Boehm counts a thread's allocation when it refills its free list, so the
+;; figure is exact to a few KB.
+(define fallers
+  (map (lambda (i) (list #:id i #:x (* 10 i) #:y 0 #:width 8 #:height 8 #:vy 0 #:gravity? #t)) (iota 2000)))
+(define falling (make-game scene: (make-scene entities: fallers)))
+(game-run! falling frames: 2)           ; the second frame reads the first's plists from the cache
+(define falling-stats (engine-stats falling))
+(test-equal "engine-stats: encode counts the entities handed back as new plists"
+  '(encode 2000 0) (list-head (assq 'encode falling-stats) 3))
+(test-assert "engine-stats: collect counts the bytes the frame allocated (2000 × 13 cells of 16 bytes, ± 16 KB)"
+  (let ((bytes (caddr (assq 'collect falling-stats))))
+    (<= (abs (- bytes (* 2000 13 16))) 16384)))
+;; A custom easing runs inside the frame's tween stage: one that collects
+;; puts a collection inside the frame, which the collect row reports and the
+;; tween stage's own time leaves out.
+(define (collecting-ease t) (gc) t)
+(define eased
+  (let ((e '(#:x 0 #:width 8 #:height 8)))
+    (make-game scene: (make-scene entities: (list (entity-set e #:tween (make-tween e props: '((#:x . 100)) duration: 100
+                                                                                    ease: collecting-ease)))))))
+(game-run! eased frames: 1)
+(define eased-stats (engine-stats eased))
+(test-equal "engine-stats: a collection inside the frame is counted" 1 (cadr (assq 'collect eased-stats)))
+(test-assert "engine-stats: … timed apart from the tween stage it ran in"
+  (let ((collect-ms (cadddr (assq 'collect eased-stats)))
+        (tween-ms (cadddr (assq 'tweens eased-stats))))
+    (and (> collect-ms 0) (< tween-ms collect-ms))))
 
 ;;; ---------------------------------------------------------------- settled entities
 ;; An entity that came out of a frame unchanged, depending on nobody, is left

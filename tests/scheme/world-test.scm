@@ -356,7 +356,9 @@
 (test-equal "… and no step processed anything"
   '((decode 0 4) (tweens 0 4) (acceleration 0 4) (gravity 0 4) (velocity-x 0 4)
     (tile-collisions-x 0 4) (velocity-y 0 4) (tile-collisions-y 0 4) (on-solid 0 4)
-    (entity-collisions 0 4) (groups 0 4) (encode 0 4) (render 0 0))
+    (entity-collisions 0 4) (groups 0 4) (encode 0 4)
+    (collect 0 0)                       ; not a pair allocated, no collection
+    (render 0 0))
   (map (lambda (row) (list-head row 3)) (noop-stats)))
 (resolve-entity-collisions (list '(#:x 0 #:y 0 #:width 8 #:height 8 #:solid? #t)))
 (step-scene settled 16)

@@ -1,0 +1,28 @@
+// What the collector has cost this process: collections counted and timed
+// through Boehm's collection events (Guile's own gc-time-taken is only
+// reachable by consing a (gc-stats) alist), and the bytes allocated. Read
+// before and after a frame, the difference is that frame's share.
+#pragma once
+#include <cstdint>
+
+namespace ds::guile {
+
+struct GcReading {
+    uint64_t collections = 0;
+    uint64_t ns = 0;     // wall time inside collections (start to end event)
+    uint64_t bytes = 0;  // allocated since start, as Boehm counts it: a thread's
+                         // free list is counted when it is refilled, so a
+                         // reading is exact to a few KB, not to the byte
+};
+
+// Installs the event handler (once; the handler it replaces, if any, is
+// still called). Must run after Guile has started the collector.
+void start_gc_clock();
+
+GcReading gc_reading();
+
+inline GcReading operator-(const GcReading& a, const GcReading& b) {
+    return {a.collections - b.collections, a.ns - b.ns, a.bytes - b.bytes};
+}
+
+}  // namespace ds::guile
