@@ -39,6 +39,10 @@ std::string encode(const Repeated& rep) {
     for (double ms : r.frame_ms) o << ' ' << ms;
     o << "\nbytes_per_frame " << r.bytes_per_frame << "\ngc_ms " << r.gc_ms << "\nsetup_ms " << r.setup_ms
       << "\nspent_ms " << r.spent_ms << "\n";
+    const FrameSplit& s = r.split;
+    if (s.frames > 0)
+        o << "split " << s.frames << ' ' << s.decode_ms << ' ' << s.steps_ms << ' ' << s.encode_ms << ' '
+          << s.collect_ms << ' ' << s.collections << ' ' << s.bytes << ' ' << s.rewritten << "\n";
     if (!std::isnan(r.checksum)) o << "checksum " << r.checksum << ' ' << r.checksum_frames << "\n";
     if (!r.skipped.empty()) o << "skipped " << one_line(r.skipped) << "\n";
     if (!r.error.empty()) o << "error " << one_line(r.error) << "\n";
@@ -63,7 +67,11 @@ Repeated decode(const std::string& text) {
         else if (key == "gc_ms") v >> r.gc_ms;
         else if (key == "setup_ms") v >> r.setup_ms;
         else if (key == "spent_ms") v >> r.spent_ms;
-        else if (key == "checksum") v >> r.checksum >> r.checksum_frames;
+        else if (key == "split") {
+            FrameSplit& s = r.split;
+            v >> s.frames >> s.decode_ms >> s.steps_ms >> s.encode_ms >> s.collect_ms >> s.collections >> s.bytes >>
+                s.rewritten;
+        } else if (key == "checksum") v >> r.checksum >> r.checksum_frames;
         else if (key == "skipped") r.skipped = rest;
         else if (key == "error") r.error = rest;
     }

@@ -69,7 +69,8 @@ SCM run_job(void* data) {
     SCM args = scm_list_n(step, scene, scm_from_double(1000.0 / 60.0), scm_from_int(job.cfg.warmup),
                           scm_from_int(job.cfg.frames), scm_from_bool(s.bounce),
                           scm_from_int64(static_cast<int64_t>(job.cfg.max_frame_ms * 1e6)),
-                          scm_from_int64(static_cast<int64_t>(budget_ns)), SCM_UNDEFINED);
+                          scm_from_int64(static_cast<int64_t>(budget_ns)), scm_from_bool(!job.reference),
+                          SCM_UNDEFINED);
     SCM result = scm_apply_0(scm_c_public_ref("bench driver", "run-frames"), args);
     SCM times = scm_car(result);
     const double bytes = scm_to_double(scm_cadr(result));
@@ -79,6 +80,11 @@ SCM run_job(void* data) {
     if (scm_is_true(too_slow_ns)) job.out->skipped = too_slow(scm_to_double(too_slow_ns) / 1e6, job.cfg.max_frame_ms);
     job.out->spent_ms = scm_to_double(scm_list_ref(result, scm_from_int(5))) / 1e6;
     job.out->gc_ms = scm_to_double(scm_list_ref(result, scm_from_int(6))) / 1e6;
+    SCM split = scm_list_ref(result, scm_from_int(7));
+    if (scm_is_vector(split)) {
+        auto at = [&](size_t i) { return scm_to_double(scm_c_vector_ref(split, i)); };
+        job.out->split = {static_cast<int>(frames), at(0), at(1), at(2), at(3), at(4), at(5), at(6)};
+    }
     for (size_t i = 0; i < frames; ++i)
         job.out->frame_ms.push_back(scm_to_double(scm_c_vector_ref(times, i)) / 1e6);
     job.out->checksum = 0;

@@ -17,6 +17,20 @@ struct RunConfig {
     double budget_ms = 1e300;    // stop timing once the frames add up to this (≥ 3 timed)
 };
 
+// Where the guile path's timed frames went, summed over them, from the rows
+// of engine-stats (%frame-stats): the boundary, the steps and the collector
+// apart. Per frame: divide by `frames`.
+struct FrameSplit {
+    int frames = 0;  // 0: not measured on this path
+    double decode_ms = 0, steps_ms = 0, encode_ms = 0, collect_ms = 0;
+    double collections = 0, bytes = 0, rewritten = 0;
+    void add(const FrameSplit& o) {
+        frames += o.frames;
+        decode_ms += o.decode_ms, steps_ms += o.steps_ms, encode_ms += o.encode_ms, collect_ms += o.collect_ms;
+        collections += o.collections, bytes += o.bytes, rewritten += o.rewritten;
+    }
+};
+
 struct PathResult {
     std::vector<double> frame_ms;  // one per timed frame
     double bytes_per_frame = -1;   // < 0: not measured on this path
@@ -29,6 +43,7 @@ struct PathResult {
     std::string error;             // non-empty: the run failed
     std::string skipped;           // non-empty: stopped, a frame was too slow
     double spent_ms = 0;           // all frames stepped, warm-up included
+    FrameSplit split;              // the guile path's timed frames
 };
 
 // ds::World + ds::Frame::step, one call per frame.

@@ -1,5 +1,6 @@
 #include "speed/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -52,6 +53,30 @@ std::string org_cell(std::string s) {
     return s;
 }
 
+// A split's figures per timed frame, in table order: decode, steps, encode,
+// collect and the rest of the frame (ms), collections, bytes and entities
+// rewritten per frame, and bytes per entity rewritten.
+struct SplitFigures {
+    double decode, steps, encode, collect, other, collections, bytes, rewritten, per_rewritten;
+};
+
+SplitFigures split_figures(const Row& r) {
+    const FrameSplit& s = r.split;
+    const double n = s.frames;
+    SplitFigures f{s.decode_ms / n, s.steps_ms / n, s.encode_ms / n, s.collect_ms / n, 0,
+                   s.collections / n, s.bytes / n, s.rewritten / n, s.rewritten > 0 ? s.bytes / s.rewritten : 0};
+    f.other = std::max(0.0, r.stats.mean_ms - f.decode - f.steps - f.encode - f.collect);
+    return f;
+}
+
+const char* kSplitIntro =
+    "Where the guile path's frames went: the mean per timed frame of each row of\n"
+    "=engine-stats= (decode, the steps with the tween stage, encode, collect),\n"
+    "and what is left of the mean frame (other: sleep planning, contacts, the\n"
+    "call itself); GCs are collections per frame; rewritten counts the entities\n"
+    "a frame handed back as new plists, and B/rewritten is the bytes allocated\n"
+    "per such entity (Boehm's count, exact to a few KB per frame).\n\n";
+
 const char* kBegin = "# BEGIN downstroke-bench results";
 const char* kEnd = "# END downstroke-bench results";
 
@@ -89,6 +114,19 @@ std::string org_results(const RunInfo& info, const std::vector<Row>& rows) {
         o << r.frames << " | " << sig3(r.stats.median_ms) << " | " << sig3(r.stats.p95_ms) << " | "
           << sig3(r.ns_per_entity) << " | " << (r.bytes_per_frame < 0 ? "-" : count(r.bytes_per_frame)) << " | "
           << percent(r.gc_share) << " | " << ratio(r.ratio_to_guile) << " |\n";
+    }
+    bool any_split = false;
+    for (const Row& r : rows) any_split |= r.status == "ok" && r.split.frames > 0;
+    if (any_split) {
+        o << "\n" << kSplitIntro;
+        o << "| scene | N | decode ms | steps ms | encode ms | collect ms | other ms | GCs | bytes | rewritten | B/rewritten |\n|-\n";
+        for (const Row& r : rows) {
+            if (r.status != "ok" || r.split.frames == 0) continue;
+            const SplitFigures f = split_figures(r);
+            o << "| " << r.scene << " | " << r.n << " | " << sig3(f.decode) << " | " << sig3(f.steps) << " | "
+              << sig3(f.encode) << " | " << sig3(f.collect) << " | " << sig3(f.other) << " | " << sig3(f.collections)
+              << " | " << count(f.bytes) << " | " << count(f.rewritten) << " | " << count(f.per_rewritten) << " |\n";
+        }
     }
     o << "\n" << kEnd << "\n";
     return o.str();
@@ -229,6 +267,25 @@ void print_row(std::FILE* out, const Row& r) {
     std::fflush(out);
 }
 
+void print_splits(std::FILE* out, const std::vector<Row>& rows) {
+    bool header = false;
+    for (const Row& r : rows) {
+        if (r.status != "ok" || r.split.frames == 0) continue;
+        if (!header) {
+            std::fprintf(out, "\nwhere a guile frame went (mean per timed frame)\n%-10s %7s %9s %9s %9s %10s %9s %6s %11s %10s %12s\n",
+                         "scene", "N", "decode ms", "steps ms", "encode ms", "collect ms", "other ms", "GCs",
+                         "bytes", "rewritten", "B/rewritten");
+            header = true;
+        }
+        const SplitFigures f = split_figures(r);
+        std::fprintf(out, "%-10s %7d %9s %9s %9s %10s %9s %6s %11s %10s %12s\n", r.scene.c_str(), r.n,
+                     sig3(f.decode).c_str(), sig3(f.steps).c_str(), sig3(f.encode).c_str(), sig3(f.collect).c_str(),
+                     sig3(f.other).c_str(), sig3(f.collections).c_str(), count(f.bytes).c_str(),
+                     count(f.rewritten).c_str(), count(f.per_rewritten).c_str());
+    }
+    std::fflush(out);
+}
+
 void write_json(const std::string& file, const RunInfo& info, const std::vector<Row>& rows) {
     std::ofstream o(file);
     if (!o) throw std::runtime_error("cannot write " + file);
@@ -263,6 +320,15 @@ void write_json(const std::string& file, const RunInfo& info, const std::vector<
               << ", \"setup_ms\": " << json_number(r.setup_ms)
               << ", \"checksum\": " << json_number(r.checksum, 17)
               << ", \"checksum_after_frames\": " << r.checksum_frames;
+            if (r.split.frames > 0) {
+                const SplitFigures f = split_figures(r);
+                o << ", \"split\": {\"decode_ms\": " << json_number(f.decode) << ", \"steps_ms\": "
+                  << json_number(f.steps) << ", \"encode_ms\": " << json_number(f.encode)
+                  << ", \"collect_ms\": " << json_number(f.collect) << ", \"other_ms\": " << json_number(f.other)
+                  << ", \"collections\": " << json_number(f.collections) << ", \"bytes\": " << json_number(f.bytes)
+                  << ", \"rewritten\": " << json_number(f.rewritten)
+                  << ", \"bytes_per_rewritten\": " << json_number(f.per_rewritten) << "}";
+            }
         }
         o << "}";
     }

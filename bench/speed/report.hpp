@@ -6,6 +6,7 @@
 
 #include "common/run_info.hpp"
 #include "common/timing.hpp"
+#include "speed/paths.hpp"
 
 namespace bench {
 
@@ -25,10 +26,13 @@ struct Row {
     double setup_ms = 0;
     double checksum = 0;  // NaN: not computed
     int checksum_frames = 0;
+    FrameSplit split;  // the guile path's: where its frames went
 };
 
 void print_header(std::FILE* out);
 void print_row(std::FILE* out, const Row& row);
+// The second table: where each guile row's frames went (rows with a split).
+void print_splits(std::FILE* out, const std::vector<Row>& rows);
 
 void write_json(const std::string& file, const RunInfo& info, const std::vector<Row>& rows);
 // Writes the results between the "# BEGIN/END downstroke-bench results"

@@ -40,6 +40,7 @@ Repeated run_repeated(const std::string& path, const Scene& scene, RunConfig cfg
         r.frame_ms.insert(r.frame_ms.end(), one.frame_ms.begin(), one.frame_ms.end());
         if (r.bytes_per_frame >= 0) r.bytes_per_frame += one.bytes_per_frame;
         if (r.gc_ms >= 0) r.gc_ms += one.gc_ms;
+        r.split.add(one.split);
         r.checksum = one.checksum;
         r.checksum_frames = one.checksum_frames;
     }

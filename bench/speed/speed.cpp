@@ -121,6 +121,7 @@ struct Runner {
         row.setup_ms = r.setup_ms;
         row.checksum = r.checksum;
         row.checksum_frames = r.checksum_frames;
+        row.split = r.split;
         // The mean, not the median: it carries the garbage collections.
         est.record(series(scene.name, path), scene.n, row.stats.mean_ms);
         return row;
@@ -175,6 +176,7 @@ int speed(const Options& opts) {
                 rows.push_back(row);
             }
         }
+    print_splits(stdout, rows);
     info.total_s = static_cast<double>(now_ns() - t_start) / 1e9;
     std::printf("whole run: %.1f s\n", info.total_s);
     if (!opts.json.empty()) write_json(opts.json, info, rows);

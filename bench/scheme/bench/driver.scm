@@ -6,11 +6,14 @@
 ;;; 'heap-total-allocated counter; the bounce update of the platformer and
 ;;; bullets scenes runs after the bracket, untimed and uncounted.
 ;;; (gc-stats) itself allocates a little: bracket-overhead measures how much
-;;; an empty bracket counts, and the C++ side subtracts it.
+;;; an empty bracket counts, and the C++ side subtracts it. With SPLIT?, each
+;;; timed frame's (%frame-stats) is read after the bracket and summed: where
+;;; the frame went (decode, the steps, encode, collection).
 (define-module (bench driver)
   #:use-module (srfi srfi-1)
   #:use-module (downstroke world)
   #:use-module (downstroke tilemap)
+  #:use-module ((downstroke native) #:select (%frame-stats))
   #:export (make-bench-scene bench-scene-entities grid-tilemap run-frames))
 
 (define (make-bench-scene entities tilemap)
@@ -71,22 +74,44 @@
           (loop (+ i 1) (+ bytes (- a1 a0) (* 0 (- t1 t0)))))
         (/ bytes 1000.))))
 
-(define (run-frames step scene dt warmup frames bounce? max-frame-ns budget-ns)
+;; The frame's split as a vector: #(decode-ms steps-ms encode-ms collect-ms
+;; collections bytes rewritten), from the rows of (%frame-stats).
+(define (frame-split)
+  (let ((rows (%frame-stats)))
+    (define (row name) (assq name rows))
+    (define (ms r) (list-ref r 3))
+    (vector (ms (row 'decode))
+            (fold (lambda (r sum)
+                    (if (memq (car r) '(decode encode collect)) sum (+ sum (ms r))))
+                  0 rows)
+            (ms (row 'encode))
+            (ms (row 'collect))
+            (cadr (row 'collect))
+            (caddr (row 'collect))
+            (cadr (row 'encode)))))
+
+(define (vector-add! sums v)
+  (do ((i 0 (+ i 1))) ((= i (vector-length v)))
+    (vector-set! sums i (+ (vector-ref sums i) (vector-ref v i)))))
+
+(define* (run-frames step scene dt warmup frames bounce? max-frame-ns budget-ns #:optional split?)
   "Step SCENE WARMUP frames, then up to FRAMES timed frames. Stops at once
 after a frame slower than MAX-FRAME-NS, and once all frames so far add up to
 BUDGET-NS with at least 3 timed. Returns (times bytes overhead scene
-too-slow-ns spent-ns gc-ns): TIMES a vector of each timed frame's
+too-slow-ns spent-ns gc-ns split): TIMES a vector of each timed frame's
 nanoseconds, BYTES the bytes allocated inside the timed brackets, OVERHEAD
 what one bracket counts by itself, TOO-SLOW-NS the offending frame's time or
-#f, GC-NS the collection time inside the timed frames."
+#f, GC-NS the collection time inside the timed frames, SPLIT (with SPLIT?,
+else #f) the timed frames' (frame-split) summed."
   (define (after s) (if bounce? (bounce-scene s) s))
   (let ((times (make-vector frames 0))
-        (overhead (bracket-overhead)))
+        (overhead (bracket-overhead))
+        (split (and split? (make-vector 7 0))))
     (gc)
     (let loop ((i 0) (scene scene) (bytes 0) (spent 0) (gc-ns 0))
       (let ((timed (max 0 (- i warmup))))
         (if (>= i (+ warmup frames))
-            (list times bytes overhead scene #f spent gc-ns)
+            (list times bytes overhead scene #f spent gc-ns split)
             (let* ((g0 (gc-time))
                    (a0 (allocated))
                    (t0 (get-internal-real-time))
@@ -100,11 +125,13 @@ what one bracket counts by itself, TOO-SLOW-NS the offending frame's time or
                    (bytes (if timed? (+ bytes (- a1 a0)) bytes))
                    (gc-ns (if timed? (+ gc-ns (- g1 g0)) gc-ns))
                    (spent (+ spent ns)))
-              (when timed? (vector-set! times (- i warmup) ns))
+              (when timed?
+                (vector-set! times (- i warmup) ns)
+                (when split (vector-add! split (frame-split))))
               (cond ((> ns max-frame-ns)
-                     (list (vector-head times timed) bytes overhead next ns spent gc-ns))
+                     (list (vector-head times timed) bytes overhead next ns spent gc-ns split))
                     ((and (> spent budget-ns) (>= timed 3))
-                     (list (vector-head times timed) bytes overhead next #f spent gc-ns))
+                     (list (vector-head times timed) bytes overhead next #f spent gc-ns split))
                     (else (loop (+ i 1) (after next) bytes spent gc-ns)))))))))
 
 (define (vector-head v k)
