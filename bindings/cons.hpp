@@ -3,9 +3,12 @@
 // a frame of a falling crowd conses a few hundred thousand pairs.
 #pragma once
 #include <libguile.h>
-// gc-inline.h is C: its volatile compound assignments warn in C++20.
+// gc-inline.h is C: its volatile compound assignments warn in GCC's C++20
+// (clang has no such warning group, and would warn about the pragma).
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wvolatile"
+#endif
 #include <libguile/gc-inline.h>
 
 namespace ds::guile {
