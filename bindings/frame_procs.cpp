@@ -52,10 +52,10 @@ thread_local LastFrame last_frame;
 // Wall time of one phase of a frame, less the collections that ran inside it.
 struct PhaseTimer {
     Clock::time_point t0 = Clock::now();
-    uint64_t gc0 = gc_reading().ns;
+    uint64_t gc0 = gc_ns();
     double lap() {
         const Clock::time_point t1 = Clock::now();
-        const uint64_t gc1 = gc_reading().ns;
+        const uint64_t gc1 = gc_ns();
         const double ms = ms_between(t0, t1) - static_cast<double>(gc1 - gc0) / 1e6;
         t0 = t1;
         gc0 = gc1;

@@ -5,6 +5,8 @@
 #include <atomic>
 #include <chrono>
 
+#include "detail/stopwatch.hpp"
+
 namespace ds::guile {
 
 namespace {
@@ -17,9 +19,7 @@ std::atomic<int64_t> started_at{0};
 GC_on_collection_event_proc previous = nullptr;
 
 int64_t now_ns() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::steady_clock::now().time_since_epoch())
-        .count();
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
 }
 
 void GC_CALLBACK on_collection_event(GC_EventType event) {
@@ -45,8 +45,9 @@ void start_gc_clock() {
 }
 
 GcReading gc_reading() {
-    return {collections.load(std::memory_order_relaxed), collecting_ns.load(std::memory_order_relaxed),
-            static_cast<uint64_t>(GC_get_total_bytes())};
+    return {collections.load(std::memory_order_relaxed), gc_ns(), static_cast<uint64_t>(GC_get_total_bytes())};
 }
+
+uint64_t gc_ns() { return collecting_ns.load(std::memory_order_relaxed); }
 
 }  // namespace ds::guile

@@ -20,6 +20,9 @@ struct GcReading {
 void start_gc_clock();
 
 GcReading gc_reading();
+// gc_reading().ns alone: one atomic load, without the allocation
+// lock GC_get_total_bytes takes, for timers read several times a frame.
+uint64_t gc_ns();
 
 inline GcReading operator-(const GcReading& a, const GcReading& b) {
     return {a.collections - b.collections, a.ns - b.ns, a.bytes - b.bytes};
