@@ -60,6 +60,8 @@ struct SplitFigures {
     double decode, steps, encode, collect, other, collections, bytes, rewritten, per_rewritten;
 };
 
+bool has_split(const Row& r) { return r.status == "ok" && r.split.frames > 0; }
+
 SplitFigures split_figures(const Row& r) {
     const FrameSplit& s = r.split;
     const double n = s.frames;
@@ -115,13 +117,11 @@ std::string org_results(const RunInfo& info, const std::vector<Row>& rows) {
           << sig3(r.ns_per_entity) << " | " << (r.bytes_per_frame < 0 ? "-" : count(r.bytes_per_frame)) << " | "
           << percent(r.gc_share) << " | " << ratio(r.ratio_to_guile) << " |\n";
     }
-    bool any_split = false;
-    for (const Row& r : rows) any_split |= r.status == "ok" && r.split.frames > 0;
-    if (any_split) {
+    if (std::any_of(rows.begin(), rows.end(), has_split)) {
         o << "\n" << kSplitIntro;
         o << "| scene | N | decode ms | steps ms | encode ms | collect ms | other ms | GCs | bytes | rewritten | B/rewritten |\n|-\n";
         for (const Row& r : rows) {
-            if (r.status != "ok" || r.split.frames == 0) continue;
+            if (!has_split(r)) continue;
             const SplitFigures f = split_figures(r);
             o << "| " << r.scene << " | " << r.n << " | " << sig3(f.decode) << " | " << sig3(f.steps) << " | "
               << sig3(f.encode) << " | " << sig3(f.collect) << " | " << sig3(f.other) << " | " << sig3(f.collections)
@@ -270,7 +270,7 @@ void print_row(std::FILE* out, const Row& r) {
 void print_splits(std::FILE* out, const std::vector<Row>& rows) {
     bool header = false;
     for (const Row& r : rows) {
-        if (r.status != "ok" || r.split.frames == 0) continue;
+        if (!has_split(r)) continue;
         if (!header) {
             std::fprintf(out, "\nwhere a guile frame went (mean per timed frame)\n%-10s %7s %9s %9s %9s %10s %9s %6s %11s %10s %12s\n",
                          "scene", "N", "decode ms", "steps ms", "encode ms", "collect ms", "other ms", "GCs",
@@ -320,7 +320,7 @@ void write_json(const std::string& file, const RunInfo& info, const std::vector<
               << ", \"setup_ms\": " << json_number(r.setup_ms)
               << ", \"checksum\": " << json_number(r.checksum, 17)
               << ", \"checksum_after_frames\": " << r.checksum_frames;
-            if (r.split.frames > 0) {
+            if (has_split(r)) {
                 const SplitFigures f = split_figures(r);
                 o << ", \"split\": {\"decode_ms\": " << json_number(f.decode) << ", \"steps_ms\": "
                   << json_number(f.steps) << ", \"encode_ms\": " << json_number(f.encode)
