@@ -798,6 +798,23 @@
   (when (eq? step-scene (@ (downstroke physics) step-scene))
     (test-assert "the still entity and the spine after the mover are shared"
       (every (lambda (s) (eq? (cdr (scene-entities s)) (cdr (scene-entities s0)))) ss))))
+;; A long list whose movers sit at the edges of the runs of pairs the native
+;; path allocates its spine in (32 at a time): the entities come back in
+;; order, each still one as itself, and the list after the last mover as it was.
+(let* ((movers '(0 31 32 63 64 99))
+       (es (map (lambda (i)
+                  (list #:x (* 10 i) #:vx (if (memv i movers) 1 0) #:width 8 #:height 8 #:i i))
+                (iota 130)))
+       (next (scene-entities (step-scene (make-scene #:entities es) 16))))
+  (test-equal "130 entities come back in order, the movers moved"
+    (map (lambda (i) (+ (* 10 i) (if (memv i movers) 1 0))) (iota 130))
+    (map (lambda (e) (entity-ref e #:x)) next))
+  (test-equal "… the others as themselves"
+    (filter (lambda (i) (not (memv i movers))) (iota 130))
+    (filter-map (lambda (a b i) (and (eq? a b) i)) next es (iota 130)))
+  (when (eq? step-scene (@ (downstroke physics) step-scene))
+    (test-assert "… and the list after the last mover shared"
+      (eq? (list-tail next 100) (list-tail es 100)))))
 (let* ((dup '(#:x 0 #:vx 2 #:width 8 #:height 8 #:x 99 #:tag t))
        (ss (frames (make-scene #:entities (list dup)) 3)))
   (test-equal "only a key's first occurrence is written; the second stays in the shared tail"
