@@ -191,7 +191,8 @@ void prefetch_plist(SCM plist) {
 // taken one after another from the free list: the next frame walks it twice
 // (decode_batch, then encode_batch's `p` and `ahead`), and a run sits in a
 // few cache lines, where a pair consed after each rewritten plist takes a
-// line of its own (at 10k entities that halved decoding: docs/benchmarks.org).
+// line of its own (at 10k entities, rain's decoding took a quarter less:
+// docs/benchmarks.org).
 // Short runs, so that each is still in cache while it is filled. Lives on
 // the stack, where the collector sees its pairs.
 class Spine {
