@@ -1,14 +1,17 @@
 ;;; (downstroke host) — what the `downstroke' executable runs.
 (define-module (downstroke host)
   #:declarative? #f
-  #:use-module (system repl repl)
   #:use-module (downstroke engine)
-  #:use-module (downstroke repl-server)
   #:use-module (downstroke render)
   #:use-module (ice-9 format)
   #:use-module ((srfi srfi-1) #:select (any))
-  #:use-module ((system vm frame) #:select (frame-call-representation))
   #:export (main))
+
+;;; Guile's REPL and (downstroke repl-server) (with the debugger both bring)
+;;; are loaded only when a REPL is asked for: loaded with every game, they
+;;; would be live data that each of its collections marks (docs/engine.org).
+(define (repl-server-ref name)
+  (module-ref (resolve-interface '(downstroke repl-server)) name))
 
 ;;; ---------------------------------------------------------------- script errors
 ;;; An uncaught error reads as the user's: the message first, then the
@@ -26,6 +29,12 @@
 (define (user-file? file dir)
   (string-prefix? dir file))
 
+;; (system vm frame) is loaded for an error's report only: with the VM's
+;; debugging modules it brings, it is 0.8 MB of live data that every
+;; collection would mark (docs/engine.org).
+(define (frame-call frame)
+  ((module-ref (resolve-interface '(system vm frame)) 'frame-call-representation) frame))
+
 (define (stack-user-frames stack dir)
   ;; (file line call) of STACK's frames in files under DIR, innermost first.
   (let loop ((i 0) (acc '()))
@@ -35,7 +44,7 @@
                (where (frame-file-line frame)))
           (loop (+ i 1)
                 (if (and where (user-file? (car where) dir))
-                    (cons (list (car where) (cdr where) (frame-call-representation frame)) acc)
+                    (cons (list (car where) (cdr where) (frame-call frame)) acc)
                     acc))))))
 
 (define (report-error key args script)
@@ -142,7 +151,7 @@
   (module-use! (current-module) (resolve-interface '(downstroke)))
   (false-if-exception
    (begin ((module-ref (resolve-interface '(ice-9 readline)) 'activate-readline)) #t))
-  (start-repl)
+  ((module-ref (resolve-interface '(system repl repl)) 'start-repl))
   0)
 
 ;;; ---------------------------------------------------------------- live REPL
@@ -150,14 +159,16 @@
 ;;; frame: expressions run on the game's own thread, between two frames.
 
 (define (serve-repl! socket timeout)
-  (let ((server (make-repl-server socket #:timeout timeout)))
-    (add-frame-hook! (lambda () (repl-server-poll! server)))
+  (let ((server ((repl-server-ref 'make-repl-server) socket #:timeout timeout))
+        (poll! (repl-server-ref 'repl-server-poll!))
+        (broadcast! (repl-server-ref 'repl-server-broadcast!)))
+    (add-frame-hook! (lambda () (poll! server)))
     ;; A hook's error pauses the game instead of ending the session.
     (hook-error-reporter
      (lambda (text)
        (display text (current-error-port))
        (force-output (current-error-port))
-       (repl-server-broadcast! server text)))
+       (broadcast! server text)))
     (frame-pacing #t)
     (remove-socket-on-signals! socket)))
 
@@ -170,7 +181,7 @@
   (for-each (lambda (sig)
               (sigaction sig
                 (lambda (sig)
-                  (remove-unix-repl-socket! socket)
+                  ((repl-server-ref 'remove-unix-repl-socket!) socket)
                   (sigaction sig SIG_DFL)
                   (kill (getpid) sig))))
             ending-signals))
@@ -182,8 +193,8 @@
         (port (assq-ref opts 'repl-port)))
     (catch #t
       (lambda ()
-        (cond (path (open-unix-repl-socket path))
-              (port (open-tcp-repl-socket (string->number port)))
+        (cond (path ((repl-server-ref 'open-unix-repl-socket) path))
+              (port ((repl-server-ref 'open-tcp-repl-socket) (string->number port)))
               (else #f)))
       (lambda (key . args)
         (if (eq? key 'system-error)
@@ -196,9 +207,9 @@
 
 (define (repl-timeout opts)
   (let ((v (assq-ref opts 'repl-timeout)))
-    (if v (string->number v) default-repl-timeout)))
+    (if v (string->number v) (repl-server-ref 'default-repl-timeout))))
 
-(define usage-text
+(define (usage-text)
   (string-append "usage: downstroke [OPTION...] [FILE.scm ARGS...]
 Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
 
@@ -211,7 +222,7 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --repl-server PATH  serve a REPL into the game on a Unix socket (mode 0600)
   --repl-port N       serve it on 127.0.0.1:N instead
   --repl-timeout S    interrupt a REPL evaluation that holds the game longer
-                      than S seconds (default " (number->string default-repl-timeout) ")
+                      than S seconds (default " (number->string (repl-server-ref 'default-repl-timeout)) ")
   --no-auto-compile   run FILE.scm interpreted, compiling nothing into the
                       cache (by default an edited file is compiled, quietly)
   --version           the version of downstroke
@@ -222,7 +233,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
 "))
 
 (define (usage)
-  (display usage-text (current-error-port))
+  (display (usage-text) (current-error-port))
   2)
 
 ;; Options before the script, as (name . value); #f when one is malformed.
@@ -287,7 +298,7 @@ VERSION: the project's, for --version. Returns the exit status."
   (read-set! keywords 'postfix)
   (let ((parsed (parse-options args)))
     (cond ((not parsed) (usage))
-          ((assq-ref (car parsed) 'help) (display usage-text) 0)
+          ((assq-ref (car parsed) 'help) (display (usage-text)) 0)
           ((assq-ref (car parsed) 'version) (format #t "downstroke ~a~%" version) 0)
           ((not (prepare-display! (car parsed))) 2)
           (else
@@ -302,5 +313,5 @@ VERSION: the project's, for --version. Returns the exit status."
                              (when socket (serve-repl! socket (repl-timeout opts)))
                              (let ((status (run-script (car rest) (cdr rest)
                                                        (not (assq-ref opts 'no-auto-compile)))))
-                               (when socket (remove-unix-repl-socket! socket))
+                               (when socket ((repl-server-ref 'remove-unix-repl-socket!) socket))
                                status)))))))))))

@@ -92,4 +92,20 @@
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
 
+;;; ---------------------------------------------------------------- what a game carries
+;;; Every module loaded is live data each collection marks: the REPL and the
+;;; VM's debugging modules are loaded only when a REPL or an error report
+;;; needs them (docs/engine.org, "Memory against time").
+(define loaded-modules
+  (write-script "loaded.scm"
+                (string-append
+                 "(write (map (lambda (name)\n"
+                 "              (let ((m (resolve-module name #f #f #:ensure #f)))\n"
+                 "                (and m (module-public-interface m) #t)))\n"
+                 "            '((downstroke engine) (system repl repl) (system repl debug)\n"
+                 "              (system vm frame) (system vm debug) (downstroke repl-server))))\n")))
+(test-equal "a game runs with the engine and without the REPL's or debugger's modules"
+  '(0 "(#t #f #f #f #f #f)" "")
+  (run "--no-auto-compile" loaded-modules))
+
 (test-end "host")
