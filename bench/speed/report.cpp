@@ -101,7 +101,8 @@ std::string org_results(const RunInfo& info, const std::vector<Row>& rows) {
     o << "Milliseconds per frame after the warm-up (median and 95th percentile of the\n"
          "timed frames); ns/entity is the median over N; bytes/frame is what the\n"
          "Guile heap grew by per step-scene call; GC is the share of the timed\n"
-         "frames' time Guile spent collecting; × guile is the path's median over\n"
+         "frames' time Guile spent collecting (wall clock, from the collector's\n"
+         "start and end events); × guile is the path's median over\n"
          "the guile path's median in the same run (below 1: faster than guile).\n\n";
     o << "| scene | N | path | frames | median ms | p95 ms | ns/entity | bytes/frame | GC | × guile |\n";
     std::string last_scene;

@@ -348,6 +348,15 @@
   (test-equal "set-gc-space-divisor! sets it" 3 (gc-space-divisor))
   (set-gc-space-divisor! before)
   (test-equal "… and back" before (gc-space-divisor)))
+(let* ((clock (@ (downstroke native) %gc-clock))
+       (a (clock))
+       (t0 (get-internal-real-time))
+       (_ (gc))
+       (t1 (get-internal-real-time))
+       (b (clock)))
+  (test-equal "%gc-clock counts the collection (gc) makes" 1 (- (car b) (car a)))
+  (test-assert "… and its wall-clock time: some, and no more than the call took"
+    (< 0 (- (cdr b) (cdr a)) (+ 1 (- t1 t0)))))
 (define before-refusals (gc-space-divisor))
 (test-assert "set-gc-space-divisor!: 0 is out of range, named"
   (mentions? (error-text (lambda () (set-gc-space-divisor! 0))) "set-gc-space-divisor!" "1 to 1000" "0"))
