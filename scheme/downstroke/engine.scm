@@ -472,14 +472,11 @@ game-capture, a capture run or a window)."
 (define (game-levers game)
   (list (game-engine-update game) (game-update game) (game-render game) (game-scene game)))
 
-;; (system repl debug), for a failing hook's frames, is loaded at the first
-;; failure: loaded with the engine, it and the VM's debugging modules it
-;; brings were 0.8 MB of live data that every collection of every game
-;; marked, about 1.5 ms a collection (docs/engine.org).
-(define (repl-debug-ref name)
-  (module-ref (resolve-interface '(system repl debug)) name))
-
 (define (call-reporting what thunk on-error)
+  ;; (system repl debug) is named with @, so it loads at the first failure:
+  ;; loaded with the engine, it and the VM's debugging modules it brings were
+  ;; 0.8 MB of live data that every collection of every game marked, about
+  ;; 1.5 ms a collection (docs/engine.org).
   ;; THUNK's value; or, if it raises an error, (on-error) once (WHAT) — a
   ;; line saying what failed —, the backtrace and the error are reported.
   ;; (exit) is no error.
@@ -492,7 +489,7 @@ game-capture, a capture run or a window)."
          (call-with-output-string
           (lambda (port)
             (format port "downstroke: ~a:~%" (what))
-            (when frames ((repl-debug-ref 'print-frames) frames port))
+            (when frames ((@ (system repl debug) print-frames) frames port))
             (print-exception port #f key args))))
         (on-error))
       (lambda (key . args)
@@ -500,7 +497,7 @@ game-capture, a capture run or a window)."
         ;; game loop's around it are always the same.
         (unless (eq? key 'quit)
           (let ((tag (cdr (fluid-ref %stacks))))
-            (set! frames ((repl-debug-ref 'narrow-stack->vector) (make-stack #t) 3 tag 0 1))))))))
+            (set! frames ((@ (system repl debug) narrow-stack->vector) (make-stack #t) 3 tag 0 1))))))))
 
 (define (step-or-pause! game dt held)
   ;; #t when the frame ran.

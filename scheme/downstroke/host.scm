@@ -7,11 +7,11 @@
   #:use-module ((srfi srfi-1) #:select (any))
   #:export (main))
 
-;;; Guile's REPL and (downstroke repl-server) (with the debugger both bring)
-;;; are loaded only when a REPL is asked for: loaded with every game, they
-;;; would be live data that each of its collections marks (docs/engine.org).
-(define (repl-server-ref name)
-  (module-ref (resolve-interface '(downstroke repl-server)) name))
+;;; Guile's REPL, (downstroke repl-server) and (system vm frame) are named
+;;; with @, which loads a module when the code naming it first runs: only
+;;; when a REPL is asked for or an error reported. Loaded with every game,
+;;; they and the VM's debugging modules they bring would be live data that
+;;; each of its collections marks (docs/engine.org).
 
 ;;; ---------------------------------------------------------------- script errors
 ;;; An uncaught error reads as the user's: the message first, then the
@@ -29,12 +29,6 @@
 (define (user-file? file dir)
   (string-prefix? dir file))
 
-;; (system vm frame) is loaded for an error's report only: with the VM's
-;; debugging modules it brings, it is 0.8 MB of live data that every
-;; collection would mark (docs/engine.org).
-(define (frame-call frame)
-  ((module-ref (resolve-interface '(system vm frame)) 'frame-call-representation) frame))
-
 (define (stack-user-frames stack dir)
   ;; (file line call) of STACK's frames in files under DIR, innermost first.
   (let loop ((i 0) (acc '()))
@@ -44,7 +38,9 @@
                (where (frame-file-line frame)))
           (loop (+ i 1)
                 (if (and where (user-file? (car where) dir))
-                    (cons (list (car where) (cdr where) (frame-call frame)) acc)
+                    (cons (list (car where) (cdr where)
+                                ((@ (system vm frame) frame-call-representation) frame))
+                          acc)
                     acc))))))
 
 (define (report-error key args script)
@@ -151,7 +147,7 @@
   (module-use! (current-module) (resolve-interface '(downstroke)))
   (false-if-exception
    (begin ((module-ref (resolve-interface '(ice-9 readline)) 'activate-readline)) #t))
-  ((module-ref (resolve-interface '(system repl repl)) 'start-repl))
+  ((@ (system repl repl) start-repl))
   0)
 
 ;;; ---------------------------------------------------------------- live REPL
@@ -159,16 +155,14 @@
 ;;; frame: expressions run on the game's own thread, between two frames.
 
 (define (serve-repl! socket timeout)
-  (let ((server ((repl-server-ref 'make-repl-server) socket #:timeout timeout))
-        (poll! (repl-server-ref 'repl-server-poll!))
-        (broadcast! (repl-server-ref 'repl-server-broadcast!)))
-    (add-frame-hook! (lambda () (poll! server)))
+  (let ((server ((@ (downstroke repl-server) make-repl-server) socket #:timeout timeout)))
+    (add-frame-hook! (lambda () ((@ (downstroke repl-server) repl-server-poll!) server)))
     ;; A hook's error pauses the game instead of ending the session.
     (hook-error-reporter
      (lambda (text)
        (display text (current-error-port))
        (force-output (current-error-port))
-       (broadcast! server text)))
+       ((@ (downstroke repl-server) repl-server-broadcast!) server text)))
     (frame-pacing #t)
     (remove-socket-on-signals! socket)))
 
@@ -181,7 +175,7 @@
   (for-each (lambda (sig)
               (sigaction sig
                 (lambda (sig)
-                  ((repl-server-ref 'remove-unix-repl-socket!) socket)
+                  ((@ (downstroke repl-server) remove-unix-repl-socket!) socket)
                   (sigaction sig SIG_DFL)
                   (kill (getpid) sig))))
             ending-signals))
@@ -193,8 +187,8 @@
         (port (assq-ref opts 'repl-port)))
     (catch #t
       (lambda ()
-        (cond (path ((repl-server-ref 'open-unix-repl-socket) path))
-              (port ((repl-server-ref 'open-tcp-repl-socket) (string->number port)))
+        (cond (path ((@ (downstroke repl-server) open-unix-repl-socket) path))
+              (port ((@ (downstroke repl-server) open-tcp-repl-socket) (string->number port)))
               (else #f)))
       (lambda (key . args)
         (if (eq? key 'system-error)
@@ -207,7 +201,7 @@
 
 (define (repl-timeout opts)
   (let ((v (assq-ref opts 'repl-timeout)))
-    (if v (string->number v) (repl-server-ref 'default-repl-timeout))))
+    (if v (string->number v) (@ (downstroke repl-server) default-repl-timeout))))
 
 (define (usage-text)
   (string-append "usage: downstroke [OPTION...] [FILE.scm ARGS...]
@@ -222,7 +216,7 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --repl-server PATH  serve a REPL into the game on a Unix socket (mode 0600)
   --repl-port N       serve it on 127.0.0.1:N instead
   --repl-timeout S    interrupt a REPL evaluation that holds the game longer
-                      than S seconds (default " (number->string (repl-server-ref 'default-repl-timeout)) ")
+                      than S seconds (default " (number->string (@ (downstroke repl-server) default-repl-timeout)) ")
   --no-auto-compile   run FILE.scm interpreted, compiling nothing into the
                       cache (by default an edited file is compiled, quietly)
   --version           the version of downstroke
@@ -313,5 +307,5 @@ VERSION: the project's, for --version. Returns the exit status."
                              (when socket (serve-repl! socket (repl-timeout opts)))
                              (let ((status (run-script (car rest) (cdr rest)
                                                        (not (assq-ref opts 'no-auto-compile)))))
-                               (when socket ((repl-server-ref 'remove-unix-repl-socket!) socket))
+                               (when socket ((@ (downstroke repl-server) remove-unix-repl-socket!) socket))
                                status)))))))))))
