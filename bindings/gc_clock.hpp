@@ -1,7 +1,10 @@
 // What the collector has cost this process: collections counted and timed
-// through Boehm's collection events (Guile's own gc-time-taken is only
-// reachable by consing a (gc-stats) alist), and the bytes allocated. Read
-// before and after a frame, the difference is that frame's share.
+// by the wall clock through Boehm's collection events, and the bytes
+// allocated. Read before and after a frame, the difference is that frame's
+// share. Not Guile's own gc-time-taken: that is process CPU time, which adds
+// up every marking thread (about 1.8 times a collection's pause on the
+// 2-core machine of docs/benchmarks.org), and is only reachable by consing a
+// (gc-stats) alist.
 #pragma once
 #include <cstdint>
 

@@ -33,9 +33,7 @@ SCM set_gc_space_divisor(SCM n) {
 }
 
 // The collections since the library loaded and the wall-clock time they
-// took. Guile's own gc-time-taken is process CPU time, which adds up every
-// marking thread's: on the 2-core machine of docs/benchmarks.org it read
-// about 1.8 times a collection's pause.
+// took (gc_clock.hpp says why not Guile's gc-time-taken).
 SCM gc_clock() {
     const GcReading r = gc_reading();
     return scm_cons(scm_from_uint64(r.collections), scm_from_uint64(r.ns));
