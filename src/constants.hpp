@@ -27,6 +27,12 @@ constexpr double kOneWayFooting = 1.0;
 constexpr int kCellChunkShift = 12;
 
 // ---- limits that refuse input
+// Distinct cell shapes (semantics §12) in one grid: a shape id is 16 bits per
+// cell, beside the cell's kind byte. A map's shaped tiles times their eight
+// flips stay far below it (a tileset of 1024 shaped tiles, all flipped, is
+// 8192); more is a hostile or generated map and its load fails.
+constexpr size_t kMaxGridShapes = 65535;
+
 // Sub-frames per frame (make-game substeps:, step-scene #:substeps): beyond
 // this a frame costs more than any game wants, and a typo such as 1e6 would
 // hang the caller.

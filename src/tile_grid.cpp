@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace ds {
@@ -42,6 +43,11 @@ TileGrid& TileGrid::operator=(TileGrid&& o) noexcept {
     origin_row_ = std::exchange(o.origin_row_, 0);
     solid_ = std::move(o.solid_);
     o.solid_.clear();
+    shape_ids_ = std::move(o.shape_ids_);
+    o.shape_ids_.clear();
+    shapes_ = std::move(o.shapes_);
+    o.shapes_.clear();
+    steepest_ = std::exchange(o.steepest_, 0.0);
     revision_.bump();
     o.revision_.bump();
     return *this;
@@ -57,6 +63,30 @@ void TileGrid::set_cell(int64_t col, int64_t row, uint8_t kind) {
         throw std::out_of_range("tile grid: set_cell outside the grid");
     solid_[static_cast<size_t>(r * cols_ + c)] = kind == kEmptyCell || kind == kOneWayCell ? kind : kSolidCell;
     revision_.bump();
+}
+
+void TileGrid::set_shape(int64_t col, int64_t row, const CellShape& shape) {
+    const int64_t c = col - origin_col_, r = row - origin_row_;
+    if (c < 0 || r < 0 || c >= cols_ || r >= rows_)
+        throw std::out_of_range("tile grid: set_shape outside the grid");
+    auto found = std::find(shapes_.begin(), shapes_.end(), shape);
+    if (found == shapes_.end()) {
+        if (shapes_.size() >= kMaxGridShapes)
+            throw std::length_error("tile grid: more than " + std::to_string(kMaxGridShapes) + " distinct cell shapes");
+        shapes_.push_back(shape);
+        steepest_ = std::max(steepest_, shape.steepness());
+        found = std::prev(shapes_.end());
+    }
+    if (shape_ids_.empty()) shape_ids_.assign(solid_.size(), 0);
+    const size_t i = index(col, row);
+    shape_ids_[i] = static_cast<uint16_t>(found - shapes_.begin());
+    solid_[i] = kShapedCell;
+    revision_.bump();
+}
+
+double CellShape::steepness() const {
+    if (cut == Cut::None) return 0;
+    return std::fabs(static_cast<double>(by - ay)) / static_cast<double>(bx - ax);
 }
 
 CellRange TileGrid::clip(CellRange r, int64_t origin, int count) {

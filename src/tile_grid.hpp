@@ -8,8 +8,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "cell_shape.hpp"
 #include "constants.hpp"
 #include "number.hpp"
 #include "shared_cells.hpp"
@@ -37,8 +39,9 @@ inline int64_t cell_of(Num pos, int tile);
 // made, copied, assigned or edited, so no two states of any grids in the
 // process share one — not even a new grid built where an old one was. Never 0
 // (callers keep 0 for "no grid").
-// What a grid's cell holds.
-constexpr uint8_t kEmptyCell = 0, kSolidCell = 1, kOneWayCell = 2;
+// What a grid's cell holds: nothing, a whole solid or one-way block, or a
+// shape (semantics §12) kept in the grid's table of shapes.
+constexpr uint8_t kEmptyCell = 0, kSolidCell = 1, kOneWayCell = 2, kShapedCell = 3;
 
 class GridRevision {
 public:
@@ -80,8 +83,11 @@ public:
     // bumps the revision. The grid does not grow: a cell outside it is
     // std::out_of_range.
     void set_solid(int64_t col, int64_t row, bool solid);
-    // The same for any kind of cell (kEmptyCell, kSolidCell, kOneWayCell).
+    // The same for any whole kind of cell (kEmptyCell, kSolidCell, kOneWayCell).
     void set_cell(int64_t col, int64_t row, uint8_t kind);
+    // Gives a cell a shape (kShapedCell), added to the grid's table unless an
+    // equal one is there; std::length_error past kMaxGridShapes distinct shapes.
+    void set_shape(int64_t col, int64_t row, const CellShape& shape);
 
     int cols() const { return cols_; }
     int rows() const { return rows_; }
@@ -90,17 +96,30 @@ public:
     int64_t origin_col() const { return origin_col_; }
     int64_t origin_row() const { return origin_row_; }
 
-    // What a cell holds: kEmptyCell (also outside the grid), kSolidCell or
-    // kOneWayCell. One lookup, for loops that test both kinds.
+    // What a cell holds: kEmptyCell (also outside the grid), kSolidCell,
+    // kOneWayCell or kShapedCell. One lookup, for loops that test every kind.
     uint8_t cell(int64_t col, int64_t row) const {
         col -= origin_col_;
         row -= origin_row_;
         if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return kEmptyCell;
         return solid_[static_cast<size_t>(row * cols_ + col)];
     }
+    // A whole solid block (a shaped cell is not: see shape()).
     bool solid(int64_t col, int64_t row) const { return cell(col, row) == kSolidCell; }
     // A one-way platform (semantics §9): it stops bodies only from above.
     bool one_way(int64_t col, int64_t row) const { return cell(col, row) == kOneWayCell; }
+    // A shaped cell's shape, or nullptr for any other cell.
+    const CellShape* shape(int64_t col, int64_t row) const {
+        if (cell(col, row) != kShapedCell) return nullptr;
+        return &shapes_[shape_ids_[index(col, row)]];
+    }
+    // Whether any cell has ever had a shape: a grid without shapes takes
+    // none of the shape rules' paths, and costs what it did before them.
+    bool has_shapes() const { return !shapes_.empty(); }
+    // The steepest ramp among the shapes the grid has held (|dy/dx|; 0 for
+    // none): how far a body walking at vx px/frame may snap down (§12).
+    double steepest_ramp() const { return steepest_; }
+    std::span<const CellShape> shape_table() const { return shapes_; }
 
     // The part of a column (row) range that lies inside the grid: physics
     // never walks cells that cannot be solid, however large the box or move.
@@ -109,10 +128,18 @@ public:
 
 private:
     static CellRange clip(CellRange r, int64_t origin, int count);
+    size_t index(int64_t col, int64_t row) const {
+        return static_cast<size_t>((row - origin_row_) * cols_ + (col - origin_col_));
+    }
 
     int cols_ = 0, rows_ = 0, tile_w_ = 1, tile_h_ = 1;
     int64_t origin_col_ = 0, origin_row_ = 0;
     SharedCells<uint8_t> solid_;  // row-major, one kind per cell
+    // For kShapedCell cells, the index of their shape in shapes_; empty (no
+    // memory at all) until a cell gets a shape.
+    SharedCells<uint16_t> shape_ids_;
+    std::vector<CellShape> shapes_;  // distinct, in the order first met
+    double steepest_ = 0;
     GridRevision revision_;
 };
 

@@ -1,0 +1,34 @@
+// The solid part of a cell that is not the whole cell (semantics §12): a
+// part-tile box, or a ramp — a box cut by one slanted line. Plain data, in
+// whole px from the cell's top-left corner, so a grid keeps one small table
+// of them and every rule reads the same numbers the reference does.
+#pragma once
+#include <cstdint>
+
+namespace ds {
+
+// Which side of the slanted line a ramp keeps.
+enum class Cut : int8_t {
+    None = 0,      // a part-tile box: the box is the shape
+    Floor = 1,     // what lies below the line (y grows down): a ramp to walk on
+    Ceiling = -1,  // what lies above it: a ramp to bump into from below
+};
+
+struct CellShape {
+    // The box [x0, x1) × [y0, y1), 0 ≤ x0 < x1 ≤ tile width, 0 ≤ y0 < y1 ≤
+    // tile height.
+    int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    Cut cut = Cut::None;
+    // The slanted line through (ax, ay) and (bx, by), ax < bx, ay ≠ by; unused
+    // for a box.
+    int32_t ax = 0, ay = 0, bx = 0, by = 0;
+    // A one-way shape stops bodies only from above (semantics §9, §12).
+    bool one_way = false;
+
+    bool ramp() const { return cut != Cut::None; }
+    // |dy/dx| of the slant: 1 for 45°, 0.5 for 1:2, 2 for 2:1; 0 for a box.
+    double steepness() const;
+    bool operator==(const CellShape&) const = default;
+};
+
+}  // namespace ds
