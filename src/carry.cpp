@@ -30,8 +30,12 @@ bool carry_along(Body& b, Num d, AxisOf axis, TileStep resolve, const TileGrid* 
     BodyAxis m = axis(moved);
     m.pos = axis(b).pos + d;
     m.vel = d;
-    resolve(moved, grid, mode, {});
-    axis(b).pos = m.pos;
+    SubStep carried;
+    carried.carried = true;
+    resolve(moved, grid, mode, carried);
+    // Both coordinates: a rider carried along x onto a ramp climbs it (§12).
+    b.x = moved.x;
+    b.y = moved.y;
     return m.vel.v == 0;
 }
 
@@ -48,15 +52,6 @@ bool rides(const Body& r, const Body& c) {
     return r.x.v < c.x.v + c.w.v && c.x.v < r.x.v + r.w.v &&
            std::fabs((r.y.v + r.h.v) - c.y.v) <= kOnSolidTolerance &&
            (!c.one_way || (r.vy.v >= 0 && !r.drop_through));
-}
-
-bool overlaps_solid_cell(const Body& b, const TileGrid& grid) {
-    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
-    const CellRange rows = grid.clip_rows(cells_of(b.y, b.h, grid.tile_height()));
-    for (int64_t r = rows.first; r <= rows.last; ++r)
-        for (int64_t c = cols.first; c <= cols.last; ++c)
-            if (grid.cell(c, r) == kSolidCell) return true;
-    return false;
 }
 
 }  // namespace
@@ -101,7 +96,7 @@ void note_in_way(std::span<const Body> bodies, std::span<const Body> start,
 void crush_in_way(std::span<Body> bodies, const TileGrid* grid, const CarryScratch& scratch) {
     if (grid == nullptr) return;
     for (const size_t m : scratch.in_way)
-        if (overlaps_solid_cell(bodies[m], *grid)) bodies[m].crushed = true;
+        if (overlaps_solid(bodies[m], *grid)) bodies[m].crushed = true;
 }
 
 }  // namespace ds

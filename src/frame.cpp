@@ -159,7 +159,11 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
         t = pass(kStepVelocityX, block, bodies, writes, t, [](const Body&) { return kFieldX; },
                  [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
         t = pass(kStepTileX, block, bodies, writes, t,
-                 [](const Body& b) { return unless_zero(b.vx, kFieldX | kFieldVx) | reported(b, kFieldBlocked); },
+                 // A grid with shapes lifts bodies up ramps from this step (§12).
+                 [&](const Body& b) {
+                     const uint32_t y = grid && grid->has_shapes() ? kFieldY : 0u;
+                     return unless_zero(b.vx, kFieldX | kFieldVx | y) | reported(b, kFieldBlocked);
+                 },
                  [&](Body& b, size_t) { return resolve_tile_collisions_x(b, grid, mode, sub); });
         t = pass(kStepVelocityY, block, bodies, writes, t, [](const Body&) { return kFieldY; },
                  [&](Body& b, size_t) { return apply_velocity_y(b, sub); });

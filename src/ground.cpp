@@ -3,10 +3,14 @@
 #include <cmath>
 
 #include "detail/ground_index.hpp"
+#include "detail/placed_shape.hpp"
 
 namespace ds {
 
-bool tile_supports(const Body& b, const TileGrid& grid) {
+namespace {
+
+// The whole cells of the row under the feet (semantics §4, §9).
+bool whole_cell_supports(const Body& b, const TileGrid& grid) {
     const int64_t row = cell_of(b.y + b.h, grid.tile_height());
     const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
     // One-way cells (semantics §9) hold up a body that is not rising, not
@@ -20,9 +24,40 @@ bool tile_supports(const Body& b, const TileGrid& grid) {
     return false;
 }
 
+// A shape in the row under the feet holds the body up when the feet are on
+// or in it: at or below its surface over the bottom edge and above its
+// underside; a one-way shape only within kOneWayFooting of its surface, for
+// a body not rising nor dropping through (semantics §12).
+bool shape_supports(const Body& b, const TileGrid& grid) {
+    const double feet = (b.y + b.h).v;
+    const int64_t row = cell_of(b.y + b.h, grid.tile_height());
+    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    const shape_math::Span span{b.x.v, (b.x + b.w).v};
+    const bool may_stand = b.vy.v >= 0 && !b.drop_through;
+    for (int64_t c = cols.first; c <= cols.last; ++c) {
+        if (grid.cell(c, row) != kShapedCell) continue;
+        const CellShape& sh = *grid.shape(c, row);
+        if (sh.one_way && !may_stand) continue;
+        const shape_math::Placed p(sh, c, row, grid);
+        double a, z;
+        if (!p.over(span, a, z) || !p.solid_over(a, z)) continue;
+        const double top = p.surface(a, z);
+        if (top <= feet && feet < p.underside(a, z) && (!sh.one_way || feet - top < kOneWayFooting)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool tile_supports(const Body& b, const TileGrid& grid) {
+    return whole_cell_supports(b, grid) || (grid.has_shapes() && shape_supports(b, grid));
+}
+
+// Whole cells only: a body on a shape takes gravity and lands again every
+// frame, so one walking down a ramp is snapped and never left resting.
 bool rests_on_tile(const Body& b, const TileGrid& grid) {
     const double feet = b.y.v + b.h.v;
-    return std::fmod(feet, grid.tile_height()) == 0 && tile_supports(b, grid);
+    return std::fmod(feet, grid.tile_height()) == 0 && whole_cell_supports(b, grid);
 }
 
 namespace {

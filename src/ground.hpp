@@ -11,7 +11,8 @@
 
 namespace ds {
 
-// Whether a solid cell lies in row ⌊(y+h)/th⌋ under any column the box spans.
+// Whether a solid cell lies in row ⌊(y+h)/th⌋ under any column the box spans
+// (or a one-way one, §9), or a shape there holds the feet (§12).
 bool tile_supports(const Body& b, const TileGrid& grid);
 // Whether `other` holds `b` up: solid, not a ghost, overlapping horizontally,
 // its top within the tolerance of b's feet and moving at nearly b's speed.
@@ -19,7 +20,7 @@ bool tile_supports(const Body& b, const TileGrid& grid);
 bool entity_supports(const Body& b, const Body& other);
 
 // Resting contact (beyond the seed; FrameOptions::resting_contacts): a still
-// body (vy = 0) whose feet are exactly on the top of a solid tile, or on the
+// body (vy = 0) whose feet are exactly on the top of a solid whole tile, or on the
 // top of a still solid body overlapping it horizontally. Such a body skips
 // gravity, so a stack at rest stays exactly where it is.
 bool rests_on_tile(const Body& b, const TileGrid& grid);

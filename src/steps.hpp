@@ -17,6 +17,9 @@ struct SubStep {
     // A sub-frame after the first: the contact report (#:blocked) adds what
     // it finds to what the frame's earlier sub-frames found (semantics §10).
     bool gather = false;
+    // A move that carries a rider with its carrier (semantics §11), not the
+    // body's own: it never snaps down a ramp (§12).
+    bool carried = false;
 
     static SubStep of_frame(int k) { return {k <= 1 ? 1.0 : 1.0 / k}; }
     bool whole() const { return h == 1; }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "detail/body_axis.hpp"
+#include "detail/placed_shape.hpp"
 #include "steps.hpp"
 
 namespace ds {
@@ -67,6 +68,229 @@ uint8_t side(bool stopped, Num vel, uint8_t forward, uint8_t backward) {
     return stopped ? (vel.v > 0 ? forward : backward) : 0;
 }
 
+// ---- shaped cells (semantics §12). Only grids that hold a shape come here;
+// every whole cell is treated exactly as resolve_axis treats it.
+using shape_math::exact_if;
+using shape_math::Placed;
+using shape_math::Span;
+
+// A position a shape rule computes depends on the whole box.
+bool box_exact(const Body& b) { return b.x.exact && b.y.exact && b.w.exact && b.h.exact; }
+
+// Whether a move along x enters shape p through its near side (the side
+// facing the move) rather than over its slant: the box's leading edge
+// crosses that side, and the box spans some of the solid there.
+bool enters_side(const Placed& p, bool fwd, double lead_before, double lead_after, double top, double bottom) {
+    const double side = fwd ? p.left() : p.right();
+    const bool crossed = fwd ? lead_before <= side && side < lead_after : lead_after < side && side <= lead_before;
+    return crossed && top < p.bottom(side) && bottom > p.top(side);
+}
+
+// Whether feet at `feet` were on or above one-way ramp p where the box's
+// leading edge met it: only then does it carry the body up (§9, §12).
+bool enters_from_above(const Placed& p, bool fwd, double lead_before, double feet) {
+    const double at = fwd ? std::max(p.left(), lead_before) : std::min(p.right(), lead_before);
+    return feet <= p.top(at);
+}
+
+struct XMove {
+    bool fwd;
+    double lead_before, lead_after;
+    Span sweep;  // where the box went this move (swept), or where it is (discrete)
+    int lifted = 0;  // +1 once a floor ramp lifted the body, −1 once a ceiling ramp pushed it down
+};
+
+// The nearest side of a solid in column c that the move runs into, at the
+// body's present rows; false when none. `whole`: a whole cell's.
+bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, const XMove& m, double& wall, bool& whole) {
+    const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+    const double top = b.y.v, bottom = (b.y + b.h).v;
+    bool found = false;
+    for (int64_t r = rows.first; r <= rows.last; ++r) {
+        const uint8_t cell = g.cell(c, r);
+        if (cell == kSolidCell) {
+            wall = static_cast<double>(m.fwd ? c : c + 1) * g.tile_width();
+            whole = true;
+            return true;
+        }
+        if (cell != kShapedCell || g.shape(c, r)->one_way) continue;
+        const Placed p(*g.shape(c, r), c, r, g);
+        if (!enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) continue;
+        const double side = m.fwd ? p.left() : p.right();
+        if (!found || (m.fwd ? side < wall : side > wall)) wall = side;
+        found = true;
+    }
+    whole = false;
+    return found;
+}
+
+// The ramps of column c that the box overlaps over its sweep move it out
+// along y: up onto a floor ramp's top, down under a ceiling ramp, again
+// while the new rows bring more (a fast body on a long ramp). False when
+// it cannot: ramps push it both ways.
+bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
+    for (int64_t guard = 0; guard <= static_cast<int64_t>(g.rows()) + 1; ++guard) {
+        const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+        const double head = b.y.v, feet = (b.y + b.h).v;
+        double new_feet = feet, new_head = head;
+        bool up = false, down = false;
+        for (int64_t r = rows.first; r <= rows.last; ++r) {
+            if (g.cell(c, r) != kShapedCell || !g.shape(c, r)->ramp()) continue;
+            const CellShape& sh = *g.shape(c, r);
+            const Placed p(sh, c, r, g);
+            double a, z;
+            if (!p.over(m.sweep, a, z) || !p.solid_over(a, z)) continue;
+            if (sh.cut == Cut::Floor) {
+                if (sh.one_way && (b.drop_through || !enters_from_above(p, m.fwd, m.lead_before, feet))) continue;
+                const double t = p.top_over(a, z);
+                if (head < p.box_bottom() && feet > t) {
+                    up = true;
+                    if (t < new_feet) new_feet = t;
+                }
+            } else if (!sh.one_way) {
+                const double u = p.bottom_over(a, z);
+                if (feet > p.box_top() && head < u) {
+                    down = true;
+                    if (new_head < u) new_head = u;
+                }
+            }
+        }
+        if (!up && !down) return true;
+        if ((up && down) || (up && m.lifted < 0) || (down && m.lifted > 0)) return false;
+        const bool exact = box_exact(b);
+        b.y = up ? exact_if(exact, new_feet - b.h.v) : exact_if(exact, new_head);
+        m.lifted = up ? 1 : -1;
+    }
+    return false;
+}
+
+bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
+    const Num move = s.share(b.vx);
+    const TileAxis t{along_x(b), move, g.tile_width()};
+    const CellRange cols = g.clip_cols(candidates(t, mode));
+    const Num x_start = b.x - move, y_start = b.y;
+    XMove m{b.vx.v > 0, 0, 0, {}};
+    m.lead_before = m.fwd ? (x_start + b.w).v : x_start.v;
+    m.lead_after = m.fwd ? (b.x + b.w).v : b.x.v;
+    m.sweep = mode == CollisionMode::Discrete ? Span{b.x.v, (b.x + b.w).v}
+              : m.fwd                         ? Span{x_start.v, (b.x + b.w).v}
+                                              : Span{b.x.v, (x_start + b.w).v};
+    bool stopped = false, shape_wall = false, squeezed = false;
+    for (int64_t i = 0, n = cols.last - cols.first + 1; i < n && !cols.empty(); ++i) {
+        const int64_t c = m.fwd ? cols.first + i : cols.last - i;
+        double wall = 0;
+        bool whole = false;
+        if (wall_in_column(b, g, c, m, wall, whole)) {
+            const bool exact = b.x.exact && b.w.exact;
+            b.x = m.fwd ? Num{wall - b.w.v, exact} : Num{wall, exact};
+            stopped = true;
+            shape_wall = !whole;
+            break;
+        }
+        if (!climb_column(b, g, c, m)) {
+            squeezed = true;
+            break;
+        }
+    }
+    // A move that leaves the box in a solid (lifted into a ceiling, or
+    // stopped by a part-tile box beside a ramp) is not made at all.
+    if (squeezed || ((m.lifted != 0 || shape_wall) && overlaps_solid(b, g))) {
+        b.x = x_start;
+        b.y = y_start;
+        stopped = true;
+    }
+    if (stopped) b.vx = Num::integer(0);
+    return stopped;
+}
+
+bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
+    const Num move = s.share(b.vy);
+    const bool fwd = b.vy.v > 0;
+    const TileAxis t{along_y(b), move, g.tile_height()};
+    const CellRange rows = g.clip_rows(candidates(t, mode));
+    const CellRange cols = g.clip_cols(cells_of(b.x, b.w, g.tile_width()));
+    if (rows.empty() || cols.empty()) return false;
+    const bool may_land = fwd && !b.drop_through;
+    const double feet_before = (b.y - move + b.h).v, head_before = (b.y - move).v;
+    const double feet = (b.y + b.h).v, head = b.y.v;
+    const double th = g.tile_height();
+    const Span span{b.x.v, (b.x + b.w).v};
+    for (int64_t i = 0, n = rows.last - rows.first + 1; i < n; ++i) {
+        const int64_t r = fwd ? rows.first + i : rows.last - i;
+        bool found = false;
+        double stop = 0;
+        for (int64_t c = cols.first; c <= cols.last; ++c) {
+            const uint8_t cell = g.cell(c, r);
+            if (cell == kSolidCell ||
+                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th)) {
+                const bool exact = b.y.exact && b.h.exact;
+                const double edge = static_cast<double>(fwd ? r : r + 1) * th;
+                b.y = fwd ? Num{edge - b.h.v, exact} : Num{edge, exact};
+                b.vy = Num::integer(0);
+                return true;
+            }
+            if (cell != kShapedCell) continue;
+            const CellShape& sh = *g.shape(c, r);
+            if (sh.one_way && !may_land) continue;
+            const Placed p(sh, c, r, g);
+            double a, z;
+            if (!p.over(span, a, z) || !p.solid_over(a, z)) continue;
+            if (fwd) {
+                const double top = p.surface(a, z);
+                if (feet_before <= top && top < feet && (!found || top < stop)) stop = top, found = true;
+            } else {
+                const double under = p.underside(a, z);
+                if (head_before >= under && under > head && (!found || under > stop)) stop = under, found = true;
+            }
+        }
+        if (found) {
+            b.y = exact_if(box_exact(b), fwd ? stop - b.h.v : stop);
+            b.vy = Num::integer(0);
+            return true;
+        }
+    }
+    return false;
+}
+
+// A body that stood on the ground last frame and walks on follows the
+// ground down: onto the highest top under it no further below its feet
+// than |vx| × the grid's steepest ramp (§12). Never for a carried move.
+bool snap_down(Body& b, const TileGrid& g, SubStep s) {
+    if (!b.gravity || !b.on_ground || s.carried) return false;
+    const double reach = std::fabs(s.share(b.vx).v) * g.steepest_ramp();
+    if (!(reach > 0)) return false;
+    const double feet = (b.y + b.h).v, lowest = feet + reach;
+    const CellRange rows = g.clip_rows({cell_of(b.y + b.h, g.tile_height()), cell_of(Num::flonum(lowest), g.tile_height())});
+    const CellRange cols = g.clip_cols(cells_of(b.x, b.w, g.tile_width()));
+    const Span span{b.x.v, (b.x + b.w).v};
+    for (int64_t r = rows.first; r <= rows.last && !cols.empty(); ++r) {
+        bool found = false;
+        double ground = 0;
+        for (int64_t c = cols.first; c <= cols.last; ++c) {
+            const uint8_t cell = g.cell(c, r);
+            double top;
+            if (cell == kSolidCell || (cell == kOneWayCell && !b.drop_through)) {
+                top = static_cast<double>(r) * g.tile_height();
+            } else if (cell == kShapedCell) {
+                const CellShape& sh = *g.shape(c, r);
+                const Placed p(sh, c, r, g);
+                double a, z;
+                if ((sh.one_way && b.drop_through) || !p.over(span, a, z) || !p.solid_over(a, z)) continue;
+                top = p.surface(a, z);
+            } else {
+                continue;
+            }
+            if (feet <= top && top <= lowest && (!found || top < ground)) ground = top, found = true;
+        }
+        if (found) {
+            b.y = exact_if(box_exact(b), ground - b.h.v);
+            b.vy = Num::integer(0);
+            return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s) {
@@ -76,6 +300,10 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
         return false;
     }
     const Num vx = b.vx;
+    if (grid->has_shapes()) {
+        note_blocked(b, kSidesX, side(shaped_x(b, *grid, mode, s), vx, kSideRight, kSideLeft), s);
+        return true;
+    }
     const TileAxis a{along_x(b), s.share(b.vx), grid->tile_width()};
     const CellRange cols = grid->clip_cols(candidates(a, mode));
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
@@ -92,6 +320,11 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
         return false;
     }
     const Num vy = b.vy;
+    if (grid->has_shapes()) {
+        const bool stopped = shaped_y(b, *grid, mode, s) || (vy.v > 0 && snap_down(b, *grid, s));
+        note_blocked(b, kSidesY, side(stopped, vy, kSideDown, kSideUp), s);
+        return true;
+    }
     const TileAxis a{along_y(b), s.share(b.vy), grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
@@ -108,6 +341,21 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     });
     note_blocked(b, kSidesY, side(stopped, vy, kSideDown, kSideUp), s);
     return true;
+}
+
+bool overlaps_solid(const Body& b, const TileGrid& grid) {
+    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    const CellRange rows = grid.clip_rows(cells_of(b.y, b.h, grid.tile_height()));
+    const shape_math::Span span{b.x.v, (b.x + b.w).v};
+    for (int64_t r = rows.first; r <= rows.last; ++r)
+        for (int64_t c = cols.first; c <= cols.last; ++c) {
+            const uint8_t cell = grid.cell(c, r);
+            if (cell == kSolidCell) return true;
+            if (cell == kShapedCell && !grid.shape(c, r)->one_way &&
+                shape_math::Placed(*grid.shape(c, r), c, r, grid).overlaps(span, b.y.v, (b.y + b.h).v))
+                return true;
+        }
+    return false;
 }
 
 }  // namespace ds

@@ -20,5 +20,13 @@ enum class CollisionMode : uint8_t {
 bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
 // The same along y, after apply-velocity-y ('tile-collisions-y).
 bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
+// In a grid with shaped cells (semantics §12) the x step also lifts a body
+// up a floor ramp (or down under a ceiling ramp) it walks into, and the y
+// step lands on a shape's surface and keeps a body that walks down a ramp
+// on it (snapping down; not for a carried move, SubStep::carried).
+
+// Whether the body's box overlaps a solid part of the grid: a whole solid
+// cell, or a solid shape (one-way cells and shapes do not count).
+bool overlaps_solid(const Body& b, const TileGrid& grid);
 
 }  // namespace ds

@@ -1,0 +1,99 @@
+// A cell's shape (cell_shape.hpp) placed in the world, and the few numbers
+// every shape rule of semantics §12 reads from it: its x extent, its top and
+// bottom over a span of x, and whether a box overlaps it. Everything is
+// computed in doubles in one fixed order of operations, which the reference
+// (reference.scm, "shaped cells") repeats on flonums, so both get the same
+// bits; exactness is decided once, on the value written (exact_if).
+#pragma once
+#include <algorithm>
+
+#include "../cell_shape.hpp"
+#include "../number.hpp"
+#include "../tile_grid.hpp"
+
+namespace ds::shape_math {
+
+// [lo, hi) along x.
+struct Span {
+    double lo, hi;
+};
+
+// The written value: exact when everything it came from was exact and it is
+// an integer (semantics §12: a ramp's height at an odd x may be a half).
+inline Num exact_if(bool exact, double v) { return {v, exact && std::floor(v) == v}; }
+
+// std::clamp's own rule (lo when v < lo, hi when hi < v, else v): the
+// reference spells it the same way, so a signed zero comes out the same.
+inline double clamp(double v, double lo, double hi) { return v < lo ? lo : hi < v ? hi : v; }
+
+struct Placed {
+    const CellShape& s;
+    double ox, oy;  // the cell's top-left corner, col·tw and row·th
+
+    Placed(const CellShape& shape, int64_t col, int64_t row, const TileGrid& g)
+        : s(shape), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()) {}
+
+    double left() const { return ox + s.x0; }
+    double right() const { return ox + s.x1; }
+    double box_top() const { return oy + s.y0; }
+    double box_bottom() const { return oy + s.y1; }
+
+    // The slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
+    // one division, so exact integers give the correctly rounded value.
+    double line(double x) const {
+        const double dx = s.bx - s.ax, dy = s.by - s.ay;
+        return ((oy + s.ay) * dx + ((x - ox) - s.ax) * dy) / dx;
+    }
+    // The top and bottom of the solid in the column at x (top == bottom: none).
+    double top(double x) const {
+        return s.cut == Cut::Floor ? clamp(line(x), box_top(), box_bottom()) : box_top();
+    }
+    double bottom(double x) const {
+        return s.cut == Cut::Ceiling ? clamp(line(x), box_top(), box_bottom()) : box_bottom();
+    }
+
+    // The part of `span` over the shape, [a, b); false when none.
+    bool over(Span span, double& a, double& b) const {
+        a = std::max(span.lo, left());
+        b = std::min(span.hi, right());
+        return a < b;
+    }
+    // The highest top (least y) over [a, b) and the lowest bottom: the
+    // line is monotonic, so one end gives each (b, not in the span, as the
+    // limit). Ties keep the first (a's), as std::min does.
+    double top_over(double a, double b) const {
+        const double ta = top(a), tb = top(b);
+        return tb < ta ? tb : ta;
+    }
+    double bottom_over(double a, double b) const {
+        const double ba = bottom(a), bb = bottom(b);
+        return ba < bb ? bb : ba;
+    }
+    // Where a body over [a, b) meets the shape from above (its highest top)
+    // and from below (its lowest bottom).
+    double surface(double a, double b) const { return s.cut == Cut::Floor ? top_over(a, b) : box_top(); }
+    double underside(double a, double b) const { return s.cut == Cut::Ceiling ? bottom_over(a, b) : box_bottom(); }
+    // Whether [a, b) holds any solid column: a ramp's columns past the end
+    // of its slant can be empty.
+    bool solid_over(double a, double b) const {
+        switch (s.cut) {
+            case Cut::Floor: return top_over(a, b) < box_bottom();
+            case Cut::Ceiling: return bottom_over(a, b) > box_top();
+            case Cut::None: break;
+        }
+        return true;
+    }
+    // Strict overlap with the box [span) × [top, bottom).
+    bool overlaps(Span span, double top_y, double bottom_y) const {
+        double a, b;
+        if (!over(span, a, b) || !solid_over(a, b)) return false;
+        switch (s.cut) {
+            case Cut::Floor: return top_y < box_bottom() && bottom_y > top_over(a, b);
+            case Cut::Ceiling: return bottom_y > box_top() && top_y < bottom_over(a, b);
+            case Cut::None: break;
+        }
+        return top_y < box_bottom() && bottom_y > box_top();
+    }
+};
+
+}  // namespace ds::shape_math
