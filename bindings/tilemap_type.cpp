@@ -288,6 +288,7 @@ bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f) {
 void register_tilemap_procedures() {
     init_tilemap_type();
     register_tilemap_info_procedures();
+    register_tilemap_shape_procedures();
     define_procedure<6, 0, 0, load_tilemap>("%load-tilemap",
         WrapperDoc{"(path solid-gids max-cells max-bytes strict? project)", "load-tilemap", "(downstroke tilemap)"});
     // Exported as they are (re-exported by (downstroke tilemap)): documented here.

@@ -32,5 +32,8 @@ SCM map_accessor(SCM obj, const char* proc, Get get) {
 // #f → nullptr; a tilemap → its grid; anything else → a Failure.
 bool grid_from_scm(SCM obj, const TileGrid*& grid, Failure& f);
 
+// tilemap-cell-shape and tilemap-steepest-ramp (tilemap_shape_procs.cpp).
+void register_tilemap_shape_procedures();
+
 }  // namespace ds::guile
 

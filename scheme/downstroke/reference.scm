@@ -1,4 +1,4 @@
-;;; (downstroke reference) — the physics rules of semantics §1–§6, §9 and §11 in plain Scheme.
+;;; (downstroke reference) — the physics rules of semantics §1–§6 and §9–§12 in plain Scheme.
 ;;;
 ;;; An executable specification: the same procedures as (downstroke physics),
 ;;; written for reading, not for speed, and sharing nothing with the native
@@ -14,7 +14,7 @@
   #:use-module ((downstroke physics) #:select (collision-mode resting-contacts?))
   #:use-module ((downstroke tilemap)
                 #:select (tilemap-tile-width tilemap-tile-height
-                          tilemap-cell-solid? tilemap-cell-one-way? tilemap-solid-extent))
+                          tilemap-cell-shape tilemap-steepest-ramp tilemap-solid-extent))
   #:re-export (collision-mode resting-contacts?)
   #:export (*gravity* *jump-force* *on-solid-tolerance*
             step-tweens apply-acceleration apply-gravity apply-velocity-x
@@ -269,41 +269,309 @@ exact when the position and size were."
          (v (if (> vel 0) (num- edge size) edge)))
     (if exact v (fl v))))
 
-(define (resolve-axis e h pos-key vel-key size-key across-key across-size-key
-                      tile tile-across first count first-across count-across solid?)
-  ;; Cells are walked from the side the box moves from; the first solid
-  ;; one met is the one it reached first. Swept mode covers this
-  ;; (sub-)frame's move: vel, or vel·h.
-  (let ((pos (num e pos-key)) (vel (num e vel-key)) (size (num e size-key)))
-    (let* ((along (clip (candidate-cells pos (share vel h) size tile (collision-mode)) first count))
-           (across (clip (cells-of (num e across-key) (num e across-size-key) tile-across)
-                         first-across count-across))
-           (hit (find (lambda (c)
-                        (any (lambda (k) (solid? c k)) (range->list across 1)))
-                      (range->list (and across along) (if (> vel 0) 1 -1)))))
-      ;; The entity, and whether a cell stopped it (the contact report).
-      (if hit
-          (let ((e (put e pos-key pos (snap pos vel size tile hit))))
-            (values (put e vel-key vel 0) #t))
-          (values e #f)))))
+;;; ---------------------------------------------------------------- shaped cells (§12)
+;;; A cell as (tilemap-cell-shape tm col row) gives it: #f, 'solid, 'one-way,
+;;; or a shape #(x0 y0 x1 y1 cut ax ay bx by one-way?) in tile px, CUT one of
+;;; box floor ceiling. The core computes every quantity of a shape in doubles
+;;; in one order of operations (src/detail/placed_shape.hpp); these do the
+;;; same on flonums, so both get the same bits. Whole cells keep §4's rules,
+;;; so a map without shapes is stepped as before.
+
+(define (cut-of s) (vector-ref s 4))
+(define (one-way-shape? s) (vector-ref s 9))
+
+(define (place s col row tm)
+  "Shape S at cell (COL, ROW): #(s ox oy), the cell's corner in flonums."
+  (vector s (* (fl col) (tilemap-tile-width tm)) (* (fl row) (tilemap-tile-height tm))))
+
+(define (p-cut p) (cut-of (vector-ref p 0)))
+(define (p-ref p i) (vector-ref (vector-ref p 0) i))
+(define (p-left p) (+ (vector-ref p 1) (p-ref p 0)))
+(define (p-right p) (+ (vector-ref p 1) (p-ref p 2)))
+(define (p-box-top p) (+ (vector-ref p 2) (p-ref p 1)))
+(define (p-box-bottom p) (+ (vector-ref p 2) (p-ref p 3)))
+
+(define (p-line p x)
+  "The slant's y at X: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx."
+  (let* ((ox (vector-ref p 1)) (oy (vector-ref p 2))
+         (ax (p-ref p 5)) (ay (p-ref p 6))
+         (dx (- (p-ref p 7) ax)) (dy (- (p-ref p 8) ay)))
+    (/ (+ (* (+ oy ay) dx) (* (- (- x ox) ax) dy)) dx)))
+
+(define (clamp v lo hi) (cond ((< v lo) lo) ((< hi v) hi) (else v)))
+
+(define (p-top p x)
+  (if (eq? (p-cut p) 'floor) (clamp (p-line p x) (p-box-top p) (p-box-bottom p)) (p-box-top p)))
+(define (p-bottom p x)
+  (if (eq? (p-cut p) 'ceiling) (clamp (p-line p x) (p-box-top p) (p-box-bottom p)) (p-box-bottom p)))
+
+(define (p-over p lo hi)
+  "The part [a, b) of the span [LO, HI) over the shape, as (a . b), or #f."
+  (let ((a (if (< lo (p-left p)) (p-left p) lo))
+        (b (if (< (p-right p) hi) (p-right p) hi)))
+    (and (< a b) (cons a b))))
+
+(define (p-top-over p ab)
+  (let ((ta (p-top p (car ab))) (tb (p-top p (cdr ab)))) (if (< tb ta) tb ta)))
+(define (p-bottom-over p ab)
+  (let ((ba (p-bottom p (car ab))) (bb (p-bottom p (cdr ab)))) (if (< ba bb) bb ba)))
+(define (p-surface p ab) (if (eq? (p-cut p) 'floor) (p-top-over p ab) (p-box-top p)))
+(define (p-underside p ab) (if (eq? (p-cut p) 'ceiling) (p-bottom-over p ab) (p-box-bottom p)))
+(define (p-solid-over? p ab)
+  (case (p-cut p)
+    ((floor) (< (p-top-over p ab) (p-box-bottom p)))
+    ((ceiling) (> (p-bottom-over p ab) (p-box-top p)))
+    (else #t)))
+
+(define (p-overlaps? p lo hi top bottom)
+  "Whether the box [LO, HI) × [TOP, BOTTOM) overlaps the shape's solid."
+  (let ((ab (p-over p lo hi)))
+    (and ab (p-solid-over? p ab)
+         (case (p-cut p)
+           ((floor) (and (< top (p-box-bottom p)) (> bottom (p-top-over p ab))))
+           ((ceiling) (and (> bottom (p-box-top p)) (< top (p-bottom-over p ab))))
+           (else (and (< top (p-box-bottom p)) (> bottom (p-box-top p))))))))
+
+(define (exact-if exact? v)
+  "A written value: exact when its inputs were and it is an integer."
+  (if (and exact? (integer? v)) (inexact->exact v) v))
+
+(define (box-exact? e)
+  (every (lambda (k) (exact? (num e k))) '(#:x #:y #:width #:height)))
+
+(define (each-cell tm cols rows proc)
+  "(PROC col row cell) for the cells of the ranges, rows outer; the first
+true result, or #f."
+  (let rows-loop ((rs (range->list (and cols rows) 1)))
+    (and (pair? rs)
+         (or (let cols-loop ((cs (range->list cols 1)))
+               (and (pair? cs)
+                    (or (proc (car cs) (car rs) (tilemap-cell-shape tm (car cs) (car rs)))
+                        (cols-loop (cdr cs)))))
+             (rows-loop (cdr rs))))))
+
+(define (box-rows e tm)
+  (apply (lambda (col0 row0 cols rows)
+           (clip (cells-of (num e #:y) (num e #:height) (tilemap-tile-height tm)) row0 rows))
+         (tilemap-solid-extent tm)))
+(define (box-cols e tm)
+  (apply (lambda (col0 row0 cols rows)
+           (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm)) col0 cols))
+         (tilemap-solid-extent tm)))
+(define (span-of e) (cons (fl (num e #:x)) (fl (num+ (num e #:x) (num e #:width)))))
+
+(define (overlaps-solid? e tm)
+  "Whether E's box overlaps a whole solid cell or a solid shape."
+  (let ((span (span-of e)) (top (fl (num e #:y))) (bottom (fl (num+ (num e #:y) (num e #:height)))))
+    (each-cell tm (box-cols e tm) (box-rows e tm)
+               (lambda (c r cell)
+                 (or (eq? cell 'solid)
+                     (and (vector? cell) (not (one-way-shape? cell))
+                          (p-overlaps? (place cell c r tm) (car span) (cdr span) top bottom)))))))
+
+;;; resolve-tile-collisions-x: column by column from the side the body moves
+;;; from, a wall (a whole solid cell, or a solid shape's near side) stops it;
+;;; otherwise the column's ramps move it along y (§12).
+
+(define (enters-side? p fwd? lead0 lead1 top bottom)
+  (let ((side (if fwd? (p-left p) (p-right p))))
+    (and (if fwd? (and (<= lead0 side) (< side lead1)) (and (< lead1 side) (<= side lead0)))
+         (< top (p-bottom p side))
+         (> bottom (p-top p side)))))
+
+(define (enters-from-above? p fwd? lead0 feet)
+  (let ((at (if fwd?
+                (if (< (p-left p) lead0) lead0 (p-left p))
+                (if (< lead0 (p-right p)) lead0 (p-right p)))))
+    (<= feet (p-top p at))))
+
+(define (wall-in-column e tm c fwd? lead0 lead1)
+  "The nearest wall of column C at E's rows: (position . whole?), or #f."
+  (let ((top (fl (num e #:y))) (bottom (fl (num+ (num e #:y) (num e #:height)))))
+    (let loop ((rs (range->list (box-rows e tm) 1)) (found #f))
+      (if (null? rs)
+          found
+          (let ((cell (tilemap-cell-shape tm c (car rs))))
+            (cond ((eq? cell 'solid)
+                   (cons (* (fl (if fwd? c (+ c 1))) (tilemap-tile-width tm)) #t))
+                  ((and (vector? cell) (not (one-way-shape? cell))
+                        (enters-side? (place cell c (car rs) tm) fwd? lead0 lead1 top bottom))
+                   (let* ((p (place cell c (car rs) tm))
+                          (side (if fwd? (p-left p) (p-right p))))
+                     (loop (cdr rs)
+                           (if (or (not found) (if fwd? (< side (car found)) (> side (car found))))
+                               (cons side #f)
+                               found))))
+                  (else (loop (cdr rs) found))))))))
+
+(define (climb-column e tm c fwd? lead0 sweep lifted)
+  "E moved out of the ramps of column C that its box overlaps over SWEEP:
+(values e lifted), LIFTED 1 once lifted, −1 once pushed down; E #f when
+squeezed."
+  (let ((limit (+ (list-ref (tilemap-solid-extent tm) 3) 1)))
+    (let loop ((e e) (lifted lifted) (guard 0))
+      (if (> guard limit)
+          (values #f lifted)
+          (let* ((head (fl (num e #:y))) (feet (fl (num+ (num e #:y) (num e #:height))))
+                 (up #f) (down #f) (new-feet feet) (new-head head))
+            (for-each
+             (lambda (r)
+               (let ((cell (tilemap-cell-shape tm c r)))
+                 (when (and (vector? cell) (not (eq? (cut-of cell) 'box)))
+                   (let* ((p (place cell c r tm))
+                          (ab (p-over p (car sweep) (cdr sweep))))
+                     (when (and ab (p-solid-over? p ab))
+                       (if (eq? (cut-of cell) 'floor)
+                           (unless (and (one-way-shape? cell)
+                                        (or (flag e #:drop-through?)
+                                            (not (enters-from-above? p fwd? lead0 feet))))
+                             (let ((t (p-top-over p ab)))
+                               (when (and (< head (p-box-bottom p)) (> feet t))
+                                 (set! up #t)
+                                 (when (< t new-feet) (set! new-feet t)))))
+                           (unless (one-way-shape? cell)
+                             (let ((u (p-bottom-over p ab)))
+                               (when (and (> feet (p-box-top p)) (< head u))
+                                 (set! down #t)
+                                 (when (< new-head u) (set! new-head u)))))))))))
+             (range->list (box-rows e tm) 1))
+            (cond ((and (not up) (not down)) (values e lifted))
+                  ((or (and up down) (and up (< lifted 0)) (and down (> lifted 0))) (values #f lifted))
+                  (else
+                   (let ((y (exact-if (box-exact? e)
+                                      (if up (- new-feet (fl (num e #:height))) new-head))))
+                     (loop (put e #:y (num e #:y) y) (if up 1 -1) (+ guard 1))))))))))
+
+(define (shaped-x e tm h)
+  "(values entity stopped?) for the x step (§4, §12)."
+  (let* ((tw (tilemap-tile-width tm))
+         (x (num e #:x)) (y (num e #:y)) (w (num e #:width))
+         (vel (num e #:vx)) (move (share vel h)) (fwd? (> vel 0))
+         (x-start (num- x move))
+         (lead0 (fl (if fwd? (num+ x-start w) x-start)))
+         (lead1 (fl (if fwd? (num+ x w) x)))
+         (sweep (cond ((eq? (collision-mode) 'discrete) (cons (fl x) (fl (num+ x w))))
+                      (fwd? (cons (fl x-start) (fl (num+ x w))))
+                      (else (cons (fl x) (fl (num+ x-start w))))))
+         (along (apply (lambda (col0 row0 cols rows)
+                         (clip (candidate-cells x move w tw (collision-mode)) col0 cols))
+                       (tilemap-solid-extent tm))))
+    (define (finish moved stopped? check?)
+      ;; A move that leaves the box in a solid is not made at all.
+      (let* ((back? (or (not moved) (and check? (overlaps-solid? moved tm))))
+             (moved (if back? (put (put e #:x x x-start) #:y y y) moved))
+             (stopped? (or stopped? back?)))
+        (values (if stopped? (put moved #:vx vel 0) moved) stopped?)))
+    (let loop ((cs (range->list along (if fwd? 1 -1))) (e e) (lifted 0))
+      (if (null? cs)
+          (finish e #f (not (zero? lifted)))
+          (let ((wall (wall-in-column e tm (car cs) fwd? lead0 lead1)))
+            (if wall
+                (let* ((exact (and (exact? x) (exact? w)))
+                       (v (if fwd? (- (car wall) (fl w)) (car wall))))
+                  (finish (put e #:x x (if exact (inexact->exact v) v)) #t
+                          (or (not (zero? lifted)) (not (cdr wall)))))
+                (let-values (((climbed lifted) (climb-column e tm (car cs) fwd? lead0 sweep lifted)))
+                  (if climbed
+                      (loop (cdr cs) climbed lifted)
+                      (finish #f #t #f)))))))))
+
+(define (shaped-y e tm h)
+  "(values entity stopped?) for the y step (§4, §9, §12)."
+  (let* ((th (tilemap-tile-height tm))
+         (y (num e #:y)) (hh (num e #:height))
+         (vel (num e #:vy)) (move (share vel h)) (fwd? (> vel 0))
+         (may-land? (and fwd? (not (flag e #:drop-through?))))
+         (feet-before (fl (num+ (num- y move) hh))) (head-before (fl (num- y move)))
+         (feet (fl (num+ y hh))) (head (fl y))
+         (span (span-of e))
+         (rows (apply (lambda (col0 row0 cols rows)
+                        (clip (candidate-cells y move hh th (collision-mode)) row0 rows))
+                      (tilemap-solid-extent tm)))
+         (cols (box-cols e tm)))
+    (let loop ((rs (range->list (and cols rows) (if fwd? 1 -1))))
+      (if (null? rs)
+          (values e #f)
+          (let* ((r (car rs))
+                 (whole? (any (lambda (c)
+                                (let ((cell (tilemap-cell-shape tm c r)))
+                                  (or (eq? cell 'solid)
+                                      (and may-land? (eq? cell 'one-way) (<= feet-before (* r th))))))
+                              (range->list cols 1))))
+            (if whole?
+                (let ((e (put e #:y y (snap y vel hh th r))))
+                  (values (put e #:vy vel 0) #t))
+                (let ((stop (fold (lambda (c stop)
+                                    (let ((cell (tilemap-cell-shape tm c r)))
+                                      (if (and (vector? cell) (or (not (one-way-shape? cell)) may-land?))
+                                          (let* ((p (place cell c r tm))
+                                                 (ab (p-over p (car span) (cdr span))))
+                                            (if (and ab (p-solid-over? p ab))
+                                                (if fwd?
+                                                    (let ((t (p-surface p ab)))
+                                                      (if (and (<= feet-before t) (< t feet)
+                                                               (or (not stop) (< t stop)))
+                                                          t stop))
+                                                    (let ((u (p-underside p ab)))
+                                                      (if (and (>= head-before u) (> u head)
+                                                               (or (not stop) (> u stop)))
+                                                          u stop)))
+                                                stop))
+                                          stop)))
+                                  #f (range->list cols 1))))
+                  (if stop
+                      (let ((e (put e #:y y (exact-if (box-exact? e) (if fwd? (- stop (fl hh)) stop)))))
+                        (values (put e #:vy vel 0) #t))
+                      (loop (cdr rs))))))))))
+
+(define (snap-down e tm h)
+  "A body that stood on the ground and walks on follows it down a ramp (§12):
+(values entity snapped?)."
+  (let* ((th (tilemap-tile-height tm))
+         (reach (* (abs (fl (share (num e #:vx) h))) (tilemap-steepest-ramp tm)))
+         (y (num e #:y)) (hh (num e #:height))
+         (feet (fl (num+ y hh))) (lowest (+ feet reach))
+         (span (span-of e))
+         (drop? (flag e #:drop-through?)))
+    (if (not (and (flag e #:gravity?) (flag e #:on-ground?) (> reach 0)))
+        (values e #f)
+        (let* ((rows (apply (lambda (col0 row0 cols rows)
+                              (clip (cons (cell-of (num+ y hh) th) (cell-of lowest th)) row0 rows))
+                            (tilemap-solid-extent tm)))
+               (cols (box-cols e tm))
+               (ground
+                (let loop ((rs (range->list (and cols rows) 1)))
+                  (and (pair? rs)
+                       (or (fold (lambda (c found)
+                                   (let* ((r (car rs))
+                                          (cell (tilemap-cell-shape tm c r))
+                                          (top (cond ((or (eq? cell 'solid) (and (eq? cell 'one-way) (not drop?)))
+                                                      (* (fl r) th))
+                                                     ((and (vector? cell) (not (and (one-way-shape? cell) drop?)))
+                                                      (let* ((p (place cell c r tm))
+                                                             (ab (p-over p (car span) (cdr span))))
+                                                        (and ab (p-solid-over? p ab) (p-surface p ab))))
+                                                     (else #f))))
+                                     (if (and top (<= feet top) (<= top lowest) (or (not found) (< top found)))
+                                         top found)))
+                                 #f (range->list cols 1))
+                           (loop (cdr rs)))))))
+          (if ground
+              (let ((e (put e #:y y (exact-if (box-exact? e) (- ground (fl hh))))))
+                (values (put e #:vy (num e #:vy) 0) #t))
+              (values e #f))))))
 
 (define-step (resolve-tile-collisions-x e scene dt)
   "Moving along x into solid cells (of the rows the box spans): snap flush
 against the first one, vx = 0."
   (tiles-x e scene #f #f))
 
-(define (tiles-x e scene h gather?)
+(define* (tiles-x e scene h gather? #:optional carried?)
   (let ((tm (scene-tiles scene)))
     (cond ((skips? e 'tile-collisions-x) e)
           ((or (not tm) (zero? (num e #:vx))) (put-blocked e '(left right) '() gather?))
           (else
-           (let-values (((moved stopped?)
-                         (apply (lambda (col0 row0 cols rows)
-                                  (resolve-axis e h #:x #:vx #:width #:y #:height
-                                                (tilemap-tile-width tm) (tilemap-tile-height tm)
-                                                col0 cols row0 rows
-                                                (lambda (col row) (tilemap-cell-solid? tm col row))))
-                                (tilemap-solid-extent tm))))
+           (let-values (((moved stopped?) (shaped-x e tm h)))
              (put-blocked moved '(left right)
                           (if stopped? (list (if (> (num e #:vx) 0) 'right 'left)) '())
                           gather?))))))
@@ -312,34 +580,23 @@ against the first one, vx = 0."
   "The same along y, in the columns the box spans; vy = 0."
   (tiles-y e scene #f #f))
 
-(define (tiles-y e scene h gather?)
+(define* (tiles-y e scene h gather? #:optional carried?)
   (let ((tm (scene-tiles scene)))
     (cond
      ((skips? e 'tile-collisions-y) e)
      ((or (not tm) (zero? (num e #:vy))) (put-blocked e '(up down) '() gather?))
      (else
-      ;; A one-way cell (§9) stops a body falling onto it whose feet were
-      ;; at or above its top when this move began.
-      (let* ((th (tilemap-tile-height tm))
-             (may-land? (and (> (num e #:vy) 0) (not (flag e #:drop-through?))))
-             (feet-before (num+ (num- (num e #:y) (share (num e #:vy) h)) (num e #:height))))
-        (let-values (((moved stopped?)
-                      (apply (lambda (col0 row0 cols rows)
-                               (resolve-axis e h #:y #:vy #:height #:x #:width
-                                             th (tilemap-tile-width tm)
-                                             row0 rows col0 cols
-                                             (lambda (row col)
-                                               (or (tilemap-cell-solid? tm col row)
-                                                   (and may-land? (tilemap-cell-one-way? tm col row)
-                                                        (<= feet-before (* row th)))))))
-                             (tilemap-solid-extent tm))))
-          (put-blocked moved '(up down)
-                       (if stopped? (list (if (> (num e #:vy) 0) 'down 'up)) '())
-                       gather?)))))))
+      (let*-values (((moved stopped?) (shaped-y e tm h))
+                    ((moved stopped?) (if (or stopped? (not (> (num e #:vy) 0)) carried?)
+                                          (values moved stopped?)
+                                          (snap-down moved tm h))))
+        (put-blocked moved '(up down)
+                     (if stopped? (list (if (> (num e #:vy) 0) 'down 'up)) '())
+                     gather?))))))
 
 ;;; ---------------------------------------------------------------- ground (§4)
 
-(define (tile-supports? e tm)
+(define (whole-cell-supports? e tm)
   "A solid cell in the row just under the box (row ⌊(y+h)/th⌋), in any of
 the columns it spans; or a one-way cell there (§9), for a body not rising,
 not dropping through, its feet less than *one-way-footing* into the cell."
@@ -353,10 +610,34 @@ not dropping through, its feet less than *one-way-footing* into the cell."
                        (span (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm))
                                    col0 cols)))
                   (and (clip (cons row row) row0 rows)
-                       (any (lambda (col) (or (tilemap-cell-solid? tm col row)
-                                              (and on-top? (tilemap-cell-one-way? tm col row))))
+                       (any (lambda (col) (let ((cell (tilemap-cell-shape tm col row)))
+                                            (or (eq? cell 'solid) (and on-top? (eq? cell 'one-way)))))
                             (range->list span 1)))))
               (tilemap-solid-extent tm))))
+
+(define (shape-supports? e tm)
+  "A shape in the row under the feet whose surface they are on or below,
+above its underside; a one-way shape only within *one-way-footing* of its
+surface, for a body not rising nor dropping through (§12)."
+  (let* ((feet (num+ (num e #:y) (num e #:height)))
+         (row (cell-of feet (tilemap-tile-height tm)))
+         (f (fl feet))
+         (span (span-of e))
+         (may-stand? (and (>= (num e #:vy) 0) (not (flag e #:drop-through?)))))
+    (any (lambda (c)
+           (let ((cell (tilemap-cell-shape tm c row)))
+             (and (vector? cell)
+                  (or (not (one-way-shape? cell)) may-stand?)
+                  (let* ((p (place cell c row tm))
+                         (ab (p-over p (car span) (cdr span))))
+                    (and ab (p-solid-over? p ab)
+                         (let ((top (p-surface p ab)))
+                           (and (<= top f) (< f (p-underside p ab))
+                                (or (not (one-way-shape? cell)) (< (- f top) *one-way-footing*)))))))))
+         (range->list (box-cols e tm) 1))))
+
+(define (tile-supports? e tm)
+  (and tm (or (whole-cell-supports? e tm) (shape-supports? e tm))))
 
 (define (entity-supports? e o)
   "O holds E up: solid, not a ghost, overlapping horizontally, its top
@@ -383,7 +664,7 @@ within the tolerance of E's feet, moving at nearly E's vertical speed."
   (let ((feet (num+ (num e #:y) (num e #:height))))
     (and tm
          (integer? (/ (inexact->exact feet) (tilemap-tile-height tm)))   ; fmod = 0, exactly
-         (tile-supports? e tm))))
+         (whole-cell-supports? e tm))))   ; whole cells only (§12)
 
 (define (rests-on? e o)
   (and (flag o #:solid?)
@@ -647,9 +928,11 @@ Not their speeds: push-apart zeroes a rider's vy each frame, whatever C's."
 velocity D, its own velocity untouched: (entity . stopped-by-a-cell?)."
   (if (zero? d)
       (cons e #f)
+      ;; Both coordinates: a rider carried along x onto a ramp climbs it (§12).
       (let* ((pos (num e pos-key))
-             (moved (resolve (entity-set (entity-set e pos-key (num+ pos d)) vel-key d) scene #f #f)))
-        (cons (put e pos-key pos (num moved pos-key)) (zero? (num moved vel-key))))))
+             (moved (resolve (entity-set (entity-set e pos-key (num+ pos d)) vel-key d) scene #f #f #t))
+             (e (put e #:x (num e #:x) (num moved #:x))))
+        (cons (put e #:y (num e #:y) (num moved #:y)) (zero? (num moved vel-key))))))
 
 (define (carry-one e scene d)
   (let* ((e (car (carry-along e scene (car d) #:x #:vx tiles-x)))
@@ -686,19 +969,11 @@ overlaps: the bodies push-apart is about to push out of its way."
     (filter-map (lambda (e i) (and (crushable? e) (any (lambda (p) (overlaps? (box e) p)) pushers) i))
                 entities (iota (length entities)))))
 
-(define (overlaps-solid-cell? e tm)
-  (apply (lambda (col0 row0 cols rows)
-           (let ((cs (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm)) col0 cols))
-                 (rs (clip (cells-of (num e #:y) (num e #:height) (tilemap-tile-height tm)) row0 rows)))
-             (any (lambda (r) (any (lambda (c) (tilemap-cell-solid? tm c r)) (range->list cs 1)))
-                  (range->list (and cs rs) 1))))
-         (tilemap-solid-extent tm)))
-
 (define (crush-in-way entities slots tm)
   "After push-apart: the pushed SLOTS now overlapping a solid cell are crushed."
   (if (or (not tm) (null? slots))
       entities
-      (same-or (map (lambda (e i) (if (and (memv i slots) (overlaps-solid-cell? e tm)) (crush e) e))
+      (same-or (map (lambda (e i) (if (and (memv i slots) (overlaps-solid? e tm)) (crush e) e))
                     entities (iota (length entities)))
                entities)))
 

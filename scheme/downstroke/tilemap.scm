@@ -4,7 +4,7 @@
   #:re-export (make-tilemap tilemap? tilemap-width tilemap-height
                tilemap-tile-width tilemap-tile-height tilemap-cell-solid?
                tilemap-cell-one-way? tilemap-set-tile
-               tilemap-solid-extent
+               tilemap-solid-extent tilemap-cell-shape tilemap-steepest-ramp
                tilemap-objects tilemap-gid
                tilemap-properties tilemap-layers tilemap-tilesets
                tilemap-warnings)
