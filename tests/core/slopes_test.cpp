@@ -139,4 +139,192 @@ TEST_CASE("over the crest and down the other side: on the ground every frame, ne
     CHECK_EXACT(w.body().y, 64);
 }
 
+TEST_CASE("walking left up and down the same hill mirrors it") {
+    Walker w(kHill45, walker(262, 64));
+    for (int f = 0; f < 70; ++f) {
+        const double x_before = w.body().x.v;
+        w.step(-3);
+        CHECK_EXACT(w.body().x, x_before - 3);
+        CHECK_EXACT(w.body().y, hill45_feet(w.body().x.v) - 16);
+        CHECK(w.body().on_ground);
+    }
+    CHECK_EXACT(w.body().x, 52);
+}
+
+// A 1:2 ramp over two tiles: from the floor (64) at x = 64 up to 48 at x = 96.
+const std::vector<std::string> kRamp12 = {
+    "............",
+    "............",
+    "............",
+    "....ab######",
+    "############",
+};
+double ramp12_feet(double x) { return std::clamp(64 - (x + 8 - 64) / 2, 48.0, 64.0); }
+
+TEST_CASE("a 1:2 ramp moves y by vx/2: exact with an even vx") {
+    Walker w(kRamp12, walker(40, 48));
+    for (int f = 0; f < 40; ++f) {
+        w.step(2);
+        CHECK_EXACT(w.body().y, ramp12_feet(w.body().x.v) - 16);
+        CHECK(w.body().on_ground);
+    }
+    CHECK_EXACT(w.body().x, 120);
+    CHECK_EXACT(w.body().y, 32);
+}
+
+TEST_CASE("a 1:2 ramp with an odd vx stands at half pixels, as flonums from the first") {
+    Walker w(kRamp12, walker(40, 48));
+    bool halves = false;
+    for (int f = 0; f < 30; ++f) {
+        w.step(3);
+        CHECK(w.body().y.v == ramp12_feet(w.body().x.v) - 16);
+        if (w.body().y.v != std::floor(w.body().y.v)) halves = true;
+        if (halves) CHECK_FALSE(w.body().y.exact);
+        CHECK(w.body().on_ground);
+    }
+    CHECK(halves);
+    CHECK_FLONUM(w.body().y, 32);  // on the flat top, still a flonum
+}
+
+TEST_CASE("walking down a 1:2 ramp to the left: on the ground every frame") {
+    Walker w(kRamp12, walker(110, 32));
+    for (int f = 0; f < 30; ++f) {
+        w.step(-2);
+        CHECK_EXACT(w.body().y, ramp12_feet(w.body().x.v) - 16);
+        CHECK(w.body().on_ground);
+    }
+    CHECK_EXACT(w.body().y, 48);
+}
+
+TEST_CASE("two ramps joined: 45° then 1:2 then flat, no bump at either join") {
+    // 45° from (32, 80) to (48, 64), then 1:2 from (48, 64) to (80, 48), then flat 48.
+    Walker w({"........",
+              "........",
+              "........",
+              "...ab###",
+              "../#####",
+              "########"},
+             walker(8, 64));
+    auto surface = [](double x) {
+        if (x <= 32) return 80.0;
+        if (x <= 48) return 80 - (x - 32);
+        if (x <= 80) return 64 - (x - 48) / 2;
+        return 48.0;
+    };
+    for (int f = 0; f < 40; ++f) {
+        w.step(2);
+        const double x = w.body().x.v;
+        CHECK_EXACT(w.body().y, surface(x + 8) - 16);
+        CHECK(w.body().on_ground);
+    }
+}
+
+TEST_CASE("a body falling onto a ramp at any speed lands on its surface, swept") {
+    for (double vy : {1.0, 7.0, 16.0, 33.0, 100.0, 500.0}) {
+        for (double x : {84.0, 90.0, 100.0, 200.0}) {
+            ds::TileGrid g = shaped_grid(kHill45);
+            Body b = box(x, -600, 8, 16);
+            b.gravity = true;
+            b.vy = I(vy);
+            for (int f = 0; f < 700 && !b.on_ground; ++f) {
+                ds::World world;
+                world.bodies = {b};
+                world.grid = &g;
+                ds::Frame frame;
+                frame.step(world, ds::FrameOptions{});
+                b = world.bodies[0];
+                if (b.vy.v > vy) b.vy = I(vy);  // a steady fall
+            }
+            CAPTURE(vy);
+            CAPTURE(x);
+            CHECK(b.on_ground);
+            CHECK_EXACT(b.y, hill45_feet(x) - 16);
+        }
+    }
+}
+
+TEST_CASE("a jump into a ceiling ramp stops with the head on its underside") {
+    // 'v' at (2, 1): its underside y = 16 + (x − 32) over x 32–48.
+    ds::TileGrid g = shaped_grid({"....", "..v.", "....", "####"});
+    Body b = box(36, 40, 8, 8);  // head at 40, over x 36–44: lowest underside at x 44 → 28
+    b.vy = I(-20);
+    b.y = I(20);  // after the move
+    CHECK(ds::resolve_tile_collisions_y(b, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(b.y, 28);
+    CHECK_EXACT(b.vy, 0);
+}
+
+TEST_CASE("a body moving sideways into a ramp below its slant is stopped as by a wall") {
+    // '/' at (2, 1) over x 32–48, y 16–32; the body's feet below its base.
+    ds::TileGrid g = shaped_grid({"....", "../.", "....", "####"});
+    Body b = box(26, 20, 8, 16);  // after moving right by 4: spans y 20–36
+    b.vx = I(4);
+    CHECK(ds::resolve_tile_collisions_x(b, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(b.x, 24);
+    CHECK_EXACT(b.y, 20);
+    CHECK_EXACT(b.vx, 0);
+}
+
+TEST_CASE("the tall side of a ramp is a wall, its slant is not") {
+    ds::TileGrid g = shaped_grid({"....", "../.", "####"});
+    // Moving left into the '/' tile's right side (x 48), feet on the floor (32).
+    Body b = box(46, 16, 8, 16);
+    b.vx = I(-4);
+    CHECK(ds::resolve_tile_collisions_x(b, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(b.x, 48);
+    // Moving right into its slant from the floor: lifted onto it.
+    Body c = box(28, 16, 8, 16);  // corner at 36: top 32 − (36 − 32) = 28
+    c.vx = I(4);
+    ds::resolve_tile_collisions_x(c, &g, ds::CollisionMode::Swept);
+    CHECK_EXACT(c.x, 28);
+    CHECK_EXACT(c.y, 12);
+    CHECK_EXACT(c.vx, 4);
+}
+
+TEST_CASE("part-tile boxes: a half-height tile is a low wall and a floor, a ledge is a ceiling") {
+    ds::TileGrid g = shaped_grid({"....", "....", "..-.", "..__", "####"});
+    // Walking right into the half-height box (x 32, top 56): a wall.
+    Body w = box(26, 48, 8, 16);
+    w.vx = I(4);
+    CHECK(ds::resolve_tile_collisions_x(w, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(w.x, 24);
+    // Falling onto it lands at its top, 56.
+    Body f = box(36, 50, 8, 16);
+    f.vy = I(10);
+    CHECK(ds::resolve_tile_collisions_y(f, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(f.y, 40);
+    f.gravity = true;
+    CHECK(ds::tile_supports(f, g));
+    // Jumping into the 4 px ledge above (y 32–36) from below: head at 36.
+    Body j = box(36, 30, 8, 8);
+    j.vy = I(-8);
+    CHECK(ds::resolve_tile_collisions_y(j, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(j.y, 36);
+}
+
+TEST_CASE("a one-way ramp is walked up, and jumped through from below") {
+    Walker w({"........", "........", "..o#####", "########"}, walker(0, 32));
+    // Grid: 'o' at (2, 2) from (32, 48) up to (48, 32); '#' row 2 from x 48 is whole solid.
+    for (int f = 0; f < 10; ++f) w.step(2);
+    CHECK_EXACT(w.body().x, 20);
+    CHECK_EXACT(w.body().y, 32 - 16 + 16 - std::min(16.0, std::max(0.0, 20 + 8 - 32.0)));
+    CHECK(w.body().on_ground);
+    // A body rising through it from below is not stopped.
+    ds::TileGrid g = shaped_grid({"........", "........", "..o.....", "........"});
+    Body j = box(36, 30, 8, 8);
+    j.vy = I(-12);
+    ds::resolve_tile_collisions_y(j, &g, ds::CollisionMode::Swept);
+    CHECK_EXACT(j.y, 30);
+    CHECK_EXACT(j.vy, -12);
+}
+
+TEST_CASE("a body walking off a ramp's top over a cliff falls, it is not snapped down") {
+    Walker w({"..........", "..........", "...../....", "..../#....", "##########"}, walker(40, 48));
+    // Up the ramp (x 64–96, top 32 at x 96), then over its edge: the floor
+    // (64) is 32 px below, beyond |vx| × 1, so the body falls from there.
+    for (int f = 0; f < 30; ++f) w.step(2);
+    CHECK_EXACT(w.body().x, 100);
+    CHECK_FALSE(w.body().on_ground);
+}
+
 }  // TEST_SUITE
