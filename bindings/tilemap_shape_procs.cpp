@@ -55,13 +55,13 @@ SCM tilemap_steepest_ramp(SCM m) {
 
 void register_tilemap_shape_procedures() {
     define_procedure<3, 0, 0, tilemap_cell_shape>("tilemap-cell-shape",
-        "(tilemap-cell-shape tm col row): the cell's solid part (semantics §12): #f for none, "
+        "(tilemap-cell-shape tm col row): the cell's solid part: #f for none, "
         "'solid or 'one-way for the whole cell, or a shape #(x0 y0 x1 y1 cut ax ay bx by one-way?) "
         "in tile px: the box [x0, x1) x [y0, y1), cut 'box, or 'floor (what lies below the line "
         "through (ax, ay) and (bx, by)) or 'ceiling (what lies above it).");
     define_procedure<1, 0, 0, tilemap_steepest_ramp>("tilemap-steepest-ramp",
         "(tilemap-steepest-ramp tm): the greatest |dy/dx| among the ramps the map's cells have had, "
-        "as a flonum (0.0 for none): a walking body snaps down by at most |vx| times it (semantics §12).");
+        "as a flonum (0.0 for none): a walking body snaps down a ramp by at most |vx| times it.");
 }
 
 }  // namespace ds::guile

@@ -1,5 +1,6 @@
 #include "tilemap_type.hpp"
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -42,6 +43,62 @@ bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f
     if (!scm_is_null(p)) {
         fail_arg(f, what, list, "a list of gids");
         return false;
+    }
+    return true;
+}
+
+// A finite real number.
+bool finite_real(SCM v, double& out) {
+    if (!scm_is_real(v)) return false;
+    out = scm_to_double(v);
+    return std::isfinite(out);
+}
+
+// One shape of make-tilemap's `shapes`: (rect x y w h) or (polygon (x . y) …),
+// in tile px.
+bool shape_spec(SCM spec, MapObject& o) {
+    static SCM rect = scm_permanent_object(scm_from_utf8_symbol("rect"));
+    static SCM polygon = scm_permanent_object(scm_from_utf8_symbol("polygon"));
+    if (!scm_is_pair(spec) || scm_ilength(spec) < 1) return false;
+    SCM rest = SCM_CDR(spec);
+    if (scm_is_eq(SCM_CAR(spec), rect)) {
+        double v[4];
+        for (double& d : v) {
+            if (!scm_is_pair(rest) || !finite_real(SCM_CAR(rest), d)) return false;
+            rest = SCM_CDR(rest);
+        }
+        o.shape = ObjectShape::Rectangle;
+        o.x = v[0], o.y = v[1], o.width = v[2], o.height = v[3];
+        return scm_is_null(rest);
+    }
+    if (!scm_is_eq(SCM_CAR(spec), polygon)) return false;
+    o.shape = ObjectShape::Polygon;
+    for (; scm_is_pair(rest); rest = SCM_CDR(rest)) {
+        SCM p = SCM_CAR(rest);
+        ObjectPoint pt;
+        if (!scm_is_pair(p) || !finite_real(SCM_CAR(p), pt.x) || !finite_real(SCM_CDR(p), pt.y)) return false;
+        o.points.push_back(pt);
+    }
+    return scm_is_null(rest);
+}
+
+// make-tilemap's `shapes`: a proper list of (gid . shape).
+bool shape_list(SCM list, std::vector<GidShape>& out, Failure& f) {
+    if (scm_ilength(list) < 0) {  // improper or circular
+        fail_arg(f, "shapes", list, "a list of (gid . shape)");
+        return false;
+    }
+    for (SCM p = list; scm_is_pair(p); p = SCM_CDR(p)) {
+        SCM item = SCM_CAR(p);
+        GidShape s;
+        if (!scm_is_pair(item) || !scm_is_unsigned_integer(SCM_CAR(item), 1, kGidMask) ||
+            scm_ilength(SCM_CDR(item)) < 0 || !shape_spec(SCM_CDR(item), s.object)) {
+            fail(f, "wrong-type-arg", scm_list_1(item),
+                 "shapes: expected (gid . (rect x y w h)) or (gid . (polygon (x . y) ...)) with finite numbers, got ~S");
+            return false;
+        }
+        s.gid = scm_to_uint32(SCM_CAR(item));
+        out.push_back(std::move(s));
     }
     return true;
 }
@@ -111,12 +168,14 @@ bool positive_int(SCM v, const char* what, int& out, Failure& f) {
     return from_scm(v, out, what, f, 1, 1 << 24, "a positive exact integer");
 }
 
-SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids, SCM one_way_gids) {
+SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids, SCM one_way_gids,
+                 SCM shapes) {
     Failure f{"make-tilemap"};
     SCM result = SCM_BOOL_F;
     {
         int w = 0, h = 0, tw = 0, th = 0;
         std::vector<uint32_t> gids, solid, one_way;
+        std::vector<GidShape> gid_shapes;
         std::unique_ptr<MapHandle> handle;
         const bool sizes = positive_int(width, "width", w, f) && positive_int(height, "height", h, f) &&
                            positive_int(tile_w, "tile-width", tw, f) && positive_int(tile_h, "tile-height", th, f);
@@ -141,9 +200,10 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
                 }
                 if (!ok || !gid_list(solid_gids, solid, "solid-gids", f)) return;
                 if (!SCM_UNBNDP(one_way_gids) && !gid_list(one_way_gids, one_way, "one-way-gids", f)) return;
+                if (!SCM_UNBNDP(shapes) && !shape_list(shapes, gid_shapes, f)) return;
                 handle = std::make_unique<MapHandle>();
                 handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid), kMaxMapCells,
-                                               std::move(one_way));
+                                               std::move(one_way), std::move(gid_shapes));
                 handle->grid = handle->map.solid_grid();
             });
         if (handle) result = wrap(std::move(handle));
@@ -172,18 +232,25 @@ void check_cell(SCM col, SCM row, Failure& f) {
         }
 }
 
+// Per cell, as the grid holds it: a shaped cell is solid (or one-way) in part.
 SCM tilemap_cell_solid_p(SCM m, SCM col, SCM row) {
     Failure f;
     if (!check_map(m, "tilemap-cell-solid?", f)) raise(f);
     check_cell(col, row, f);
-    return scm_from_bool(tilemap_handle(m).grid.solid(scm_to_int64(col), scm_to_int64(row)));
+    const TileGrid& g = tilemap_handle(m).grid;
+    const int64_t c = scm_to_int64(col), r = scm_to_int64(row);
+    const CellShape* s = g.shape(c, r);
+    return scm_from_bool(g.solid(c, r) || (s && !s->one_way));
 }
 
 SCM tilemap_cell_one_way_p(SCM m, SCM col, SCM row) {
     Failure f;
     if (!check_map(m, "tilemap-cell-one-way?", f)) raise(f);
     check_cell(col, row, f);
-    return scm_from_bool(tilemap_handle(m).grid.one_way(scm_to_int64(col), scm_to_int64(row)));
+    const TileGrid& g = tilemap_handle(m).grid;
+    const int64_t c = scm_to_int64(col), r = scm_to_int64(row);
+    const CellShape* s = g.shape(c, r);
+    return scm_from_bool(g.one_way(c, r) || (s && s->one_way));
 }
 
 // A new map with one cell changed; the old map is untouched (scenes are
@@ -292,17 +359,20 @@ void register_tilemap_procedures() {
     define_procedure<6, 0, 0, load_tilemap>("%load-tilemap",
         WrapperDoc{"(path solid-gids max-cells max-bytes strict? project)", "load-tilemap", "(downstroke tilemap)"});
     // Exported as they are (re-exported by (downstroke tilemap)): documented here.
-    define_procedure<6, 1, 0, make_tilemap>("make-tilemap",
-        "(make-tilemap width height tile-width tile-height cells solid-gids [one-way-gids]): a map "
-        "made in memory; cells is a vector (or list) of gids, row-major; one-way-gids are one-way "
-        "platforms (solid from above only).");
+    define_procedure<6, 2, 0, make_tilemap>("make-tilemap",
+        "(make-tilemap width height tile-width tile-height cells solid-gids [one-way-gids shapes]): a "
+        "map made in memory; cells is a vector (or list) of gids, row-major, flip bits allowed; "
+        "one-way-gids are one-way platforms (solid from above only); shapes gives gids a collision "
+        "shape in tile px, as a list of (gid . (rect x y w h)) or (gid . (polygon (x . y) ...)), "
+        "read as Tiled's collision editor's (a shaped gid in one-way-gids is a one-way shape).");
     define_procedure<1, 0, 0, tilemap_p>("tilemap?", "(tilemap? obj): whether obj is a tilemap.");
     define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "(tilemap-width tm): the map's width in cells.");
     define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "(tilemap-height tm): the map's height in cells.");
     define_procedure<1, 0, 0, tilemap_tile_width>("tilemap-tile-width", "(tilemap-tile-width tm): the width of one tile in px.");
     define_procedure<1, 0, 0, tilemap_tile_height>("tilemap-tile-height", "(tilemap-tile-height tm): the height of one tile in px.");
     define_procedure<3, 0, 0, tilemap_cell_solid_p>("tilemap-cell-solid?",
-        "(tilemap-cell-solid? tm col row): whether that cell blocks bodies.");
+        "(tilemap-cell-solid? tm col row): whether that cell blocks bodies, wholly or in part (a "
+        "solid shape: tilemap-cell-shape tells which).");
     define_procedure<4, 1, 0, tilemap_set_tile>("tilemap-set-tile",
         "(tilemap-set-tile tm col row gid [layer]): a new map whose cell (col, row) of tile layer "
         "number layer (0) holds gid (0 clears it), solidity and all; tm is unchanged.");

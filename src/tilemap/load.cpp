@@ -1,5 +1,6 @@
 // The public entry points of loading a map, and the dispatch that sends each
 // file (map, tileset, template) to the reader its content calls for.
+#include "tile_shapes.hpp"
 #include "map_build.hpp"
 #include "project.hpp"
 #include "readers.hpp"
@@ -16,11 +17,28 @@ Syntax sniff_syntax(std::string_view text) {
                                                                                  : Syntax::Xml;
 }
 
+// A collision shape that tries to be one and is not (semantics §12) is the
+// whole cell, as before shapes were read, and never silently: a warning
+// names the file, the tileset, the tile and what is wrong.
+void warn_bad_shapes(Tilemap& map) {
+    for (const Tileset& ts : map.tilesets)
+        for (const TileInfo& t : ts.tiles) {
+            if (!t.has_collision_shapes) continue;
+            const TileSolidPart part = tile_solid_part(t.objects, ts.tile_width, ts.tile_height, 0);
+            if (part.problem.empty()) continue;
+            map.warnings.push_back(map.path + ": tileset '" + ts.name + "'" +
+                                   (ts.source.empty() ? "" : " (" + ts.source + ")") + ", tile " +
+                                   std::to_string(t.id) + ": " + part.problem +
+                                   "; its cells are solid whole");
+        }
+}
+
 Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
     const Where file{path, 0, ""};
     Tilemap map = sniff_syntax(text) == Syntax::Json ? read_json_map(text, file, s)
                                                      : read_tmx_map(text, file, s);
     inherit_tile_classes(map);
+    warn_bad_shapes(map);
     return map;
 }
 

@@ -1,5 +1,7 @@
 #include "tilemap.hpp"
 
+#include "tile_shapes.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <limits>
@@ -114,13 +116,8 @@ bool Tilemap::gid_solid(uint32_t gid) const {
 }
 
 bool Tilemap::cell_solid(int64_t col, int64_t row) const {
-    for (const TileLayer& layer : layers) {
-        if (layer.solidity == LayerSolidity::None) continue;
-        const uint32_t gid = layer.raw_gid(col, row) & kGidMask;
-        if (gid == 0) continue;
-        if (layer.solidity == LayerSolidity::All ? gid_known(gid) : gid_solid(gid)) return true;
-    }
-    return false;
+    const CellPart p = cell_part(col, row);
+    return p.kind == kSolidCell || (p.kind == kShapedCell && !p.shape.one_way);
 }
 
 bool Tilemap::gid_one_way(uint32_t gid) const {
@@ -132,13 +129,101 @@ bool Tilemap::gid_one_way(uint32_t gid) const {
     return ts && ts->tile_one_way(gid - ts->firstgid);
 }
 
-bool Tilemap::cell_one_way(int64_t col, int64_t row) const { return cell_kind(col, row) == kOneWayCell; }
+bool Tilemap::cell_one_way(int64_t col, int64_t row) const {
+    const CellPart p = cell_part(col, row);
+    return p.kind == kOneWayCell || (p.kind == kShapedCell && p.shape.one_way);
+}
 
-uint8_t Tilemap::cell_kind(int64_t col, int64_t row) const {
-    if (cell_solid(col, row)) return kSolidCell;
-    for (const TileLayer& layer : layers)
-        if (layer.solidity == LayerSolidity::FromTiles && gid_one_way(layer.raw_gid(col, row))) return kOneWayCell;
-    return kEmptyCell;
+namespace {
+
+bool listed(const std::vector<uint32_t>& gids, uint32_t gid) {
+    return std::any_of(gids.begin(), gids.end(), [&](uint32_t g) { return (g & kGidMask) == gid; });
+}
+
+bool property_solid(const TileInfo& t) {
+    for (const char* name : {"solid", "collision", "collides"})
+        if (const Property* p = find_property(t.properties, name); p && property_is_true(*p)) return true;
+    return false;
+}
+
+CellPart whole_or_shape(const TileSolidPart& part, bool one_way) {
+    CellPart c;
+    if (part.whole) {
+        c.kind = one_way ? kOneWayCell : kSolidCell;
+    } else {
+        c.kind = kShapedCell;
+        c.shape = part.shape;
+        c.shape.one_way = one_way;
+    }
+    return c;
+}
+
+// Cells of one map over its layers: the rule of Tilemap::cell_part.
+struct Composer {
+    bool solid = false, one_way = false;
+    bool has_solid_shape = false, has_one_way_shape = false;
+    CellShape solid_shape, one_way_shape;
+
+    void add(const CellPart& p) {
+        if (p.kind == kSolidCell) solid = true;
+        if (p.kind == kOneWayCell) one_way = true;
+        if (p.kind != kShapedCell) return;
+        bool& has = p.shape.one_way ? has_one_way_shape : has_solid_shape;
+        CellShape& kept = p.shape.one_way ? one_way_shape : solid_shape;
+        bool& whole = p.shape.one_way ? one_way : solid;
+        if (has && !(kept == p.shape)) whole = true;
+        has = true;
+        kept = p.shape;
+    }
+    CellPart result() const {
+        CellPart c;
+        if (solid) c.kind = kSolidCell;
+        else if (has_solid_shape) c.kind = kShapedCell, c.shape = solid_shape;
+        else if (one_way) c.kind = kOneWayCell;
+        else if (has_one_way_shape) c.kind = kShapedCell, c.shape = one_way_shape;
+        return c;
+    }
+};
+
+}  // namespace
+
+CellPart Tilemap::gid_part(uint32_t raw) const {
+    const uint32_t gid = raw & kGidMask, flips = raw & ~kGidMask;
+    CellPart none;
+    if (gid == 0) return none;
+    const Tileset* ts = tileset_for(gid);
+    if (!known_in(*this, ts, gid)) return none;
+    if (listed(extra_solid_gids, gid)) return {kSolidCell, {}};
+    for (const GidShape& s : extra_shapes)
+        if ((s.gid & kGidMask) == gid)
+            return whole_or_shape(tile_solid_part({s.object}, tile_width, tile_height, flips),
+                                  listed(extra_one_way_gids, gid));
+    const TileInfo* t = ts ? ts->tile(gid - ts->firstgid) : nullptr;
+    if (t && property_solid(*t)) return {kSolidCell, {}};
+    if (t && t->has_collision_shapes) {
+        const bool one_way = ts->tile_one_way(gid - ts->firstgid);
+        // Shapes are in the tileset's tile px: a tileset whose tiles are not
+        // the map's cells keeps the whole cell.
+        if (ts->tile_width != tile_width || ts->tile_height != tile_height) return {one_way ? kOneWayCell : kSolidCell, {}};
+        return whole_or_shape(tile_solid_part(t->objects, tile_width, tile_height, flips), one_way);
+    }
+    if (listed(extra_one_way_gids, gid) || (ts && ts->tile_one_way(gid - ts->firstgid))) return {kOneWayCell, {}};
+    return none;
+}
+
+CellPart Tilemap::cell_part(int64_t col, int64_t row) const {
+    Composer c;
+    for (const TileLayer& layer : layers) {
+        if (layer.solidity == LayerSolidity::None) continue;
+        const uint32_t raw = layer.raw_gid(col, row);
+        if ((raw & kGidMask) == 0) continue;
+        if (layer.solidity == LayerSolidity::All) {
+            if (gid_known(raw)) c.add({kSolidCell, {}});
+            continue;
+        }
+        c.add(gid_part(raw));
+    }
+    return c.result();
 }
 
 bool Tilemap::gid_known(uint32_t gid) const {
@@ -161,8 +246,16 @@ void set_tile(Tilemap& map, TileGrid& grid, size_t layer, int64_t col, int64_t r
                                     " belongs to none of the map's tilesets");
     if (grid.clip_cols({col, col}).empty() || grid.clip_rows({row, row}).empty())
         throw std::out_of_range("set_tile: cell outside the grid");
+    const uint32_t old = layer < map.layers.size() ? map.layers[layer].raw_gid(col, row) : 0;
     map.set_gid(layer, col, row, gid);
-    grid.set_cell(col, row, map.cell_kind(col, row));
+    const CellPart now = map.cell_part(col, row);
+    try {
+        if (now.kind == kShapedCell) grid.set_shape(col, row, now.shape);
+        else grid.set_cell(col, row, now.kind);
+    } catch (...) {  // a grid out of room for shapes: leave both as they were
+        map.set_gid(layer, col, row, old);
+        throw;
+    }
 }
 
 TileGrid Tilemap::solid_grid() const {
@@ -171,47 +264,73 @@ TileGrid Tilemap::solid_grid() const {
     const int64_t cols = b.col1 - b.col0, rows = b.row1 - b.row0;
     if (cols > std::numeric_limits<int>::max() || rows > std::numeric_limits<int>::max())
         throw std::length_error("tilemap: solid grid wider or taller than an int");
-    std::vector<uint8_t> solid(static_cast<size_t>(cols) * static_cast<size_t>(rows), 0);
-    // Layer by layer rather than cell_solid per cell: one pass over each
-    // layer's own cells, with each distinct gid's metadata looked up once.
-    // gid → the cell kind its tile metadata gives, or kUnknownGid.
-    constexpr uint8_t kUnknownGid = 0xFF;
-    std::unordered_map<uint32_t, uint8_t> gid_cache;
+    const size_t n = static_cast<size_t>(cols) * static_cast<size_t>(rows);
+    std::vector<uint8_t> solid(n, 0);
+    // Cells that a shaped tile touched are composed again with cell_part,
+    // which knows every rule; the rest take the fast way below.
+    std::vector<size_t> shaped;
+    // Layer by layer rather than cell_part per cell: one pass over each
+    // layer's own cells, with each distinct raw gid's part looked up once.
+    std::unordered_map<uint32_t, CellPart> gid_cache;
+    constexpr uint8_t kShapeSeen = 0x80;  // marks a cell in `solid` for `shaped`
     for (const TileLayer& l : layers) {
         if (l.solidity == LayerSolidity::None) continue;
         for (int r = 0; r < l.height; ++r) {
             for (int c = 0; c < l.width; ++c) {
-                const uint32_t gid = l.cells[static_cast<size_t>(r) * l.width + c] & kGidMask;
-                if (gid == 0) continue;
-                auto [it, fresh] = gid_cache.try_emplace(gid, kUnknownGid);
-                if (fresh && gid_known(gid))
-                    it->second = gid_solid(gid) ? kSolidCell : gid_one_way(gid) ? kOneWayCell : kEmptyCell;
-                // Unknown gids are never solid, even in a solid layer.
-                const uint8_t kind = it->second == kUnknownGid           ? kEmptyCell
-                                     : l.solidity == LayerSolidity::All ? kSolidCell
-                                                                        : it->second;
+                const uint32_t raw = l.cells[static_cast<size_t>(r) * l.width + c];
+                if ((raw & kGidMask) == 0) continue;
+                uint8_t kind;
+                if (l.solidity == LayerSolidity::All) {
+                    kind = gid_known(raw) ? kSolidCell : kEmptyCell;  // unknown gids are never solid
+                } else {
+                    auto [it, fresh] = gid_cache.try_emplace(raw);
+                    if (fresh) it->second = gid_part(raw);
+                    kind = it->second.kind;
+                }
                 if (kind == kEmptyCell) continue;
                 const int64_t gc = l.origin_col + c - b.col0, gr = l.origin_row + r - b.row0;
-                uint8_t& cell = solid[static_cast<size_t>(gr * cols + gc)];
-                if (cell != kSolidCell) cell = kind;  // a solid layer wins over a one-way one
+                const size_t i = static_cast<size_t>(gr * cols + gc);
+                uint8_t& cell = solid[i];
+                if (kind == kShapedCell) {
+                    if (!(cell & kShapeSeen)) shaped.push_back(i);
+                    cell |= kShapeSeen;
+                } else if ((cell & ~kShapeSeen) != kSolidCell) {
+                    cell = static_cast<uint8_t>((cell & kShapeSeen) | kind);  // a solid layer wins over a one-way one
+                }
             }
         }
     }
-    return TileGrid(static_cast<int>(cols), static_cast<int>(rows), tile_width, tile_height,
-                    std::move(solid), b.col0, b.row0);
+    std::vector<std::pair<size_t, CellPart>> parts;
+    for (const size_t i : shaped) {
+        const CellPart p = cell_part(b.col0 + static_cast<int64_t>(i % static_cast<size_t>(cols)),
+                                     b.row0 + static_cast<int64_t>(i / static_cast<size_t>(cols)));
+        solid[i] = p.kind == kShapedCell ? kEmptyCell : p.kind;
+        if (p.kind == kShapedCell) parts.push_back({i, p});
+    }
+    TileGrid grid(static_cast<int>(cols), static_cast<int>(rows), tile_width, tile_height, std::move(solid),
+                  b.col0, b.row0);
+    for (const auto& [i, p] : parts)
+        grid.set_shape(b.col0 + static_cast<int64_t>(i % static_cast<size_t>(cols)),
+                       b.row0 + static_cast<int64_t>(i / static_cast<size_t>(cols)), p.shape);
+    return grid;
 }
 
 MapError::MapError(const std::string& file, int line, const std::string& message)
     : std::runtime_error(where(file, line) + ": " + message), file_(file), line_(line) {}
 
 Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
-                     std::vector<uint32_t> solid_gids, int64_t max_cells, std::vector<uint32_t> one_way_gids) {
+                     std::vector<uint32_t> solid_gids, int64_t max_cells, std::vector<uint32_t> one_way_gids,
+                     std::vector<GidShape> shapes) {
     if (const std::string p = map_size_problem(width, height, tile_w, tile_h, max_cells); !p.empty())
         throw std::invalid_argument("make_tilemap: " + p);
     if (gids.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
         throw std::invalid_argument("make_tilemap: " + std::to_string(gids.size()) +
                                     " gids for a " + std::to_string(width) + "x" +
                                     std::to_string(height) + " map");
+    for (const GidShape& s : shapes)
+        if (const TileSolidPart p = tile_solid_part({s.object}, tile_w, tile_h, 0); !p.problem.empty())
+            throw std::invalid_argument("make_tilemap: the shape of gid " + std::to_string(s.gid & kGidMask) +
+                                        ": " + p.problem);
     Tilemap map;
     map.width = width;
     map.height = height;
@@ -226,6 +345,7 @@ Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<
     // No tilesets: extra_solid_gids alone decides, exactly as the caller listed.
     map.extra_solid_gids = std::move(solid_gids);
     map.extra_one_way_gids = std::move(one_way_gids);
+    map.extra_shapes = std::move(shapes);
     return map;
 }
 

@@ -181,6 +181,21 @@ struct LayerInfo {
     std::vector<LayerInfo> children;  // Group
 };
 
+// What a gid, or a cell over all its layers, makes of the cell (semantics
+// §7, §9, §12): kEmptyCell, kSolidCell, kOneWayCell, or kShapedCell with
+// `shape` (one-way or not).
+struct CellPart {
+    uint8_t kind = kEmptyCell;
+    CellShape shape;
+};
+
+// A shape given to a gid of a map made in memory (make_tilemap): a
+// rectangle or a polygon in tile px, read as a tile's collision object is.
+struct GidShape {
+    uint32_t gid = 0;
+    MapObject object;
+};
+
 struct Tilemap {
     std::string path;  // empty for maps made in memory
     int width = 0, height = 0;  // in cells (the bounding box of all chunks when infinite)
@@ -199,12 +214,14 @@ struct Tilemap {
     std::vector<std::string> warnings;
     std::vector<uint32_t> extra_solid_gids;  // solid-gids: from the script
     std::vector<uint32_t> extra_one_way_gids;  // one-way-gids: from the script
+    std::vector<GidShape> extra_shapes;  // shapes: from the script (maps made in memory)
 
     // The tileset a gid (flip bits ignored) belongs to: the largest firstgid ≤ gid.
     const Tileset* tileset_for(uint32_t gid) const;
     // Solid by its tileset's metadata or by extra_solid_gids.
     bool gid_solid(uint32_t gid) const;
-    // Solid when any layer makes it so (semantics §7).
+    // Solid, wholly or in part (a solid shape), when any layer makes it so
+    // (semantics §7, §12).
     bool cell_solid(int64_t col, int64_t row) const;
     // A one-way platform by its tileset's metadata or extra_one_way_gids
     // (solid wins, for a gid and for a cell whose layers disagree).
@@ -212,8 +229,17 @@ struct Tilemap {
     bool cell_one_way(int64_t col, int64_t row) const;
     // The physics grid over the bounding box of every layer.
     TileGrid solid_grid() const;
-    // What the grid holds for a cell: kSolidCell, kOneWayCell or kEmptyCell.
-    uint8_t cell_kind(int64_t col, int64_t row) const;
+    // What the grid holds for a cell: kSolidCell, kOneWayCell, kShapedCell
+    // or kEmptyCell.
+    uint8_t cell_kind(int64_t col, int64_t row) const { return cell_part(col, row).kind; }
+    // The same with the shape (semantics §12): over the cell's layers, a
+    // whole solid cell wins, then a solid shape (two different ones: the
+    // whole cell), then a whole one-way cell, then a one-way shape (two
+    // different ones: a whole one-way cell).
+    CellPart cell_part(int64_t col, int64_t row) const;
+    // What one raw gid (flip bits turning its shape) makes of a cell in a
+    // layer whose tiles decide (LayerSolidity::FromTiles).
+    CellPart gid_part(uint32_t raw_gid) const;
     // Whether a gid (flip bits ignored) may stand in a layer: 0, any gid of a
     // map without tilesets (made in memory), else one of a tileset's tiles.
     bool gid_known(uint32_t gid) const;
@@ -280,8 +306,11 @@ Tilemap parse_tilemap(std::string_view text, const std::string& path,
 // row-major (width*height of them), solid exactly where a gid is listed in
 // solid_gids. Sizes are checked as a loaded map's (map_size_problem, with
 // max_cells). Throws std::invalid_argument on a bad size or a size mismatch.
+// `shapes` gives gids a collision shape as a tile's collision object would
+// (semantics §12; flip bits on the cells' gids turn it); a shaped gid also in
+// one_way_gids is a one-way shape.
 Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
                      std::vector<uint32_t> solid_gids, int64_t max_cells = kMaxMapCells,
-                     std::vector<uint32_t> one_way_gids = {});
+                     std::vector<uint32_t> one_way_gids = {}, std::vector<GidShape> shapes = {});
 
 }  // namespace ds

@@ -49,7 +49,10 @@ std::vector<int> solid_cells(const Tilemap& m, int64_t c0, int64_t r0, int cols,
 std::vector<int> grid_cells(const TileGrid& g, int64_t c0, int64_t r0, int cols, int rows) {
     std::vector<int> out;
     for (int64_t r = r0; r < r0 + rows; ++r)
-        for (int64_t c = c0; c < c0 + cols; ++c) out.push_back(g.solid(c, r) ? 1 : 0);
+        for (int64_t c = c0; c < c0 + cols; ++c) {
+            const ds::CellShape* s = g.shape(c, r);
+            out.push_back(g.solid(c, r) || (s && !s->one_way) ? 1 : 0);  // wholly or in part
+        }
     return out;
 }
 
@@ -219,6 +222,12 @@ TEST_CASE("an infinite map: chunks at negative coordinates") {
                                              0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0,  //
                                              0, 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0});
     CHECK(grid_cells(g, -4, -4, 12, 6) == solid_cells(m, -4, -4, 12, 6));
+    // gid 4 (terrain's tile 3) is drawn as the bottom half of the tile: a
+    // part-tile box (semantics §12), not a whole block.
+    REQUIRE(g.shape(6, -4) != nullptr);
+    CHECK(*g.shape(6, -4) == ds::CellShape{0, 8, 16, 16});
+    CHECK(g.shape(7, -4) == g.shape(6, -4));
+    CHECK_FALSE(g.solid(6, -4));
     CHECK_FALSE(g.solid(-5, -2));
     CHECK_FALSE(g.solid(8, -4));
     CHECK_FALSE(g.solid(0, 2));

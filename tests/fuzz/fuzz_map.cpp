@@ -81,7 +81,9 @@ void use(const ds::Tilemap& map) {
             const uint32_t gid = layer.raw_gid(col, row);
             if (const ds::Tileset* ts = map.tileset_for(gid & ds::kGidMask))
                 (void)ts->tile((gid & ds::kGidMask) - ts->firstgid);
-            if (map.cell_solid(col, row) != grid.solid(col, row)) __builtin_trap();  // the grid must say what the map says
+            if (map.cell_kind(col, row) != grid.cell(col, row)) __builtin_trap();  // the grid must say what the map says
+            if (const ds::CellShape* s = grid.shape(col, row); s && !(*s == map.cell_part(col, row).shape))
+                __builtin_trap();
         }
 }
 

@@ -50,13 +50,14 @@
 (test-equal ",apropos tilemap lists the tilemap procedures (downstroke) exports"
   '("(downstroke): load-tilemap" "(downstroke): make-tilemap"
     "(downstroke): scene-tilemap"
-    "(downstroke): tilemap-cell-one-way?" "(downstroke): tilemap-cell-solid?"
+    "(downstroke): tilemap-cell-one-way?" "(downstroke): tilemap-cell-shape"
+    "(downstroke): tilemap-cell-solid?"
     "(downstroke): tilemap-gid" "(downstroke): tilemap-gid-at"
     "(downstroke): tilemap-height" "(downstroke): tilemap-layers"
     "(downstroke): tilemap-objects" "(downstroke): tilemap-properties"
     "(downstroke): tilemap-set-tile" "(downstroke): tilemap-solid-at?"
     "(downstroke): tilemap-solid-cells" "(downstroke): tilemap-solid-extent"
-    "(downstroke): tilemap-tile-height" "(downstroke): tilemap-tile-width"
+    "(downstroke): tilemap-steepest-ramp" "(downstroke): tilemap-tile-height" "(downstroke): tilemap-tile-width"
     "(downstroke): tilemap-tilesets" "(downstroke): tilemap-warnings"
     "(downstroke): tilemap-width" "(downstroke): tilemap?")
   (sort (filter (lambda (line) (string-prefix? "(downstroke):" line))

@@ -45,6 +45,13 @@
 ;;; - Tilemaps (75%): 1–40 × 1–40 cells of 8/16/32 px (sometimes 16×8, 8×16,
 ;;;   32×16, 16×32): arenas (floor, walls, platforms, holes), noise of random
 ;;;   density, empty, nearly full, or pillars; gid 2 sprinkled, never solid.
+;;; - Ramps and part-tile boxes (semantics §12), in about 2 tilemaps in 5 (decided
+;;;   by a stream of their own, so the other scenes are the ones they were): on
+;;;   top of the floors and platforms, under ceilings and sprinkled anywhere,
+;;;   gids 3–12 (shape-gids: 45°, 1:2 and 2:1 ramp pieces, a half-height box, a
+;;;   4 px ledge, a small triangle, a one-way ramp), each with random flip bits
+;;;   (horizontal, vertical: a ceiling ramp, diagonal); tile edits on such maps
+;;;   may put ramps too.
 ;;; - dt: 16, 16.666 or 20 for the whole scene, or varying by frame (10%).
 ;;;
 ;;; Set `scene-gen-invalid?' to #t to put a wrongly typed value (a string
@@ -202,17 +209,69 @@
          (ts (tile-size r)))
     (list cols rows (car ts) (cdr ts) (make-cells r cols rows))))
 
-(define (one-way-gids cols rows) (if (odd? (+ cols rows)) '(2) '()))
+;;; ---------------------------------------------------------------- ramps (§12)
+;;; The shapes of gids 3–12 in a TW × TH tile, as make-tilemap takes them.
+(define (shape-gids tw th)
+  (let ((hw (quotient tw 2)) (hh (quotient th 2)))
+    `((3 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0)))                  ; a whole-tile ramp
+      (4 . (polygon (0 . ,th) (,tw . ,th) (,tw . ,hh)))                ; 1:2, lower
+      (5 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0) (0 . ,hh)))        ; 1:2, upper
+      (6 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0) (,hw . 0)))        ; 2:1, lower
+      (7 . (polygon (,hw . ,th) (,tw . ,th) (,tw . 0)))                ; 2:1, upper
+      (8 . (rect 0 ,hh ,tw ,(- th hh)))                                ; half-height box
+      (9 . (rect 0 0 ,tw ,(min 4 th)))                                 ; a ledge
+      (10 . (polygon (1 . ,(- th 1)) (,hw . ,(- th 1)) (,hw . ,hh)))   ; a small triangle
+      (11 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0)))                 ; one-way ramp
+      (12 . (polygon (0 . ,th) (,tw . ,th) (,tw . ,(- th 1)))))))      ; a very shallow ramp
+
+(define ramp-one-way-gids '(11))
+
+(define (flip-bits r)
+  (+ (if (chance r 1 2) #x80000000 0) (if (chance r 1 5) #x40000000 0) (if (chance r 1 6) #x20000000 0)))
+
+(define (ramp-gid r)
+  (+ (wpick r '((30 . 3) (12 . 4) (12 . 5) (6 . 6) (6 . 7) (8 . 8) (6 . 9) (5 . 10) (10 . 11) (5 . 12)))
+     (flip-bits r)))
+
+;;; In about 2 maps in 5, ramps: on the empty cells just above solid ones (on
+;;; floors and platforms, and pieces of ramps two tiles long), under solid ones,
+;;; and a few anywhere. A stream of its own, salted by the seed: the other maps
+;;; and every draw of the scene stay as they were.
+(define (add-ramps! seed cols rows cells)
+  (let ((r (make-rng seed 7919)))
+    (when (chance r 2 5)
+      (let ((solid? (lambda (c row) (and (< -1 c cols) (< -1 row rows)
+                                         (eqv? 1 (vector-ref cells (+ c (* cols row)))))))
+            (density (pick r '(2 4 6 10))))
+        (do ((row 0 (+ row 1))) ((= row rows))
+          (do ((c 0 (+ c 1))) ((= c cols))
+            (let ((i (+ c (* cols row))))
+              (when (eqv? 0 (vector-ref cells i))
+                (cond ((and (solid? c (+ row 1)) (chance r density 10))
+                       (vector-set! cells i (ramp-gid r)))
+                      ((and (solid? c (- row 1)) (chance r 1 6))
+                       (vector-set! cells i (logior #x40000000 (ramp-gid r))))
+                      ((chance r 1 40)
+                       (vector-set! cells i (ramp-gid r))))))))))))
+
+(define (ramped? spec)
+  (and spec (let ((v (list-ref spec 4)))
+              (let loop ((i 0)) (and (< i (vector-length v))
+                                     (or (> (logand (vector-ref v i) #x0FFFFFFF) 2) (loop (+ i 1))))))))
+
+(define (one-way-gids cols rows)
+  (append (if (odd? (+ cols rows)) '(2) '()) ramp-one-way-gids))
+
+(define (make-map cols rows tw th cells)
+  (make-tilemap cols rows tw th cells '(1) (one-way-gids cols rows) (shape-gids tw th)))
 
 (define (tilemap-spec->tilemap spec)
-  (and spec (apply (lambda (cols rows tw th cells)
-                     (make-tilemap cols rows tw th cells '(1) (one-way-gids cols rows)))
-                   spec)))
+  (and spec (apply make-map spec)))
 
 (define (sparse-tilemap cols rows tw th cells)
   (let ((v (make-vector (* cols rows) 0)))
     (for-each (lambda (c) (vector-set! v (car c) (cdr c))) cells)
-    (make-tilemap cols rows tw th v '(1) (one-way-gids cols rows))))
+    (make-map cols rows tw th v)))
 
 ;;; The non-empty cells of a spec's vector, as ((index . gid) ...).
 (define (spec-cells spec)
@@ -386,6 +445,7 @@
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
+         (spec (begin (when spec (add-ramps! seed (car spec) (cadr spec) (list-ref spec 4))) spec))
          (world-w (if spec (* (list-ref spec 0) (list-ref spec 2)) 600))
          (world-h (if spec (* (list-ref spec 1) (list-ref spec 3)) 400))
          (th (if spec (list-ref spec 3) 16))
@@ -471,7 +531,9 @@
               (let* ((c (cell))
                      (gid (if (tilemap-cell-solid? tilemap (car c) (cdr c))
                               (if (chance r 1 4) 2 0)
-                              (if (chance r 1 3) 2 1))))
+                              (if (chance r 1 3) 2 1)))
+                     ;; On a map with shapes, one edit in three puts a ramp.
+                     (gid (if (and (> (tilemap-steepest-ramp tilemap) 0) (chance r 1 3)) (ramp-gid r) gid)))
                 (loop (- k 1) (cons (list (car c) (cdr c) gid) acc))))))))
 
 ;;; TILEMAP with EDITS ((col row gid) …) applied.

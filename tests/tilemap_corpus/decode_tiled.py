@@ -432,11 +432,14 @@ def external_tileset(map_path, source, firstgid):
 
 
 def tile_solid(tile):
+    """Solid, wholly or by a shape: a true solid/collision/collides property, or
+    collision shapes on a tile that is not one-way (a one-way tile's shapes make
+    a one-way shape, semantics §12)."""
     if tile is None:
         return False
-    if tile["shapes"]:
+    if any(prop_true(find_prop(tile["props"], n)) for n in ("solid", "collision", "collides")):
         return True
-    return any(prop_true(find_prop(tile["props"], n)) for n in ("solid", "collision", "collides"))
+    return bool(tile["shapes"]) and not tile_one_way(tile)
 
 
 def tile_one_way(tile):

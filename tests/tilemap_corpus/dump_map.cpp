@@ -173,7 +173,11 @@ void print_grid(std::ostream& out, const ds::Tilemap& m) {
         out << "  ";
         for (int c = 0; c < g.cols(); ++c) {
             const uint8_t k = g.cell(g.origin_col() + c, g.origin_row() + r);
-            out << (k == ds::kSolidCell ? '#' : k == ds::kOneWayCell ? '=' : '.');
+            // A shaped cell (semantics §12) as its family: solid or one-way.
+            const ds::CellShape* s = g.shape(g.origin_col() + c, g.origin_row() + r);
+            const bool solid = k == ds::kSolidCell || (s && !s->one_way);
+            const bool one_way = k == ds::kOneWayCell || (s && s->one_way);
+            out << (solid ? '#' : one_way ? '=' : '.');
         }
         out << '\n';
     }
