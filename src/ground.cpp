@@ -35,14 +35,14 @@ bool shape_supports(const Body& b, const TileGrid& grid) {
     const shape_math::Span span{b.x.v, (b.x + b.w).v};
     const bool may_stand = b.vy.v >= 0 && !b.drop_through;
     for (int64_t c = cols.first; c <= cols.last; ++c) {
-        if (grid.cell(c, row) != kShapedCell) continue;
-        const CellShape& sh = *grid.shape(c, row);
+        const CellShape* shp = grid.shape(c, row);
+        if (!shp) continue;
+        const CellShape& sh = *shp;
         if (sh.one_way && !may_stand) continue;
         const shape_math::Placed p(sh, c, row, grid);
-        double a, z;
-        if (!p.over(span, a, z) || !p.solid_over(a, z)) continue;
-        const double top = p.surface(a, z);
-        if (top <= feet && feet < p.underside(a, z) && (!sh.one_way || feet - top < kOneWayFooting)) return true;
+        double a, z, top, under;
+        if (!p.over(span, a, z) || !p.extent(a, z, top, under)) continue;
+        if (top <= feet && feet < under && (!sh.one_way || feet - top < kOneWayFooting)) return true;
     }
     return false;
 }

@@ -31,9 +31,9 @@ struct CellRange {
 // cells of `tile` pixels: ⌊pos/tile⌋ … ⌈(pos+size)/tile⌉−1. Touching a cell
 // edge is not overlapping; size ≤ 0 overlaps nothing. Exact positions use
 // integer arithmetic so huge coordinates do not lose cells.
-inline CellRange cells_of(Num pos, Num size, int tile);
+[[gnu::always_inline]] inline CellRange cells_of(Num pos, Num size, int tile);
 // ⌊pos/tile⌋ on its own (the ground probe's row).
-inline int64_t cell_of(Num pos, int tile);
+[[gnu::always_inline]] inline int64_t cell_of(Num pos, int tile);
 
 // A grid revision: drawn from one process-wide counter whenever a grid is
 // made, copied, assigned or edited, so no two states of any grids in the
@@ -169,7 +169,9 @@ inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
 
 }  // namespace cell_math
 
-inline CellRange cells_of(Num pos, Num size, int tile) {
+// Always inlined: the tile steps ask for a few per body, and a call costs
+// more than the arithmetic (measured: 12% of a frame of ramps out of line).
+[[gnu::always_inline]] inline CellRange cells_of(Num pos, Num size, int tile) {
     using namespace cell_math;
     if (!(size.v > 0)) return {};
     if (integral(pos) && integral(size)) {
@@ -183,7 +185,7 @@ inline CellRange cells_of(Num pos, Num size, int tile) {
     return {to_cell(std::floor(pos.v / tile)), to_cell(std::ceil((pos.v + size.v) / tile)) - 1};
 }
 
-inline int64_t cell_of(Num pos, int tile) {
+[[gnu::always_inline]] inline int64_t cell_of(Num pos, int tile) {
     using namespace cell_math;
     if (integral(pos)) {
         const auto p = static_cast<int64_t>(pos.v);

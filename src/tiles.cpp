@@ -56,6 +56,19 @@ bool resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid so
     return false;
 }
 
+// Walks the cells as resolve_axis does and says whether it meets a shaped
+// cell (kind(c, k) > 0) before a cell that would stop the body (< 0).
+template <typename Kind>
+bool meets_shape_first(CellRange along, CellRange across, bool forward, Kind kind) {
+    if (along.empty() || across.empty()) return false;
+    for (int64_t i = 0, n = along.last - along.first + 1; i < n; ++i) {
+        const int64_t c = forward ? along.first + i : along.last - i;
+        for (int64_t k = across.first; k <= across.last; ++k)
+            if (const int v = kind(c, k); v != 0) return v > 0;
+    }
+    return false;
+}
+
 // A contact body's #:blocked (semantics §10): the step owns its axis's
 // sides, set from this call alone, or, in a later sub-frame, added.
 void note_blocked(Body& b, uint8_t axis, uint8_t sides, SubStep s) {
@@ -113,8 +126,10 @@ bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, const XMove& m,
             whole = true;
             return true;
         }
-        if (cell != kShapedCell || g.shape(c, r)->one_way) continue;
-        const Placed p(*g.shape(c, r), c, r, g);
+        if (cell != kShapedCell) continue;
+        const CellShape& sh = *g.shape(c, r);
+        if (sh.one_way) continue;
+        const Placed p(sh, c, r, g);
         if (!enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) continue;
         const double side = m.fwd ? p.left() : p.right();
         if (!found || (m.fwd ? side < wall : side > wall)) wall = side;
@@ -133,22 +148,25 @@ bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
         const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
         const double head = b.y.v, feet = (b.y + b.h).v;
         double new_feet = feet, new_head = head;
-        bool up = false, down = false;
+        bool up = false, down = false, ceilings = false, one_way_below = false;
         for (int64_t r = rows.first; r <= rows.last; ++r) {
-            if (g.cell(c, r) != kShapedCell || !g.shape(c, r)->ramp()) continue;
-            const CellShape& sh = *g.shape(c, r);
+            const CellShape* shp = g.shape(c, r);
+            if (!shp || !shp->ramp()) continue;
+            const CellShape& sh = *shp;
             const Placed p(sh, c, r, g);
-            double a, z;
-            if (!p.over(m.sweep, a, z) || !p.solid_over(a, z)) continue;
+            double a, z, t, under;
+            if (!p.over(m.sweep, a, z) || !p.extent(a, z, t, under)) continue;
             if (sh.cut == Cut::Floor) {
+                if (sh.one_way && !b.drop_through && !enters_from_above(p, m.fwd, m.lead_before, feet))
+                    one_way_below = true;  // a lift may bring the feet above it
                 if (sh.one_way && (b.drop_through || !enters_from_above(p, m.fwd, m.lead_before, feet))) continue;
-                const double t = p.top_over(a, z);
                 if (head < p.box_bottom() && feet > t) {
                     up = true;
                     if (t < new_feet) new_feet = t;
                 }
             } else if (!sh.one_way) {
-                const double u = p.bottom_over(a, z);
+                ceilings = true;
+                const double u = under;
                 if (feet > p.box_top() && head < u) {
                     down = true;
                     if (new_head < u) new_head = u;
@@ -160,6 +178,10 @@ bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
         const bool exact = box_exact(b);
         b.y = up ? exact_if(exact, new_feet - b.h.v) : exact_if(exact, new_head);
         m.lifted = up ? 1 : -1;
+        // Over the same rows, a lift onto the highest of the floor ramps
+        // leaves none to climb; only a ceiling ramp could now push back.
+        const CellRange now = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+        if (up && !ceilings && !one_way_below && now.first == rows.first && now.last == rows.last) return true;
     }
     return false;
 }
@@ -233,13 +255,11 @@ bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
             const CellShape& sh = *g.shape(c, r);
             if (sh.one_way && !may_land) continue;
             const Placed p(sh, c, r, g);
-            double a, z;
-            if (!p.over(span, a, z) || !p.solid_over(a, z)) continue;
+            double a, z, top, under;
+            if (!p.over(span, a, z) || !p.extent(a, z, top, under)) continue;
             if (fwd) {
-                const double top = p.surface(a, z);
                 if (feet_before <= top && top < feet && (!found || top < stop)) stop = top, found = true;
             } else {
-                const double under = p.underside(a, z);
                 if (head_before >= under && under > head && (!found || under > stop)) stop = under, found = true;
             }
         }
@@ -274,9 +294,8 @@ bool snap_down(Body& b, const TileGrid& g, SubStep s) {
             } else if (cell == kShapedCell) {
                 const CellShape& sh = *g.shape(c, r);
                 const Placed p(sh, c, r, g);
-                double a, z;
-                if ((sh.one_way && b.drop_through) || !p.over(span, a, z) || !p.solid_over(a, z)) continue;
-                top = p.surface(a, z);
+                double a, z, under;
+                if ((sh.one_way && b.drop_through) || !p.over(span, a, z) || !p.extent(a, z, top, under)) continue;
             } else {
                 continue;
             }
@@ -300,13 +319,18 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
         return false;
     }
     const Num vx = b.vx;
-    if (grid->has_shapes()) {
-        note_blocked(b, kSidesX, side(shaped_x(b, *grid, mode, s), vx, kSideRight, kSideLeft), s);
-        return true;
-    }
     const TileAxis a{along_x(b), s.share(b.vx), grid->tile_width()};
     const CellRange cols = grid->clip_cols(candidates(a, mode));
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
+    // The shape rules give what the whole-cell walk gives until the walk
+    // meets a shaped cell: most moves in a map with ramps never do.
+    if (grid->has_shapes() && meets_shape_first(cols, rows, vx.v > 0, [&](int64_t c, int64_t r) {
+            const uint8_t k = grid->cell(c, r);
+            return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
+        })) {
+        note_blocked(b, kSidesX, side(shaped_x(b, *grid, mode, s), vx, kSideRight, kSideLeft), s);
+        return true;
+    }
     const bool stopped = resolve_axis(a, cols, rows,
                                       [&](int64_t c, int64_t r) { return grid->solid(c, r); });
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
@@ -320,11 +344,6 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
         return false;
     }
     const Num vy = b.vy;
-    if (grid->has_shapes()) {
-        const bool stopped = shaped_y(b, *grid, mode, s) || (vy.v > 0 && snap_down(b, *grid, s));
-        note_blocked(b, kSidesY, side(stopped, vy, kSideDown, kSideUp), s);
-        return true;
-    }
     const TileAxis a{along_y(b), s.share(b.vy), grid->tile_height()};
     const CellRange rows = grid->clip_rows(candidates(a, mode));
     const CellRange cols = grid->clip_cols(cells_of(b.x, b.w, grid->tile_width()));
@@ -334,11 +353,21 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     const bool may_land = b.vy.v > 0 && !b.drop_through;
     const double feet_before = (b.y - a.move + b.h).v;
     const double th = grid->tile_height();
-    const bool stopped = resolve_axis(a, rows, cols, [&](int64_t r, int64_t c) {
+    auto stops = [&](int64_t r, int64_t c) {
         const uint8_t cell = grid->cell(c, r);
         return cell == kSolidCell ||
                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th);
-    });
+    };
+    bool stopped;
+    if (grid->has_shapes() && meets_shape_first(rows, cols, vy.v > 0, [&](int64_t r, int64_t c) {
+            return grid->cell(c, r) == kShapedCell ? 1 : stops(r, c) ? -1 : 0;
+        })) {
+        stopped = shaped_y(b, *grid, mode, s);
+    } else {
+        stopped = resolve_axis(a, rows, cols, stops);
+    }
+    // Not stopped: a walker may follow a ramp down (§12).
+    if (!stopped && grid->has_shapes() && vy.v > 0) stopped = snap_down(b, *grid, s);
     note_blocked(b, kSidesY, side(stopped, vy, kSideDown, kSideUp), s);
     return true;
 }

@@ -82,6 +82,7 @@ void measure_timed(std::vector<Row>& rows, const Plan& p) {
         const int64_t t0 = now_ns();
         r.traj = measure_trajectory(r.cfg, p.traj_frames);
         r.tunnel = measure_tunneling(r.cfg, p.max_speed);
+        r.ramp_tunnel = measure_ramp_tunneling(r.cfg, p.max_speed);
         r.arena = run_scene(arena(p.arena_n), r.cfg, p.scene_frames, p.shortcut);
         std::fprintf(stderr, "accuracy: timed %s, %.1f s\n", config_name(r.cfg).c_str(),
                      static_cast<double>(now_ns() - t0) / 1e9);

@@ -51,7 +51,7 @@ std::string config_name(const Config& c) {
 
 const std::vector<std::string>& table_heads() {
     static const std::vector<std::string> heads = {
-        "mode", "k", "rest", "ms/frame", "traj px", "ratio", "land", "escaped", "safe to",
+        "mode", "k", "rest", "ms/frame", "traj px", "ratio", "land", "escaped", "safe to", "ramps: escaped", "lodged",
         "pen px", "deepest in", "stack dy", "stack repeat", "crowd dy", "crowd repeat"};
     return heads;
 }
@@ -59,7 +59,8 @@ const std::vector<std::string>& table_heads() {
 std::vector<std::string> table_cells(const Row& r) {
     return {r.cfg.mode_name(), std::to_string(r.cfg.k), r.cfg.resting ? "on" : "off", sig3(r.arena.median_ms),
             px(r.traj.max_error), ratio(r), landing(r.traj), percent(r.tunnel.escaped, r.tunnel.tested),
-            safe_to(r.tunnel), px(r.deepest().worst.depth), where(r.deepest()), px(r.stack.max_dy),
+            safe_to(r.tunnel), percent(r.ramp_tunnel.escaped, r.ramp_tunnel.tested),
+            percent(r.ramp_tunnel.lodged, r.ramp_tunnel.tested), px(r.deepest().worst.depth), where(r.deepest()), px(r.stack.max_dy),
             repeat(r.stack.repeat), px(r.crowd.max_dy), repeat(r.crowd.repeat)};
 }
 

@@ -40,5 +40,9 @@ struct Tunneling {
     int safe_to() const { return first_escape == 0 ? max_speed : first_escape - 1; }
 };
 Tunneling measure_tunneling(const Config& c, int max_speed);
+// The same against ramps (semantics §12): shots falling onto a 45° and a
+// 1:2 floor ramp, rising into a ceiling ramp, flying into a ramp's tall
+// side, at 1 … max_speed px/frame from every gap, at two places along it.
+Tunneling measure_ramp_tunneling(const Config& c, int max_speed);
 
 }  // namespace bench::accuracy

@@ -46,7 +46,8 @@ std::string plan(const Plan& p) {
     std::ostringstream o;
     o << "| trajectory   | " << p.traj_frames << " frames |\n"
       << "| tunneling    | 1 … " << p.max_speed << " px/frame, "
-      << (static_cast<long>(p.max_speed) * (p.max_speed + 1) / 2) << " shots |\n"
+      << (static_cast<long>(p.max_speed) * (p.max_speed + 1) / 2) << " shots; against ramps "
+      << (static_cast<long>(p.max_speed) * (p.max_speed + 1) * 4) << " |\n"
       << "| arena, drop  | " << p.scene_frames << " frames; arena " << p.arena_n << " boxes |\n"
       << "| stack, crowd | " << p.drift_frames << " frames; stack " << p.stack_n << " boxes, crowd N = " << p.crowd_n
       << " |\n"

@@ -44,6 +44,11 @@ std::vector<Goal> judge(const std::vector<Row>& rows) {
     goals.push_back(goal("swept lets nothing through",
                          failing(rows, [&](const Row& r) { return swept(r) && (r.tunnel.escaped || r.tunnel.lodged); }),
                          "no projectile escaped or stuck, at any speed, in any swept row"));
+    goals.push_back(goal("swept lets nothing through ramps",
+                         failing(rows, [&](const Row& r) {
+                             return swept(r) && (r.ramp_tunnel.escaped || r.ramp_tunnel.lodged);
+                         }),
+                         "no shot through or stuck in a ramp, at any speed, in any swept row"));
     goals.push_back(goal("resting contacts on: stack and crowd settle to period <= 2 and stay (both modes)",
                          failing(rows, [](const Row& r) { return r.cfg.resting && !(settled(r.stack) && settled(r.crowd)); }),
                          "every resting-contacts row"));

@@ -29,6 +29,7 @@ struct Row {
     Trajectory traj;
     double ratio = 0;  // the trajectory error at k/2 over the one at k (0 for k = 1)
     Tunneling tunnel;
+    Tunneling ramp_tunnel;  // against ramps
     Run arena, drop, stack, crowd;
 
     // The scene run with the deepest penetration (the first on a tie).

@@ -39,7 +39,7 @@ std::string usage() {
            "       downstroke-bench query [--frames F] [--org FILE]   spatial queries per frame\n"
            "       downstroke-bench tile-edit [--rounds R] [--org FILE]   one tile edit\n"
            "speed options:\n"
-           "  --scene S[,S…]   rain crowd rest bullets platformer (default: all)\n"
+           "  --scene S[,S…]   rain crowd rest bullets platformer ramps ramps-flat (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"
            "  --path P[,P…]    guile native bare reference box2d box2d-discrete\n"
            "                   (default: all; native also runs bare)\n"

@@ -38,8 +38,20 @@ SCM tilemap(const Scene& s) {
     SCM cells = scm_c_make_vector(s.solid.size(), scm_from_int(0));
     for (size_t i = 0; i < s.solid.size(); ++i)
         if (s.solid[i]) scm_c_vector_set_x(cells, i, scm_from_int(1));
-    SCM args = scm_list_5(scm_from_int(s.cols), scm_from_int(s.rows), scm_from_int(s.tile),
-                          scm_from_int(s.tile), cells);
+    // Shaped cells: their gid, and (gid . (polygon (x . y) …)) once per gid.
+    SCM shapes = SCM_EOL;
+    std::vector<int> seen;
+    for (const SceneShape& sh : s.shapes) {
+        scm_c_vector_set_x(cells, static_cast<size_t>(sh.row) * s.cols + sh.col, scm_from_int(sh.gid));
+        if (std::find(seen.begin(), seen.end(), sh.gid) != seen.end()) continue;
+        seen.push_back(sh.gid);
+        SCM pts = SCM_EOL;
+        for (auto it = sh.polygon.rbegin(); it != sh.polygon.rend(); ++it)
+            pts = scm_cons(scm_cons(scm_from_int(it->first), scm_from_int(it->second)), pts);
+        shapes = scm_cons(scm_cons(scm_from_int(sh.gid), scm_cons(scm_from_utf8_symbol("polygon"), pts)), shapes);
+    }
+    SCM args = scm_list_n(scm_from_int(s.cols), scm_from_int(s.rows), scm_from_int(s.tile),
+                          scm_from_int(s.tile), cells, shapes, SCM_UNDEFINED);
     return scm_apply_0(scm_c_public_ref("bench driver", "grid-tilemap"), args);
 }
 

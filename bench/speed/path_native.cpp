@@ -4,6 +4,7 @@
 
 #include "common/timing.hpp"
 #include "frame.hpp"
+#include "tilemap/tile_shapes.hpp"
 #include "speed/paths.hpp"
 
 namespace bench {
@@ -50,10 +51,23 @@ void bounce(std::vector<ds::Body>& bodies, std::vector<int64_t>& rvx, std::vecto
 
 }  // namespace
 
+// The scene's shaped cells, read as the map loader reads a collision polygon.
+void add_shapes(ds::TileGrid& grid, const Scene& scene) {
+    for (const SceneShape& sh : scene.shapes) {
+        ds::MapObject o;
+        o.shape = ds::ObjectShape::Polygon;
+        for (const auto& [x, y] : sh.polygon) o.points.push_back({static_cast<double>(x), static_cast<double>(y)});
+        const ds::TileSolidPart part = ds::tile_solid_part({o}, scene.tile, scene.tile, 0);
+        if (part.whole) grid.set_solid(sh.col, sh.row, true);
+        else grid.set_shape(sh.col, sh.row, part.shape);
+    }
+}
+
 PathResult run_native(const Scene& scene, const RunConfig& cfg) {
     PathResult r;
     const int64_t t_setup = now_ns();
     ds::TileGrid grid(scene.cols, scene.rows, scene.tile, scene.tile, scene.solid);
+    add_shapes(grid, scene);
     ds::World world;
     world.grid = &grid;
     world.bodies = to_bodies(scene);

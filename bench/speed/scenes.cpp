@@ -67,6 +67,39 @@ Scene rain(int n) {
     return s;
 }
 
+// ramps: rain over hills. The platforms of rain become hills with 45°
+// sides, and the floor between them rises and falls in 1:2 ramps, so most
+// boxes land on a ramp and walk (vx −1, 0, 1) up and down it. ramps-flat is
+// the same map with every ramp cell empty, so its walkers walk as far on
+// flat ground (ramp cells made whole blocks would stop them, and a stopped
+// box costs less): the cost of the shapes is ramps ÷ ramps-flat, measured in
+// one run.
+Scene ramps(int n, bool flat) {
+    Scene s = rain(n);
+    Grid g(s.cols, s.rows);
+    g.cells = s.solid;
+    const int platform_row = 10 + 4, bump_row = s.rows - 3;
+    const std::vector<std::pair<int, int>> up45 = {{0, 16}, {16, 16}, {16, 0}}, down45 = {{0, 0}, {0, 16}, {16, 16}};
+    const std::vector<std::pair<int, int>> up12a = {{0, 16}, {16, 16}, {16, 8}}, up12b = {{0, 16}, {16, 16}, {16, 0}, {0, 8}};
+    const std::vector<std::pair<int, int>> down12b = {{0, 0}, {0, 16}, {16, 16}, {16, 8}}, down12a = {{0, 8}, {0, 16}, {16, 16}};
+    auto put = [&](int c, int r, int gid, const std::vector<std::pair<int, int>>& poly) {
+        if (c <= 0 || c >= s.cols - 1) return;
+        g.cells[static_cast<size_t>(r) * s.cols + c] = 0;
+        if (!flat) s.shapes.push_back({c, r, gid, poly});
+    };
+    for (int c = 1; c < s.cols - 1; ++c) {
+        const int k = (c - 1) % 12;
+        if (k == 3) put(c, platform_row, 3, up45);
+        if (k == 6) put(c, platform_row, 4, down45);
+        if (k == 8) put(c, bump_row, 5, up12a);
+        if (k == 9) put(c, bump_row, 6, up12b);
+        if (k == 10) put(c, bump_row, 7, down12b);
+        if (k == 11) put(c, bump_row, 8, down12a);
+    }
+    s.solid = std::move(g.cells);
+    return s;
+}
+
 // crowd: solid 8×8 gravity boxes in stacks 8 high from the floor up
 // (touching vertically, 1 px apart horizontally) in a walled arena, with an
 // immovable 16×32 pillar after every 16 stacks; the arena gets wider with N.
@@ -230,7 +263,8 @@ void check_at_rest(const Scene& s) {
 }  // namespace
 
 const std::vector<std::string>& scene_names() {
-    static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer"};
+    static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
+                                                   "ramps-flat"};
     return names;
 }
 
@@ -247,6 +281,8 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "rest") s = rest(n);
     else if (name == "bullets") s = bullets(n);
     else if (name == "platformer") s = platformer(n);
+    else if (name == "ramps") s = ramps(n, false);
+    else if (name == "ramps-flat") s = ramps(n, true);
     else throw std::invalid_argument("unknown scene " + name);
     s.name = name;
     s.n = n;

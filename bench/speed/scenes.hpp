@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bench {
@@ -16,12 +17,22 @@ struct SceneBody {
     int64_t rvx = 0, rvy = 0;
 };
 
+// A cell whose solid part is a collision polygon (semantics §12), in tile
+// px, as Tiled's collision editor draws it; gid names it for the Scheme
+// paths' make-tilemap (3 and up).
+struct SceneShape {
+    int col = 0, row = 0;
+    int gid = 0;
+    std::vector<std::pair<int, int>> polygon;
+};
+
 struct Scene {
     std::string name;
     int n = 0;  // the N asked for: the number of moving bodies
     // Tiles: cols × rows cells of tile px, row-major, 1 = solid.
     int cols = 0, rows = 0, tile = 16;
     std::vector<uint8_t> solid;
+    std::vector<SceneShape> shapes;  // cells given a shape (their `solid` is 0)
     std::string map_path;  // set when the tiles come from a Tiled map (load-tilemap)
     std::vector<SceneBody> bodies;  // movers first, then immovable pillars
     bool bounce = false;            // run the bounce update after every frame

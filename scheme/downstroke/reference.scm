@@ -311,10 +311,13 @@ exact when the position and size were."
         (b (if (< (p-right p) hi) (p-right p) hi)))
     (and (< a b) (cons a b))))
 
+(define (p-rise p) (- (p-ref p 8) (p-ref p 6)))
 (define (p-top-over p ab)
-  (let ((ta (p-top p (car ab))) (tb (p-top p (cdr ab)))) (if (< tb ta) tb ta)))
+  "The highest top over [a, b): at the end the line rises towards (b as the
+limit), the line being straight."
+  (p-top p (if (< (p-rise p) 0) (cdr ab) (car ab))))
 (define (p-bottom-over p ab)
-  (let ((ba (p-bottom p (car ab))) (bb (p-bottom p (cdr ab)))) (if (< ba bb) bb ba)))
+  (p-bottom p (if (> (p-rise p) 0) (cdr ab) (car ab))))
 (define (p-surface p ab) (if (eq? (p-cut p) 'floor) (p-top-over p ab) (p-box-top p)))
 (define (p-underside p ab) (if (eq? (p-cut p) 'ceiling) (p-bottom-over p ab) (p-box-bottom p)))
 (define (p-solid-over? p ab)

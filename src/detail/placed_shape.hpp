@@ -29,21 +29,22 @@ inline double clamp(double v, double lo, double hi) { return v < lo ? lo : hi < 
 struct Placed {
     const CellShape& s;
     double ox, oy;  // the cell's top-left corner, col·tw and row·th
+    double left_, right_, top_, bottom_;  // the box in the world
+    double dx, dy, base;  // the line's run and rise, and (oy + ay)·dx
 
     Placed(const CellShape& shape, int64_t col, int64_t row, const TileGrid& g)
-        : s(shape), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()) {}
+        : s(shape), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()),
+          left_(ox + s.x0), right_(ox + s.x1), top_(oy + s.y0), bottom_(oy + s.y1),
+          dx(s.bx - s.ax), dy(s.by - s.ay), base((oy + s.ay) * dx) {}
 
-    double left() const { return ox + s.x0; }
-    double right() const { return ox + s.x1; }
-    double box_top() const { return oy + s.y0; }
-    double box_bottom() const { return oy + s.y1; }
+    double left() const { return left_; }
+    double right() const { return right_; }
+    double box_top() const { return top_; }
+    double box_bottom() const { return bottom_; }
 
     // The slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
     // one division, so exact integers give the correctly rounded value.
-    double line(double x) const {
-        const double dx = s.bx - s.ax, dy = s.by - s.ay;
-        return ((oy + s.ay) * dx + ((x - ox) - s.ax) * dy) / dx;
-    }
+    double line(double x) const { return (base + ((x - ox) - s.ax) * dy) / dx; }
     // The top and bottom of the solid in the column at x (top == bottom: none).
     double top(double x) const {
         return s.cut == Cut::Floor ? clamp(line(x), box_top(), box_bottom()) : box_top();
@@ -58,21 +59,31 @@ struct Placed {
         b = std::min(span.hi, right());
         return a < b;
     }
-    // The highest top (least y) over [a, b) and the lowest bottom: the
-    // line is monotonic, so one end gives each (b, not in the span, as the
-    // limit). Ties keep the first (a's), as std::min does.
-    double top_over(double a, double b) const {
-        const double ta = top(a), tb = top(b);
-        return tb < ta ? tb : ta;
-    }
-    double bottom_over(double a, double b) const {
-        const double ba = bottom(a), bb = bottom(b);
-        return ba < bb ? bb : ba;
-    }
+    // The highest top (least y) over [a, b) and the lowest bottom: the line
+    // is monotonic (and so is every rounding step computing it), so the end
+    // the line rises towards gives each, b (not in the span) as the limit.
+    // One evaluation, not two.
+    double top_over(double a, double b) const { return top(dy < 0 ? b : a); }
+    double bottom_over(double a, double b) const { return bottom(dy > 0 ? b : a); }
     // Where a body over [a, b) meets the shape from above (its highest top)
     // and from below (its lowest bottom).
     double surface(double a, double b) const { return s.cut == Cut::Floor ? top_over(a, b) : box_top(); }
     double underside(double a, double b) const { return s.cut == Cut::Ceiling ? bottom_over(a, b) : box_bottom(); }
+    // surface() and underside() over [a, b) at once (one pair of line
+    // evaluations), and whether [a, b) holds solid (solid_over).
+    bool extent(double a, double b, double& surface_y, double& underside_y) const {
+        switch (s.cut) {
+            case Cut::Floor:
+                surface_y = top_over(a, b), underside_y = box_bottom();
+                return surface_y < underside_y;
+            case Cut::Ceiling:
+                surface_y = box_top(), underside_y = bottom_over(a, b);
+                return underside_y > surface_y;
+            case Cut::None: break;
+        }
+        surface_y = box_top(), underside_y = box_bottom();
+        return true;
+    }
     // Whether [a, b) holds any solid column: a ramp's columns past the end
     // of its slant can be empty.
     bool solid_over(double a, double b) const {
@@ -85,14 +96,9 @@ struct Placed {
     }
     // Strict overlap with the box [span) × [top, bottom).
     bool overlaps(Span span, double top_y, double bottom_y) const {
-        double a, b;
-        if (!over(span, a, b) || !solid_over(a, b)) return false;
-        switch (s.cut) {
-            case Cut::Floor: return top_y < box_bottom() && bottom_y > top_over(a, b);
-            case Cut::Ceiling: return bottom_y > box_top() && top_y < bottom_over(a, b);
-            case Cut::None: break;
-        }
-        return top_y < box_bottom() && bottom_y > box_top();
+        double a, b, surface_y, underside_y;
+        return over(span, a, b) && extent(a, b, surface_y, underside_y) && top_y < underside_y &&
+               bottom_y > surface_y;
     }
 };
 

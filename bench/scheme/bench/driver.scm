@@ -21,9 +21,10 @@
 
 (define (bench-scene-entities scene) (scene-entities scene))
 
-(define (grid-tilemap cols rows tile-w tile-h cells)
-  "A tilemap of COLS × ROWS cells from a vector of gids (1 = solid)."
-  (make-tilemap cols rows tile-w tile-h cells '(1)))
+(define* (grid-tilemap cols rows tile-w tile-h cells #:optional (shapes '()))
+  "A tilemap of COLS × ROWS cells from a vector of gids (1 = solid), SHAPES
+giving gids their collision polygons, as make-tilemap takes them."
+  (make-tilemap cols rows tile-w tile-h cells '(1) '() shapes))
 
 (define (allocated) (assq-ref (gc-stats) 'heap-total-allocated))
 ;; Wall-clock time spent collecting, in ns. Not (gc-stats)'s gc-time-taken:
