@@ -1,6 +1,7 @@
 // The spatial queries of (downstroke query) and the tile queries, as native
 // procedures: decode the entities' boxes, ask the core (query.hpp), hand back
 // the very entity objects that matched, in list order.
+#include "detail/placed_shape.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -262,9 +263,14 @@ SCM tilemap_solid_cells(SCM map, SCM x, SCM y, SCM w, SCM h) {
         const CellRange cols = g.clip_cols(cells_of(Num::flonum(v[0]), Num::flonum(v[2]), g.tile_width()));
         const CellRange rows = g.clip_rows(cells_of(Num::flonum(v[1]), Num::flonum(v[3]), g.tile_height()));
         SCM head = SCM_EOL, *tail = &head;
+        const shape_math::Span span{v[0], v[0] + v[2]};
+        auto part_in = [&](int64_t c, int64_t r) {  // a solid shape the box overlaps (semantics §12)
+            const CellShape* s = g.shape(c, r);
+            return s && !s->one_way && shape_math::Placed(*s, c, r, g).overlaps(span, v[1], v[1] + v[3]);
+        };
         for (int64_t r = rows.first; r <= rows.last; ++r)
             for (int64_t c = cols.first; c <= cols.last; ++c)
-                if (g.solid(c, r)) {
+                if (g.solid(c, r) || part_in(c, r)) {
                     *tail = scm_cons(scm_cons(scm_from_int64(c), scm_from_int64(r)), SCM_EOL);
                     tail = SCM_CDRLOC(*tail);
                 }
@@ -278,8 +284,7 @@ SCM tilemap_solid_at(SCM map, SCM x, SCM y) {
     const MapHandle* m = nullptr;
     double v[2];
     if (!map_arg(map, m, f) || !finite_args({{x, "x"}, {y, "y"}}, v, f)) raise(f);
-    const TileGrid& g = m->grid;
-    return scm_from_bool(g.solid(cell_at(v[0], g.tile_width()), cell_at(v[1], g.tile_height())));
+    return scm_from_bool(m->grid.solid_at(v[0], v[1]));
 }
 
 // The gid (flip bits removed) at a world point: of the layer given by number
@@ -329,9 +334,11 @@ void register_query_procedures() {
         WrapperDoc{"(entities tilemap x0 y0 x1 y1 all?)", "scene-raycast", query});
     define_procedure<5, 0, 0, tilemap_solid_cells>("tilemap-solid-cells",
         "(tilemap-solid-cells map x y w h): the solid cells, as (col . row) in row-major order, "
-        "that the box [x, x+w) × [y, y+h) covers.");
+        "that the box [x, x+w) × [y, y+h) covers; a cell solid in part (a ramp, a part-tile box) when "
+        "the box overlaps its solid shape.");
     define_procedure<3, 0, 0, tilemap_solid_at>("tilemap-solid-at?",
-        "(tilemap-solid-at? map x y): whether the cell holding the world point (x, y) is solid.");
+        "(tilemap-solid-at? map x y): whether the world point (x, y) is in a solid part of the map: a "
+        "solid cell, or inside the solid shape of a cell that is solid in part (a ramp, a part-tile box).");
     define_procedure<3, 1, 0, tilemap_gid_at>("tilemap-gid-at",
         "(tilemap-gid-at map x y [layer]): the gid (flip bits removed) at the world point (x, y) in the "
         "tile layer layer (its number, as tilemap-gid takes, or its name), or in the topmost visible "

@@ -25,7 +25,9 @@ SCM wrap(std::unique_ptr<MapHandle> handle) {
     return scm_make_foreign_object_1(tilemap_type, handle.release());
 }
 
-bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f) {
+// `max`: kGidMask for lists of tiles (solid-gids), 0xFFFFFFFF for cells,
+// which may carry flip bits.
+bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f, uint32_t max = kGidMask) {
     SCM p = list;
     Tortoise tortoise;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
@@ -34,7 +36,7 @@ bool gid_list(SCM list, std::vector<uint32_t>& out, const char* what, Failure& f
             return false;
         }
         SCM g = SCM_CAR(p);
-        if (!scm_is_unsigned_integer(g, 0, kGidMask)) {
+        if (!scm_is_unsigned_integer(g, 0, max)) {
             fail(f, "wrong-type-arg", scm_list_2(g, list), "%s: expected gids (exact integers ≥ 0), got ~S in ~S", what);
             return false;
         }
@@ -196,7 +198,7 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
                         else fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(i), g), "cells: element ~S is not a gid: ~S");
                     }
                 } else {
-                    ok = gid_list(cells, gids, "cells", f);
+                    ok = gid_list(cells, gids, "cells", f, 0xFFFFFFFFu);
                 }
                 if (!ok || !gid_list(solid_gids, solid, "solid-gids", f)) return;
                 if (!SCM_UNBNDP(one_way_gids) && !gid_list(one_way_gids, one_way, "one-way-gids", f)) return;

@@ -8,6 +8,7 @@
 #include "constants.hpp"
 #include "contacts.hpp"
 #include "detail/cell_hash.hpp"
+#include "detail/placed_shape.hpp"
 
 namespace ds {
 
@@ -144,6 +145,48 @@ void raycast_boxes(std::span<const Box> boxes, const Segment& s, std::vector<Ray
     }
 }
 
+namespace {
+
+// Where the segment enters the solid of shape p (semantics §8, §12): the
+// least t in [0, t_end) with the point in its box and on the kept side of
+// its slant; the normal of the face it came through (for the slant, the
+// signs of its outward normal). False when it does not, or when the start
+// point is inside.
+bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end, RayHit& h) {
+    if (p.holds(s.x0, s.y0)) return false;
+    const double dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+    const Span sx = axis_span(s.x0, dx, p.left(), p.right());
+    const Span sy = axis_span(s.y0, dy, p.box_top(), p.box_bottom());
+    double in = std::max({sx.in, sy.in, 0.0}), out = std::min({sx.out, sy.out, t_end});
+    bool through_slant = false;
+    if (p.s.cut != Cut::None) {
+        // f(t) = rise·… : the kept side is f ≥ 0, f linear in t.
+        const double run = p.dx, rise = p.dy, sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;
+        const double ax = p.ox + p.s.ax, ay = p.oy + p.s.ay;
+        const double a = sign * (run * (s.y0 - ay) - rise * (s.x0 - ax));
+        const double b = sign * (run * dy - rise * dx);
+        if (b > 0) {
+            const double t = -a / b;
+            if (t > in) in = t, through_slant = true;
+        } else if (b < 0) {
+            out = std::min(out, -a / b);
+        } else if (a < 0) {
+            return false;
+        }
+    }
+    if (!(in < out)) return false;
+    h = hit_at(s, in, sx, sy, p.left(), p.right(), p.box_top(), p.box_bottom());
+    if (through_slant) {
+        const double sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;
+        h.nx = p.dy * sign > 0 ? 1 : -1;   // outward: (rise, −run) for a floor ramp
+        h.ny = p.s.cut == Cut::Floor ? -1 : 1;
+        h.x = s.x0 + in * dx, h.y = s.y0 + in * dy;
+    }
+    return true;
+}
+
+}  // namespace
+
 void raycast_cells(const TileGrid& grid, const Segment& s, bool first_only, std::vector<RayHit>& out) {
     const double tw = grid.tile_width(), th = grid.tile_height();
     const int64_t c_lo = grid.origin_col(), c_hi = c_lo + grid.cols() - 1;
@@ -158,10 +201,22 @@ void raycast_cells(const TileGrid& grid, const Segment& s, bool first_only, std:
     const double t0 = std::max({gx.in, gy.in, 0.0});
     const double t_end = std::min({gx.out, gy.out, 1.0});
     if (!(t0 < t_end)) return;
+    // A shaped cell is hit where the segment enters its shape, which may be
+    // inside the cell the segment starts in, or past where it enters a cell.
+    auto shape_hit = [&](int64_t col, int64_t row) {
+        const CellShape* shape = grid.shape(col, row);
+        if (!shape || shape->one_way) return false;
+        RayHit h;
+        if (!ray_into_shape(shape_math::Placed(*shape, col, row, grid), s, t_end, h)) return false;
+        h.col = col, h.row = row;
+        out.push_back(h);
+        return true;
+    };
     int64_t c, r;
-    if (t0 == 0) {  // the start cell itself is not entered
+    if (t0 == 0) {  // the start cell itself is not entered, but its shape may be
         c = static_cast<int64_t>(std::floor(s.x0 / tw));
         r = static_cast<int64_t>(std::floor(s.y0 / th));
+        if (shape_hit(c, r) && first_only) return;
     } else {  // entering the grid: the cell at its edge
         c = std::clamp(static_cast<int64_t>(std::floor((s.x0 + t0 * dx) / tw)), c_lo, c_hi);
         r = std::clamp(static_cast<int64_t>(std::floor((s.y0 + t0 * dy) / th)), r_lo, r_hi);
@@ -172,6 +227,8 @@ void raycast_cells(const TileGrid& grid, const Segment& s, bool first_only, std:
             h.col = c, h.row = r;
             out.push_back(h);
             if (first_only) return;
+        } else if (shape_hit(c, r) && first_only) {
+            return;
         }
     }
     // The next column and row edges the segment crosses, and when.
@@ -199,6 +256,8 @@ void raycast_cells(const TileGrid& grid, const Segment& s, bool first_only, std:
             h.col = c, h.row = r;
             out.push_back(h);
             if (first_only) return;
+        } else if (shape_hit(c, r) && first_only) {
+            return;
         }
     }
 }

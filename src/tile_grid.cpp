@@ -1,5 +1,7 @@
 #include "tile_grid.hpp"
 
+#include "detail/placed_shape.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -82,6 +84,13 @@ void TileGrid::set_shape(int64_t col, int64_t row, const CellShape& shape) {
     shape_ids_[i] = static_cast<uint16_t>(found - shapes_.begin());
     solid_[i] = kShapedCell;
     revision_.bump();
+}
+
+bool TileGrid::solid_at(double x, double y) const {
+    const int64_t c = cell_of(Num::flonum(x), tile_w_), r = cell_of(Num::flonum(y), tile_h_);
+    if (solid(c, r)) return true;
+    const CellShape* s = shape(c, r);
+    return s && !s->one_way && shape_math::Placed(*s, c, r, *this).holds(x, y);
 }
 
 double CellShape::steepness() const {

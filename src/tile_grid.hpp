@@ -113,6 +113,10 @@ public:
         if (cell(col, row) != kShapedCell) return nullptr;
         return &shapes_[shape_ids_[index(col, row)]];
     }
+    // Whether the world point (x, y) lies in a solid part of the grid: a
+    // whole solid cell, or inside a solid shape (one-way parts are not
+    // solid to queries, semantics §8).
+    bool solid_at(double x, double y) const;
     // Whether any cell has ever had a shape: a grid without shapes takes
     // none of the shape rules' paths, and costs what it did before them.
     bool has_shapes() const { return !shapes_.empty(); }

@@ -1,3 +1,4 @@
+#include <iterator>
 #include "accuracy/report.hpp"
 
 #include <cmath>
@@ -8,9 +9,10 @@ namespace bench::accuracy {
 
 namespace {
 
-const int kWidths[] = {8, 2, 4, 9, 8, 5, 5, 8, 9, 7, 24, 8, 22, 8, 22};
+const int kWidths[] = {8, 2, 4, 9, 8, 5, 5, 8, 9, 14, 7, 7, 24, 8, 22, 8, 22};
 
 void print_cells(std::FILE* out, const std::vector<std::string>& cs) {
+    static_assert(std::size(kWidths) == 17, "a width per column of table_heads");
     for (size_t i = 0; i < cs.size(); ++i) std::fprintf(out, "%-*s ", kWidths[i], cs[i].c_str());
     std::fputc('\n', out);
 }

@@ -94,6 +94,14 @@ struct Placed {
         }
         return true;
     }
+    // Whether the point lies in the solid: in the box (half-open, as every
+    // box) and, for a ramp, on the kept side of the slant or on it.
+    bool holds(double x, double y) const {
+        if (!(left() <= x && x < right() && box_top() <= y && y < box_bottom())) return false;
+        if (s.cut == Cut::Floor) return y >= line(x);
+        if (s.cut == Cut::Ceiling) return y <= line(x);
+        return true;
+    }
     // Strict overlap with the box [span) × [top, bottom).
     bool overlaps(Span span, double top_y, double bottom_y) const {
         double a, b, surface_y, underside_y;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "frame.hpp"
+#include "query.hpp"
 #include "ground.hpp"
 #include "support.hpp"
 #include "tiles.hpp"
@@ -325,6 +326,65 @@ TEST_CASE("a body walking off a ramp's top over a cliff falls, it is not snapped
     for (int f = 0; f < 30; ++f) w.step(2);
     CHECK_EXACT(w.body().x, 100);
     CHECK_FALSE(w.body().on_ground);
+}
+
+std::vector<ds::RayHit> ray(const ds::TileGrid& g, double x0, double y0, double x1, double y1) {
+    std::vector<ds::RayHit> hits;
+    ds::raycast_cells(g, ds::Segment{x0, y0, x1, y1}, false, hits);
+    return hits;
+}
+
+TEST_CASE("rays hit a ramp's slant, its sides and part-tile boxes as drawn") {
+    // '/' at (2, 1): x 32–48, y 16–32.
+    const ds::TileGrid g = shaped_grid({"....", "../.", "...."});
+    // In the world the slant runs from (32, 32) to (48, 16): y = 64 − x.
+    auto down = ray(g, 40, 0, 40, 64);
+    REQUIRE(down.size() == 1);
+    CHECK(down[0].y == 24);
+    CHECK(down[0].t == 24.0 / 64);
+    CHECK(down[0].nx == -1);
+    CHECK(down[0].ny == -1);
+    CHECK(down[0].col == 2);
+    // From the left at y = 28: the slant is at x = 64 − 28 = 36.
+    auto right = ray(g, 0, 28, 64, 28);
+    REQUIRE(right.size() == 1);
+    CHECK(right[0].x == 36);
+    // From the right at y = 20: the tall side x = 48.
+    auto left = ray(g, 63, 20, 0, 20);
+    REQUIRE(left.size() == 1);
+    CHECK(left[0].x == 48);
+    CHECK(left[0].nx == 1);
+    CHECK(left[0].ny == 0);
+    // From below at x = 40: the flat bottom y = 32.
+    auto up = ray(g, 40, 47, 40, 0);
+    REQUIRE(up.size() == 1);
+    CHECK(up[0].y == 32);
+    CHECK(up[0].ny == 1);
+    // Over the empty part of the cell, above the slant: no hit.
+    CHECK(ray(g, 33, 16, 33, 30).empty());
+    // Starting above the slant inside the ramp's cell: it hits within the cell.
+    auto inside = ray(g, 44, 17, 44, 40);
+    REQUIRE(inside.size() == 1);
+    CHECK(inside[0].y == 20);
+    // Starting inside the solid: not hit.
+    CHECK(ray(g, 46, 30, 46, 47).empty());
+}
+
+TEST_CASE("rays: ceiling ramps, part-tile boxes, one-way shapes") {
+    const ds::TileGrid g = shaped_grid({"....", ".v_o", "...."});
+    // 'v' at (1, 1): a ceiling ramp, solid above y = x from (16, 16) to (32, 32).
+    auto up = ray(g, 28, 47, 28, 0);
+    REQUIRE(up.size() == 1);
+    CHECK(up[0].y == 28);
+    CHECK(up[0].nx == -1);  // the slant faces down and to the left
+    CHECK(up[0].ny == 1);
+    // '_' at (2, 1): the bottom half, y 24–32.
+    auto down = ray(g, 40, 0, 40, 47);
+    REQUIRE(down.size() == 1);
+    CHECK(down[0].y == 24);
+    CHECK(down[0].ny == -1);
+    // 'o' at (3, 1) is one-way: rays pass.
+    CHECK(ray(g, 56, 0, 56, 47).empty());
 }
 
 }  // TEST_SUITE
