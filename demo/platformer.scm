@@ -134,14 +134,21 @@ running on the ground."
           ((<= x lift-from-x) (entity-set lift #:vx speed))
           (else lift))))
 
+(define (cell-index v)
+  "A cell index from a coordinate over a tile size: an exact integer even
+when the coordinate is a flonum, as a y is after a 1:2 ramp walked at an
+odd speed (its half pixels are flonums)."
+  (inexact->exact (floor v)))
+
 (define (cells-above-head player tiles)
   "The (col . row) cells of the row just above PLAYER's head that its box
 spans, on the map TILES."
   (let* ((tw (tilemap-tile-width tiles)) (th (tilemap-tile-height tiles))
          (x (entity-ref player #:x)) (w (entity-ref player #:width))
-         (row (floor (/ (- (entity-ref player #:y) 1) th))))
+         (row (cell-index (/ (- (entity-ref player #:y) 1) th)))
+         (first (cell-index (/ x tw))))
     (map (lambda (col) (cons col row))
-         (iota (- (ceiling (/ (+ x w) tw)) (floor (/ x tw))) (floor (/ x tw))))))
+         (iota (- (inexact->exact (ceiling (/ (+ x w) tw))) first) first))))
 
 (define (break-blocks tiles cells)
   "(map . count): the map TILES with each breakable block among CELLS

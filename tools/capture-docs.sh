@@ -21,6 +21,7 @@ capture() {
 
 capture platformer 70
 capture platformer 458 platformer-beyond
+capture platformer 281 platformer-hill
 capture topdown 60
 capture sandbox 60
 capture shmup 24

@@ -201,7 +201,30 @@ BREAKABLE = [  # a riveted crate with a crack: it breaks when hit from below
     "kkkkkkkkkkkkkkkk",
 ]
 
-LEVEL_TILES = [ONE_WAY, BREAKABLE]
+def ramp(left, right):
+    """A ramp of ground whose slope runs from height LEFT at the tile's left
+    edge to RIGHT at its right edge (px from the tile's top), the ground
+    picture below it, grass along it, nothing above: drawn as the collision
+    polygon make_maps.py gives the tile, so it looks as it collides."""
+    rows = []
+    for y in range(TILE):
+        row = ""
+        for x in range(TILE):
+            surface = left + (right - left) * (x + 0.5) / TILE
+            depth = int(y + 0.5 - surface) if y + 0.5 >= surface else -1
+            row += "." if depth < 0 else GROUND[min(depth, TILE - 1)][x]
+        rows.append(row)
+    return rows
+
+
+# level-tiles.tsx local ids 2-4: the hill's ramps (45°, and the lower and
+# upper tiles of a 1:2 ramp), rising to the right; the map flips them for
+# the way down.
+RAMP_45 = ramp(16, 0)
+RAMP_12_LOW = ramp(16, 8)
+RAMP_12_HIGH = ramp(8, 0)
+
+LEVEL_TILES = [ONE_WAY, BREAKABLE, RAMP_45, RAMP_12_LOW, RAMP_12_HIGH]
 
 # ---------------------------------------------------------------- sprites.png
 # (type, picture); a sprite's local id is its index here.

@@ -19,6 +19,10 @@ on the tile. Levels are drawn below as ASCII, one character a cell:
     "  grass/decor (tile 3, NOT solid: no "solid" property) gid 4
     -  one-way plank (level-tiles 0, "one-way" property)   gid 21
     B  breakable block (level-tiles 1, solid)              gid 22
+    /  45° ramp up to the right (level-tiles 2, a collision triangle) gid 23
+    a  1:2 ramp, lower tile (level-tiles 3)                gid 24
+    b  1:2 ramp, upper tile (level-tiles 4)                gid 25
+    \\  c  d   the same flipped horizontally: the way down
 
 The layers are written in different encodings (CSV, base64, base64+zlib) so
 the demos exercise the loader's paths too. Objects (spawn points, coins, the
@@ -39,7 +43,10 @@ SPRITES_FIRSTGID = 1 + 4  # demo-tiles.tsx's firstgid + its tilecount
 # sprites.tsx in the platformer only, so the gids before it stay as they were:
 # a one-way plank and a block the player breaks from below.
 LEVEL_FIRSTGID = SPRITES_FIRSTGID + 16  # sprites.tsx's tilecount
-GIDS = {".": 0, "#": 1, "W": 2, "=": 3, '"': 4, "-": LEVEL_FIRSTGID, "B": LEVEL_FIRSTGID + 1}
+FLIP_H = 0x80000000  # Tiled's horizontal flip bit on a gid
+GIDS = {".": 0, "#": 1, "W": 2, "=": 3, '"': 4, "-": LEVEL_FIRSTGID, "B": LEVEL_FIRSTGID + 1,
+        "/": LEVEL_FIRSTGID + 2, "a": LEVEL_FIRSTGID + 3, "b": LEVEL_FIRSTGID + 4,
+        "\\": FLIP_H | (LEVEL_FIRSTGID + 2), "c": FLIP_H | (LEVEL_FIRSTGID + 4), "d": FLIP_H | (LEVEL_FIRSTGID + 3)}
 
 TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 <tileset version="1.10" tiledversion="1.10.2" name="demo-tiles" tilewidth="16" tileheight="16" tilecount="4" columns="4">
@@ -75,6 +82,8 @@ TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 # (row 8, columns 62-67) to jump up through and drop down from, three blocks
 # to break from below (row 8, columns 71-73), and a pit too wide to jump
 # (columns 78-89, three tiles deep) that the "lift" object carries you over.
+# Between the pit and the plank, a hill (columns 44-51): up a 1:2 ramp and a
+# 45° ramp to a top two tiles wide (row 9, y 144), down a 45° and a 1:2 one.
 PLATFORMER = [
     "W..................................................................................................W",  # 0
     "W..................................................................................................W",  # 1
@@ -85,8 +94,8 @@ PLATFORMER = [
     "W..................................................................................................W",  # 6
     "W..................................................................................................W",  # 7
     "W.........====......................W.........................------...BBB.........................W",  # 8
-    "W...................................W..............................................................W",  # 9
-    'W.."".................."............W..............."........................................".....W',  # 10
+    "W...................................W........./##\\.................................................W",  # 9
+    'W.."".................."............W.......ab####cd"........................................".....W',  # 10
     "W#############################......##########################################............#########W",  # 11
     "W#############################......##########################################............#########W",  # 12
     "W#############################################################################............#########W",  # 13
@@ -205,8 +214,8 @@ def objects_element(objects):
 
 
 LEVEL_TILESET = """<?xml version="1.0" encoding="UTF-8"?>
-<tileset version="1.10" tiledversion="1.10.2" name="level-tiles" tilewidth="16" tileheight="16" tilecount="2" columns="2">
- <image source="level-tiles.png" width="32" height="16"/>
+<tileset version="1.10" tiledversion="1.10.2" name="level-tiles" tilewidth="16" tileheight="16" tilecount="5" columns="5">
+ <image source="level-tiles.png" width="80" height="16"/>
  <tile id="0" type="one-way">
   <properties>
    <property name="one-way" type="bool" value="true"/>
@@ -216,6 +225,27 @@ LEVEL_TILESET = """<?xml version="1.0" encoding="UTF-8"?>
   <properties>
    <property name="solid" type="bool" value="true"/>
   </properties>
+ </tile>
+ <tile id="2" type="ramp">
+  <objectgroup draworder="index" id="2">
+   <object id="1" x="0" y="0">
+    <polygon points="0,16 16,16 16,0"/>
+   </object>
+  </objectgroup>
+ </tile>
+ <tile id="3" type="ramp">
+  <objectgroup draworder="index" id="2">
+   <object id="1" x="0" y="0">
+    <polygon points="0,16 16,16 16,8"/>
+   </object>
+  </objectgroup>
+ </tile>
+ <tile id="4" type="ramp">
+  <objectgroup draworder="index" id="2">
+   <object id="1" x="0" y="0">
+    <polygon points="0,16 16,16 16,0 0,8"/>
+   </object>
+  </objectgroup>
  </tile>
 </tileset>
 """

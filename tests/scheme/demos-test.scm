@@ -43,6 +43,11 @@ demos' top-level names stay in that module."
   (let ((m (tilemap "platformer")))
     (test-equal "platformer: 100×15 of 16 px" '(100 15 16 16)
       (list (tilemap-width m) (tilemap-height m) (tilemap-tile-width m) (tilemap-tile-height m)))
+    (test-equal "platformer: the hill's ramps (columns 44-51), turned by flip bits"
+      '(#(0 8 16 16 floor 0 16 16 8 #f) #(0 0 16 16 floor 0 8 16 0 #f) #(0 0 16 16 floor 0 16 16 0 #f)
+        #(0 0 16 16 floor 0 0 16 16 #f) #(0 0 16 16 floor 0 0 16 8 #f) #(0 8 16 16 floor 0 8 16 16 #f))
+      (map (lambda (cell) (tilemap-cell-shape m (car cell) (cdr cell)))
+           '((44 . 10) (45 . 10) (46 . 9) (49 . 9) (50 . 10) (51 . 10))))
     (test-assert "platformer: ground rows 11-14 left of the pit"
       (solid-cells? m (append-map (lambda (r) (row-cells (range 1 30) r)) '(11 12 13 14))))
     (test-assert "platformer: the pit (columns 30-35, rows 11-12) is open"
@@ -154,19 +159,35 @@ demos' top-level names stay in that module."
   (test-equal "pinned to the wall while rising, over it once the feet clear y 128"
     '((564 108) (567 102)) (map (lambda (k) (pick (p-at k) #:x #:y)) '(228 229)))
   (test-equal "landed beyond the wall" '(160 #t) (pick (p-at 247) #:y #:on-ground?))
+  ;; The hill (columns 44-51): up a 1:2 ramp from x 704 (y 176 to 160) and a
+  ;; 45° one (to 144), a flat top, down a 45° and a 1:2 ramp to x 832. The
+  ;; 12 px player stands on the highest point under its feet: running at 3
+  ;; px/frame, y moves by 1.5 on the 1:2 ramps (half pixels, flonums) and by
+  ;; 3 on the 45° ones.
+  (test-equal "up the 1:2 ramp: half pixels, as flonums" '((693 159.5) (696 158.0) (699 156.5))
+    (map (lambda (k) (pick (p-at k) #:x #:y)) '(271 272 273)))
+  (test-equal "up the 45° ramp: 3 px a frame" '((729 139.0) (732 136.0))
+    (map (lambda (k) (pick (p-at k) #:x #:y)) '(283 284)))
+  (test-equal "on the hill's top (y 144): y 128" '(750 128.0 #t) (pick (p-at 290) #:x #:y #:on-ground?))
+  (test-equal "down the far side to the ground" '((795 139.0) (831 159.5) (834 160.0))
+    (map (lambda (k) (pick (p-at k) #:x #:y)) '(305 317 318)))
+  (test-assert "on the ground every frame over the hill, at a steady 3 px/frame"
+    (every (lambda (k) (and (entity-ref (p-at k) #:on-ground?)
+                            (= 3 (- (entity-ref (p-at k) #:x) (entity-ref (p-at (- k 1)) #:x)))))
+           (range 248 372)))
   ;; The one-way plank: row 8 (top y 128), columns 62-67 (x 992-1088).
   (test-equal "jumped up through the plank: rising past its top, no stop"
-    '((1005 121 -12) (1011 100 -10) (1038 55 -1))
+    '((1005 121.0 -12) (1011 100.0 -10) (1038 55.0 -1))
     (map (lambda (k) (pick (p-at k) #:x #:y #:vy)) '(375 377 386)))
-  (test-equal "landed on the plank from above: y 128 - 16 = 112" '(1065 112 0 #t)
+  (test-equal "landed on the plank from above: y 128 - 16 = 112" '(1065 112.0 0 #t)
     (pick (p-at 398) #:x #:y #:vy #:on-ground?))
-  (test-equal "standing on it until Down is held (frame 410)" '((112 #t) (112 #t #t))
+  (test-equal "standing on it until Down is held (frame 410)" '((112.0 #t) (112.0 #t #t))
     (list (pick (p-at 409) #:y #:on-ground?) (pick (p-at 410) #:y #:on-ground? #:drop-through?)))
   (test-equal "dropped through it, back on the ground at frame 420"
-    '((113 1 #f) (157 9 #f) (160 0 #t))
+    '((113.0 1 #f) (157.0 9 #f) (160.0 0 #t))
     (map (lambda (k) (pick (p-at k) #:y #:vy #:on-ground?)) '(411 419 420)))
   ;; The blocks: row 8 (bottom y 144), columns 71-73 (x 1136-1184).
-  (test-equal "the head hit the middle block: stopped at y 144, vy 0, blocked up" '(1155 144 0 (up))
+  (test-equal "the head hit the middle block: stopped at y 144, vy 0, blocked up" '(1155 144.0 0 (up))
     (pick (p-at 455) #:x #:y #:vy #:blocked))
   (test-equal "that block is gone from the scene's map; its neighbours and the level are not"
     '((22 0 22) (22 22 22) (#t #f #t))
@@ -200,9 +221,17 @@ demos' top-level names stay in that module."
   (test-equal "camera followed: x = 517 + 6 - 160 at frame 199, y clamped to 0" '(363 . 0) camera-at-200)
   (test-equal "camera at the end: clamped to 1600 - 320" '(1280 . 0)
     (let ((c (scene-camera (game-scene (game-of platformer))))) (cons (camera-x c) (camera-y c))))
-  (test-assert "positions stay exact integers"
-    (every (lambda (k) (and (exact? (entity-ref (p-at k) #:x)) (exact? (entity-ref (p-at k) #:y))))
-           (range 0 720))))
+  (test-assert "x stays an exact integer all the way"
+    (every (lambda (k) (exact? (entity-ref (p-at k) #:x))) (range 0 720)))
+  ;; A flonum stays a flonum (semantics §1): y is exact until the 1:2 ramp's
+  ;; first half pixel, at frame 271, and a flonum until the lift carries the
+  ;; player (frame 579: push-apart puts it on the lift's exact top).
+  (test-equal "y stays exact up to the 1:2 ramp" 271
+    (find (lambda (k) (inexact? (entity-ref (p-at k) #:y))) (range 0 720)))
+  (test-assert "y is a flonum from then on, until the lift"
+    (every (lambda (k) (inexact? (entity-ref (p-at k) #:y))) (range 271 579)))
+  (test-assert "exact again from the lift on"
+    (every (lambda (k) (exact? (entity-ref (p-at k) #:y))) (range 579 720))))
 
 ;;; ================================================================ top-down
 (define topdown (run-demo "topdown.scm"))
