@@ -328,6 +328,23 @@ TEST_CASE("a body walking off a ramp's top over a cliff falls, it is not snapped
     CHECK_FALSE(w.body().on_ground);
 }
 
+TEST_CASE("standing on a ramp: blocked down, on the ground; a jump from it leaves it") {
+    Walker w(kHill45, walker(90, 40));  // over the up-ramp; let it settle
+    w.body().contacts = true;
+    for (int f = 0; f < 30; ++f) w.step(0);
+    // Over x 90–98 the ramp's highest point is at x 98: y = 160 − 98 = 62.
+    CHECK_EXACT(w.body().y, 62 - 16);
+    CHECK(w.body().on_ground);
+    CHECK(w.body().blocked == ds::kSideDown);
+    // The jump: vy −15 + 1 on its first frame, rising off the ramp.
+    w.body().ay = I(-15);
+    w.step(0);
+    CHECK_EXACT(w.body().vy, -14);
+    CHECK_EXACT(w.body().y, 46 - 14);
+    CHECK_FALSE(w.body().on_ground);
+    CHECK(w.body().blocked == 0);
+}
+
 std::vector<ds::RayHit> ray(const ds::TileGrid& g, double x0, double y0, double x1, double y1) {
     std::vector<ds::RayHit> hits;
     ds::raycast_cells(g, ds::Segment{x0, y0, x1, y1}, false, hits);
