@@ -213,6 +213,18 @@ def objects_element(objects):
     return "\n".join(out) + "\n"
 
 
+# level-tiles 2-4: the hill's ramps, each a collision polygon (semantics §12):
+# 45°, and the lower and upper tiles of a 1:2 ramp, all rising to the right.
+RAMPS = {2: "0,16 16,16 16,0", 3: "0,16 16,16 16,8", 4: "0,16 16,16 16,0 0,8"}
+RAMP_TILE = """ <tile id="{id}" type="ramp">
+  <objectgroup draworder="index" id="2">
+   <object id="1" x="0" y="0">
+    <polygon points="{points}"/>
+   </object>
+  </objectgroup>
+ </tile>
+"""
+
 LEVEL_TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 <tileset version="1.10" tiledversion="1.10.2" name="level-tiles" tilewidth="16" tileheight="16" tilecount="5" columns="5">
  <image source="level-tiles.png" width="80" height="16"/>
@@ -226,28 +238,7 @@ LEVEL_TILESET = """<?xml version="1.0" encoding="UTF-8"?>
    <property name="solid" type="bool" value="true"/>
   </properties>
  </tile>
- <tile id="2" type="ramp">
-  <objectgroup draworder="index" id="2">
-   <object id="1" x="0" y="0">
-    <polygon points="0,16 16,16 16,0"/>
-   </object>
-  </objectgroup>
- </tile>
- <tile id="3" type="ramp">
-  <objectgroup draworder="index" id="2">
-   <object id="1" x="0" y="0">
-    <polygon points="0,16 16,16 16,8"/>
-   </object>
-  </objectgroup>
- </tile>
- <tile id="4" type="ramp">
-  <objectgroup draworder="index" id="2">
-   <object id="1" x="0" y="0">
-    <polygon points="0,16 16,16 16,0 0,8"/>
-   </object>
-  </objectgroup>
- </tile>
-</tileset>
+{ramp_tiles}</tileset>
 """
 
 
@@ -275,7 +266,8 @@ def write(name, text):
 
 def main():
     write("demo-tiles.tsx", TILESET)
-    write("level-tiles.tsx", LEVEL_TILESET)
+    write("level-tiles.tsx", LEVEL_TILESET.replace(
+        "{ramp_tiles}", "".join(RAMP_TILE.format(id=i, points=p) for i, p in RAMPS.items())))
     write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer", level_tiles=True))
     write("topdown.tmx", tmx(TOPDOWN, "base64", TOPDOWN_OBJECTS, "top-down"))
     write("sandbox.tmx", tmx(SANDBOX, "zlib", (), "sandbox"))
