@@ -9,6 +9,7 @@
 #include "list_walk.hpp"
 #include "registry.hpp"
 #include "tilemap_info.hpp"
+#include "tilemap/tile_shapes.hpp"
 
 namespace ds::guile {
 
@@ -84,8 +85,9 @@ bool shape_spec(SCM spec, MapObject& o) {
     return scm_is_null(rest);
 }
 
-// make-tilemap's `shapes`: a proper list of (gid . shape).
-bool shape_list(SCM list, std::vector<GidShape>& out, Failure& f) {
+// make-tilemap's `shapes`: a proper list of (gid . shape), each a shape a
+// tile_w × tile_h tile can have (tile_solid_part finds no problem in it).
+bool shape_list(SCM list, int tile_w, int tile_h, std::vector<GidShape>& out, Failure& f) {
     if (scm_ilength(list) < 0) {  // improper or circular
         fail_arg(f, "shapes", list, "a list of (gid . shape)");
         return false;
@@ -100,6 +102,11 @@ bool shape_list(SCM list, std::vector<GidShape>& out, Failure& f) {
             return false;
         }
         s.gid = scm_to_uint32(SCM_CAR(item));
+        if (const TileSolidPart p = tile_solid_part({s.object}, tile_w, tile_h, 0); !p.problem.empty()) {
+            fail(f, "out-of-range", scm_list_2(SCM_CAR(item), scm_from_utf8_string(p.problem.c_str())),
+                 "shapes: the shape of gid ~S: ~A");
+            return false;
+        }
         out.push_back(std::move(s));
     }
     return true;
@@ -202,7 +209,7 @@ SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM s
                 }
                 if (!ok || !gid_list(solid_gids, solid, "solid-gids", f)) return;
                 if (!SCM_UNBNDP(one_way_gids) && !gid_list(one_way_gids, one_way, "one-way-gids", f)) return;
-                if (!SCM_UNBNDP(shapes) && !shape_list(shapes, gid_shapes, f)) return;
+                if (!SCM_UNBNDP(shapes) && !shape_list(shapes, tw, th, gid_shapes, f)) return;
                 handle = std::make_unique<MapHandle>();
                 handle->map = ds::make_tilemap(w, h, tw, th, std::move(gids), std::move(solid), kMaxMapCells,
                                                std::move(one_way), std::move(gid_shapes));

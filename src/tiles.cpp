@@ -111,11 +111,22 @@ struct XMove {
     double lead_before, lead_after;
     Span sweep;  // where the box went this move (swept), or where it is (discrete)
     int lifted = 0;  // +1 once a floor ramp lifted the body, −1 once a ceiling ramp pushed it down
+    // A scan met a solid shape that a move along y could push the box into
+    // (a ceiling ramp, a part-tile box, a floor ramp above the head): after
+    // a lift the box must be checked against every solid (overlaps_solid).
+    // Without one, with the rows unchanged and no wall met, every column of
+    // the final box was scanned at its final rows and nothing there can
+    // overlap it.
+    bool unsure = false;
 };
+
+// Whether a move along y could push a box over [top, bottom) into solid
+// shape p, which it does not overlap and does not climb.
+bool could_meet(const Placed& p, double top) { return p.s.cut != Cut::Floor || top >= p.box_bottom(); }
 
 // The nearest side of a solid in column c that the move runs into, at the
 // body's present rows; false when none. `whole`: a whole cell's.
-bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, const XMove& m, double& wall, bool& whole) {
+bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, XMove& m, double& wall, bool& whole) {
     const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
     const double top = b.y.v, bottom = (b.y + b.h).v;
     bool found = false;
@@ -130,7 +141,10 @@ bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, const XMove& m,
         const CellShape& sh = *g.shape(c, r);
         if (sh.one_way) continue;
         const Placed p(sh, c, r, g);
-        if (!enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) continue;
+        if (!enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) {
+            m.unsure = m.unsure || could_meet(p, top);
+            continue;
+        }
         const double side = m.fwd ? p.left() : p.right();
         if (!found || (m.fwd ? side < wall : side > wall)) wall = side;
         found = true;
@@ -151,7 +165,11 @@ bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
         bool up = false, down = false, ceilings = false, one_way_below = false;
         for (int64_t r = rows.first; r <= rows.last; ++r) {
             const CellShape* shp = g.shape(c, r);
-            if (!shp || !shp->ramp()) continue;
+            if (!shp) continue;
+            if (!shp->ramp()) {
+                m.unsure = m.unsure || !shp->one_way;
+                continue;
+            }
             const CellShape& sh = *shp;
             const Placed p(sh, c, r, g);
             double a, z, t, under;
@@ -164,8 +182,10 @@ bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
                     up = true;
                     if (t < new_feet) new_feet = t;
                 }
+                m.unsure = m.unsure || (!sh.one_way && head >= p.box_bottom());
             } else if (!sh.one_way) {
                 ceilings = true;
+                m.unsure = true;
                 const double u = under;
                 if (feet > p.box_top() && head < u) {
                     down = true;
@@ -198,6 +218,7 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
               : m.fwd                         ? Span{x_start.v, (b.x + b.w).v}
                                               : Span{b.x.v, (x_start + b.w).v};
     bool stopped = false, shape_wall = false, squeezed = false;
+    const CellRange rows0 = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
     for (int64_t i = 0, n = cols.last - cols.first + 1; i < n && !cols.empty(); ++i) {
         const int64_t c = m.fwd ? cols.first + i : cols.last - i;
         double wall = 0;
@@ -216,7 +237,16 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
     }
     // A move that leaves the box in a solid (lifted into a ceiling, or
     // stopped by a part-tile box beside a ramp) is not made at all.
-    if (squeezed || ((m.lifted != 0 || shape_wall) && overlaps_solid(b, g))) {
+    auto must_check = [&] {
+        if (shape_wall) return true;
+        if (m.lifted == 0) return false;
+        // Stopped at a wall, the box is not where the scans saw it (the
+        // discrete rule may even put it behind where it started).
+        if (stopped) return true;
+        const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+        return m.unsure || rows.first != rows0.first || rows.last != rows0.last;
+    };
+    if (squeezed || (must_check() && overlaps_solid(b, g))) {
         b.x = x_start;
         b.y = y_start;
         stopped = true;

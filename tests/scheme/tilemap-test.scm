@@ -407,4 +407,39 @@
 (test-assert "load-tilemap: project not a file name"
   (mentions? (error-text (lambda () (load-tilemap "demo/maps/level1.tmx" #:project 42))) "load-tilemap" "project" "42"))
 
+;;; Shapes (semantics §12): make-tilemap's shapes, tilemap-cell-shape,
+;;; tilemap-steepest-ramp, and the queries by shape.
+(define (shaped . shapes) (make-tilemap 2 1 16 16 #(1 2) '(1) '() shapes))
+(define ramp45 '(2 . (polygon (0 . 16) (16 . 16) (16 . 0))))
+(test-equal "tilemap-cell-shape: whole, shaped, empty"
+  (list 'solid #(0 0 16 16 floor 0 16 16 0 #f) #f)
+  (let ((m (shaped ramp45))) (list (tilemap-cell-shape m 0 0) (tilemap-cell-shape m 1 0) (tilemap-cell-shape m 5 5))))
+(test-equal "a one-way ramp" #(0 8 16 16 box 0 0 0 0 #t)
+  (tilemap-cell-shape (make-tilemap 1 1 16 16 #(2) '() '(2) '((2 . (rect 0 8 16 8)))) 0 0))
+(test-equal "tilemap-steepest-ramp: 1.0, and 0.0 without ramps" '(1.0 0.0)
+  (list (tilemap-steepest-ramp (shaped ramp45)) (tilemap-steepest-ramp (shaped))))
+(test-equal "tilemap-solid-at? by shape: above the slope, under it" '(#f #t)
+  (let ((m (shaped ramp45))) (list (tilemap-solid-at? m 20 4) (tilemap-solid-at? m 28 12))))
+(test-equal "make-tilemap: a polygon of 2 points"
+  "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 2 points (3 at least make a shape)\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . 1))))))))
+(test-equal "make-tilemap: a point outside the tile"
+  "In procedure make-tilemap: shapes: the shape of gid 1: collision point (20, 16) lies outside the 16x16 tile\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 16) (20 . 16) (20 . 0))))))))
+(test-equal "make-tilemap: NaN in a shape"
+  "In procedure make-tilemap: shapes: expected (gid . (rect x y w h)) or (gid . (polygon (x . y) ...)) with finite numbers, got (1 polygon (0 . 0) (1 . +nan.0) (4 . 4))\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . +nan.0) (4 . 4))))))))
+(test-equal "make-tilemap: shapes not a list"
+  "In procedure make-tilemap: shapes: expected a list of (gid . shape), got oops\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() 'oops))))
+(test-equal "make-tilemap: a circular list of shapes"
+  #t
+  (let ((l (list ramp45 ramp45))) (set-cdr! (cdr l) l)
+    (mentions? (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() l))) "make-tilemap" "shapes")))
+(test-equal "tilemap-cell-shape: not a map, not a cell"
+  '("In procedure tilemap-cell-shape: expected a tilemap, got map\n"
+    "In procedure tilemap-cell-shape: col: expected an exact integer cell index, got 0.5\n")
+  (list (error-text (lambda () (tilemap-cell-shape 'map 0 0)))
+        (error-text (lambda () (tilemap-cell-shape (shaped) 0.5 0)))))
+
 (test-end "tilemap")
