@@ -389,8 +389,17 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th);
     };
     bool stopped;
+    // A shape can stop the move only if the feet (moving down) or the head
+    // (up) crossed into its box's rows of px: a shape in the row a body
+    // stands in, beside it, does not send it down the shape rules.
+    const double feet = (b.y + b.h).v, head = b.y.v, head_before = (b.y - a.move).v;
+    auto may_stop = [&](int64_t r, int64_t c) {
+        const CellShape& sh = *grid->shape(c, r);
+        const double oy = static_cast<double>(r) * th, y0 = oy + sh.y0, y1 = oy + sh.y1;
+        return vy.v > 0 ? feet > y0 && feet_before < y1 : head < y1 && head_before > y0;
+    };
     if (grid->has_shapes() && meets_shape_first(rows, cols, vy.v > 0, [&](int64_t r, int64_t c) {
-            return grid->cell(c, r) == kShapedCell ? 1 : stops(r, c) ? -1 : 0;
+            return grid->cell(c, r) == kShapedCell ? (may_stop(r, c) ? 1 : 0) : stops(r, c) ? -1 : 0;
         })) {
         stopped = shaped_y(b, *grid, mode, s);
     } else {
