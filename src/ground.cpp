@@ -9,35 +9,24 @@ namespace ds {
 
 namespace {
 
-// The whole cells of the row under the feet (semantics §4, §9).
-bool whole_cell_supports(const Body& b, const TileGrid& grid) {
-    const int64_t row = cell_of(b.y + b.h, grid.tile_height());
-    const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
-    // One-way cells (semantics §9) hold up a body that is not rising, not
-    // dropping through, with its feet at most kOneWayFooting into the cell.
-    const bool on_top = b.vy.v >= 0 && !b.drop_through &&
-                        (b.y + b.h).v - static_cast<double>(row) * grid.tile_height() < kOneWayFooting;
-    for (int64_t c = cols.first; c <= cols.last; ++c) {
-        const uint8_t cell = grid.cell(c, row);
-        if (cell == kSolidCell || (on_top && cell == kOneWayCell)) return true;
-    }
-    return false;
-}
-
-// A shape in the row under the feet holds the body up when the feet are on
-// or in it: at or below its surface over the bottom edge and above its
-// underside; a one-way shape only within kOneWayFooting of its surface, for
-// a body not rising nor dropping through (semantics §12).
-bool shape_supports(const Body& b, const TileGrid& grid) {
+// What holds a body up in the row under its feet (row ⌊(y+h)/th⌋), over
+// the columns it spans: a solid cell; a one-way cell (semantics §9) for a
+// body not rising, not dropping through, its feet at most kOneWayFooting
+// into the cell; and, with `shapes`, a shape (§12) the feet are on or in —
+// at or below its surface over the bottom edge and above its underside, a
+// one-way shape only within kOneWayFooting of its surface.
+bool row_supports(const Body& b, const TileGrid& grid, bool shapes) {
     const double feet = (b.y + b.h).v;
     const int64_t row = cell_of(b.y + b.h, grid.tile_height());
     const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
-    const shape_math::Span span{b.x.v, (b.x + b.w).v};
     const bool may_stand = b.vy.v >= 0 && !b.drop_through;
+    const bool on_top = may_stand && feet - static_cast<double>(row) * grid.tile_height() < kOneWayFooting;
+    const shape_math::Span span{b.x.v, (b.x + b.w).v};
     for (int64_t c = cols.first; c <= cols.last; ++c) {
-        const CellShape* shp = grid.shape(c, row);
-        if (!shp) continue;
-        const CellShape& sh = *shp;
+        const uint8_t cell = grid.cell(c, row);
+        if (cell == kSolidCell || (on_top && cell == kOneWayCell)) return true;
+        if (!shapes || cell != kShapedCell) continue;
+        const CellShape& sh = *grid.shape(c, row);
         if (sh.one_way && !may_stand) continue;
         const shape_math::Placed p(sh, c, row, grid);
         double a, z, top, under;
@@ -50,14 +39,14 @@ bool shape_supports(const Body& b, const TileGrid& grid) {
 }  // namespace
 
 bool tile_supports(const Body& b, const TileGrid& grid) {
-    return whole_cell_supports(b, grid) || (grid.has_shapes() && shape_supports(b, grid));
+    return row_supports(b, grid, grid.has_shapes());
 }
 
 // Whole cells only: a body on a shape takes gravity and lands again every
 // frame, so one walking down a ramp is snapped and never left resting.
 bool rests_on_tile(const Body& b, const TileGrid& grid) {
     const double feet = b.y.v + b.h.v;
-    return std::fmod(feet, grid.tile_height()) == 0 && whole_cell_supports(b, grid);
+    return std::fmod(feet, grid.tile_height()) == 0 && row_supports(b, grid, false);
 }
 
 namespace {

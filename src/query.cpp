@@ -159,9 +159,11 @@ bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end,
     const Span sy = axis_span(s.y0, dy, p.box_top(), p.box_bottom());
     double in = std::max({sx.in, sy.in, 0.0}), out = std::min({sx.out, sy.out, t_end});
     bool through_slant = false;
+    const double sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;  // which side of the slant is kept
     if (p.s.cut != Cut::None) {
-        // f(t) = rise·… : the kept side is f ≥ 0, f linear in t.
-        const double run = p.dx, rise = p.dy, sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;
+        // f(t) = sign·(run·(y − ay) − rise·(x − ax)) along the segment: the
+        // kept side is f ≥ 0, and f is linear in t.
+        const double run = p.dx, rise = p.dy;
         const double ax = p.ox + p.s.ax, ay = p.oy + p.s.ay;
         const double a = sign * (run * (s.y0 - ay) - rise * (s.x0 - ax));
         const double b = sign * (run * dy - rise * dx);
@@ -177,7 +179,6 @@ bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end,
     if (!(in < out)) return false;
     h = hit_at(s, in, sx, sy, p.left(), p.right(), p.box_top(), p.box_bottom());
     if (through_slant) {
-        const double sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;
         h.nx = p.dy * sign > 0 ? 1 : -1;   // outward: (rise, −run) for a floor ramp
         h.ny = p.s.cut == Cut::Floor ? -1 : 1;
         h.x = s.x0 + in * dx, h.y = s.y0 + in * dy;

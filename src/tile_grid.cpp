@@ -59,18 +59,20 @@ void TileGrid::set_solid(int64_t col, int64_t row, bool solid) {
     set_cell(col, row, solid ? kSolidCell : kEmptyCell);
 }
 
-void TileGrid::set_cell(int64_t col, int64_t row, uint8_t kind) {
+size_t TileGrid::edited_index(int64_t col, int64_t row, const char* what) const {
     const int64_t c = col - origin_col_, r = row - origin_row_;
     if (c < 0 || r < 0 || c >= cols_ || r >= rows_)
-        throw std::out_of_range("tile grid: set_cell outside the grid");
-    solid_[static_cast<size_t>(r * cols_ + c)] = kind == kEmptyCell || kind == kOneWayCell ? kind : kSolidCell;
+        throw std::out_of_range(std::string("tile grid: ") + what + " outside the grid");
+    return index(col, row);
+}
+
+void TileGrid::set_cell(int64_t col, int64_t row, uint8_t kind) {
+    solid_[edited_index(col, row, "set_cell")] = kind == kEmptyCell || kind == kOneWayCell ? kind : kSolidCell;
     revision_.bump();
 }
 
 void TileGrid::set_shape(int64_t col, int64_t row, const CellShape& shape) {
-    const int64_t c = col - origin_col_, r = row - origin_row_;
-    if (c < 0 || r < 0 || c >= cols_ || r >= rows_)
-        throw std::out_of_range("tile grid: set_shape outside the grid");
+    const size_t i = edited_index(col, row, "set_shape");
     auto found = std::find(shapes_.begin(), shapes_.end(), shape);
     if (found == shapes_.end()) {
         if (shapes_.size() >= kMaxGridShapes)
@@ -80,7 +82,6 @@ void TileGrid::set_shape(int64_t col, int64_t row, const CellShape& shape) {
         found = std::prev(shapes_.end());
     }
     if (shape_ids_.empty()) shape_ids_.assign(solid_.size(), 0);
-    const size_t i = index(col, row);
     shape_ids_[i] = static_cast<uint16_t>(found - shapes_.begin());
     solid_[i] = kShapedCell;
     revision_.bump();

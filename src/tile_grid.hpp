@@ -132,6 +132,8 @@ public:
 
 private:
     static CellRange clip(CellRange r, int64_t origin, int count);
+    // A cell's index for an edit, or std::out_of_range naming `what`.
+    size_t edited_index(int64_t col, int64_t row, const char* what) const;
     size_t index(int64_t col, int64_t row) const {
         return static_cast<size_t>((row - origin_row_) * cols_ + (col - origin_col_));
     }

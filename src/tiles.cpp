@@ -35,6 +35,14 @@ CellRange candidates(const TileAxis& t, CollisionMode mode) {
     return cells_of(a.pos, hi - a.pos, t.tile);
 }
 
+// Puts the box flush against `edge` on the side it moves from (its far side
+// on the edge moving forward, its near side moving back): exact when its
+// position and size were.
+void snap_flush(const BodyAxis& a, double edge, bool forward) {
+    const bool exact = a.pos.exact && a.size.exact;
+    a.pos = forward ? Num{edge - a.size.v, exact} : Num{edge, exact};
+}
+
 // Walks candidate cells from the side the body moves from, so the first
 // solid cell met is the one it reaches first. Returns whether one stopped it.
 template <typename Solid>
@@ -46,9 +54,7 @@ bool resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid so
         const int64_t c = forward ? along.first + i : along.last - i;
         for (int64_t k = across.first; k <= across.last; ++k) {
             if (!solid(c, k)) continue;
-            const bool exact = a.pos.exact && a.size.exact;
-            const double edge = static_cast<double>(forward ? c : c + 1) * t.tile;
-            a.pos = forward ? Num{edge - a.size.v, exact} : Num{edge, exact};
+            snap_flush(a, static_cast<double>(forward ? c : c + 1) * t.tile, forward);
             a.vel = Num::integer(0);
             return true;
         }
@@ -175,9 +181,10 @@ bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
             double a, z, t, under;
             if (!p.over(m.sweep, a, z) || !p.extent(a, z, t, under)) continue;
             if (sh.cut == Cut::Floor) {
-                if (sh.one_way && !b.drop_through && !enters_from_above(p, m.fwd, m.lead_before, feet))
-                    one_way_below = true;  // a lift may bring the feet above it
-                if (sh.one_way && (b.drop_through || !enters_from_above(p, m.fwd, m.lead_before, feet))) continue;
+                if (sh.one_way && (b.drop_through || !enters_from_above(p, m.fwd, m.lead_before, feet))) {
+                    one_way_below = one_way_below || !b.drop_through;  // a lift may bring the feet above it
+                    continue;
+                }
                 if (head < p.box_bottom() && feet > t) {
                     up = true;
                     if (t < new_feet) new_feet = t;
@@ -224,8 +231,7 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
         double wall = 0;
         bool whole = false;
         if (wall_in_column(b, g, c, m, wall, whole)) {
-            const bool exact = b.x.exact && b.w.exact;
-            b.x = m.fwd ? Num{wall - b.w.v, exact} : Num{wall, exact};
+            snap_flush(along_x(b), wall, m.fwd);
             stopped = true;
             shape_wall = !whole;
             break;
@@ -255,7 +261,10 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
     return stopped;
 }
 
-bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
+// `stops(r, c)`: a whole cell that stops this move (the whole-cell walk's
+// own rule, solid or one-way).
+template <typename Stops>
+bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, Stops stops) {
     const Num move = s.share(b.vy);
     const bool fwd = b.vy.v > 0;
     const TileAxis t{along_y(b), move, g.tile_height()};
@@ -272,17 +281,14 @@ bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
         bool found = false;
         double stop = 0;
         for (int64_t c = cols.first; c <= cols.last; ++c) {
-            const uint8_t cell = g.cell(c, r);
-            if (cell == kSolidCell ||
-                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th)) {
-                const bool exact = b.y.exact && b.h.exact;
-                const double edge = static_cast<double>(fwd ? r : r + 1) * th;
-                b.y = fwd ? Num{edge - b.h.v, exact} : Num{edge, exact};
+            if (stops(r, c)) {
+                snap_flush(along_y(b), static_cast<double>(fwd ? r : r + 1) * th, fwd);
                 b.vy = Num::integer(0);
                 return true;
             }
-            if (cell != kShapedCell) continue;
-            const CellShape& sh = *g.shape(c, r);
+            const CellShape* shp = g.shape(c, r);
+            if (!shp) continue;
+            const CellShape& sh = *shp;
             if (sh.one_way && !may_land) continue;
             const Placed p(sh, c, r, g);
             double a, z, top, under;
@@ -401,7 +407,7 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     if (grid->has_shapes() && meets_shape_first(rows, cols, vy.v > 0, [&](int64_t r, int64_t c) {
             return grid->cell(c, r) == kShapedCell ? (may_stop(r, c) ? 1 : 0) : stops(r, c) ? -1 : 0;
         })) {
-        stopped = shaped_y(b, *grid, mode, s);
+        stopped = shaped_y(b, *grid, mode, s, stops);
     } else {
         stopped = resolve_axis(a, rows, cols, stops);
     }
@@ -417,10 +423,9 @@ bool overlaps_solid(const Body& b, const TileGrid& grid) {
     const shape_math::Span span{b.x.v, (b.x + b.w).v};
     for (int64_t r = rows.first; r <= rows.last; ++r)
         for (int64_t c = cols.first; c <= cols.last; ++c) {
-            const uint8_t cell = grid.cell(c, r);
-            if (cell == kSolidCell) return true;
-            if (cell == kShapedCell && !grid.shape(c, r)->one_way &&
-                shape_math::Placed(*grid.shape(c, r), c, r, grid).overlaps(span, b.y.v, (b.y + b.h).v))
+            if (grid.solid(c, r)) return true;
+            const CellShape* sh = grid.shape(c, r);
+            if (sh && !sh->one_way && shape_math::Placed(*sh, c, r, grid).overlaps(span, b.y.v, (b.y + b.h).v))
                 return true;
         }
     return false;
