@@ -215,7 +215,8 @@
   (catch 'system-error
     (lambda () (display (make-string (* 16 1024 1024) #\b) torrent) (force-output torrent) 'written)
     (lambda (key . args) (system-error-errno (cons key args)))))
-(test-equal "a 16 MB line: the server stops reading it (the client's write fails)" EPIPE torrent-write)
+(test-assert "a 16 MB line: the server stops reading it (the client's write fails)"
+  (memv torrent-write (list EPIPE ECONNRESET)))
 ;; Read up to the message's end only: closing with input unread, the server
 ;; resets the connection, so a read past what it sent fails (ECONNRESET).
 (test-equal "and says why before it closes"
