@@ -12,10 +12,11 @@ cd "$(dirname "$0")/.."
 # emacs-nox and elpa-geiser (Debian 12's Geiser 0.10, Guile support included) run the test
 # that attaches Geiser to a served game; nlohmann-json3-dev (header-only) reads Tiled's JSON
 # maps, tilesets, templates and project files; python3 and python3-zstandard run the tilemap
-# corpus test's independent decoder (tests/tilemap_corpus/decode_tiled.py).
+# corpus test's independent decoder (tests/tilemap_corpus/decode_tiled.py); tiled brings
+# tmxrasterizer, Tiled's own renderer, the oracle render.tiled-oracle compares drawn maps with.
 packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev nlohmann-json3-dev libbox2d-dev gnuplot-nox
           libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev xvfb xauth x11-apps xdotool clang libclang-rt-dev
-          emacs-nox elpa-geiser python3 python3-zstandard)
+          emacs-nox elpa-geiser python3 python3-zstandard tiled)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -233,6 +233,67 @@ void Canvas::blit(SDL_Surface* picture, int x, int y, uint8_t alpha) {
     if (alpha != 255) SDL_SetSurfaceAlphaMod(picture, 255);
 }
 
+namespace {
+
+// a·b/255, rounded to the nearest.
+uint32_t times(uint32_t a, uint32_t b) { return (a * b + 127) / 255; }
+
+// Where a picture pixel edge falls exactly on a canvas pixel centre (a
+// scale of 3/4 puts every fourth there), the pixel before it is taken, as
+// Qt's fixed-point sampling does: Tiled's pictures match ours then.
+constexpr double kTie = 1.0 / 65536;
+
+// The canvas pixels a turned box can touch: its corners' bounds, clipped.
+struct PixelSpan {
+    int x0, y0, x1, y1;
+};
+PixelSpan touched(const PictureBox& b, double cos_t, double sin_t, int width, int height) {
+    double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300;
+    for (const auto& [dx, dy] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {-0.5, 0.5}, {0.5, 0.5}}) {
+        const double x = b.cx + dx * b.w - b.pivot_x, y = b.cy + dy * b.h - b.pivot_y;
+        const double tx = b.pivot_x + x * cos_t - y * sin_t, ty = b.pivot_y + x * sin_t + y * cos_t;
+        lo_x = std::min(lo_x, tx), hi_x = std::max(hi_x, tx);
+        lo_y = std::min(lo_y, ty), hi_y = std::max(hi_y, ty);
+    }
+    const auto clip = [](double v, int hi) { return int(std::clamp(v, 0.0, double(hi))); };
+    return {clip(std::floor(lo_x), width), clip(std::floor(lo_y), height), clip(std::ceil(hi_x), width),
+            clip(std::ceil(hi_y), height)};
+}
+
+}  // namespace
+
+void Canvas::draw_picture(SDL_Surface* pic, const PictureBox& b, uint8_t alpha, Rgba tint) {
+    if (!pic || pic->w <= 0 || pic->h <= 0 || !(b.w > 0) || !(b.h > 0) || alpha == 0) return;
+    if (pic->format->format != SDL_PIXELFORMAT_ARGB8888 || SDL_MUSTLOCK(pic)) return;
+    const double rad = b.degrees * (3.14159265358979323846 / 180.0);
+    const double cos_t = b.degrees == 0 ? 1 : std::cos(rad), sin_t = b.degrees == 0 ? 0 : std::sin(rad);
+    const PixelSpan span = touched(b, cos_t, sin_t, width(), height());
+    SDL_BlendMode mode;
+    SDL_GetSurfaceBlendMode(pic, &mode);
+    const bool opaque = mode == SDL_BLENDMODE_NONE;
+    const double left = b.cx - b.w / 2, top = b.cy - b.h / 2;
+    const double to_u = pic->w / b.w, to_v = pic->h / b.h;
+    for (int y = span.y0; y < span.y1; ++y) {
+        auto* row = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(surface_->pixels) + y * surface_->pitch);
+        for (int x = span.x0; x < span.x1; ++x) {
+            // The pixel's centre, turned back about the pivot into the box.
+            const double px = x + 0.5 - b.pivot_x, py = y + 0.5 - b.pivot_y;
+            const double bx = b.pivot_x + px * cos_t + py * sin_t, by = b.pivot_y - px * sin_t + py * cos_t;
+            const double u = std::floor((bx - left) * to_u - kTie), v = std::floor((by - top) * to_v - kTie);
+            if (!(u >= 0 && u < pic->w && v >= 0 && v < pic->h)) continue;
+            const uint32_t s = reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(pic->pixels) +
+                                                                 int(v) * pic->pitch)[int(u)];
+            uint32_t a = opaque ? 255 : s >> 24;
+            a = times(times(a, tint.a), alpha);
+            if (a == 0) continue;
+            const uint32_t r = times(s >> 16 & 0xff, tint.r), g = times(s >> 8 & 0xff, tint.g), bl = times(s & 0xff, tint.b);
+            const uint32_t d = row[x];
+            const auto over = [&](uint32_t src, uint32_t dst) { return (src * a + dst * (255 - a) + 127) / 255; };
+            row[x] = 0xff000000u | over(r, d >> 16 & 0xff) << 16 | over(g, d >> 8 & 0xff) << 8 | over(bl, d & 0xff);
+        }
+    }
+}
+
 Rgba Canvas::pixel(int x, int y) const {
     if (x < 0 || y < 0 || x >= width() || y >= height()) return {0, 0, 0, 0};
     const auto* row = reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(surface_->pixels) +

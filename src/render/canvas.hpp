@@ -11,6 +11,12 @@
 
 namespace ds::render {
 
+// Where Canvas::draw_picture puts a picture, in canvas px.
+struct PictureBox {
+    double cx = 0, cy = 0, w = 0, h = 0;
+    double degrees = 0, pivot_x = 0, pivot_y = 0;
+};
+
 class Canvas {
 public:
     // Throws RenderError for a size that is not positive or too large.
@@ -33,6 +39,13 @@ public:
     void text(int x, int y, std::string_view s, Rgba c, int scale = 1);
     // A picture at (x, y), blended as its own blend mode says, faded by alpha.
     void blit(SDL_Surface* picture, int x, int y, uint8_t alpha = 255);
+
+    // A picture stretched over the box centred on (cx, cy), w × h px, turned
+    // `degrees` clockwise about (pivot_x, pivot_y): each canvas pixel whose
+    // centre falls in the box takes the nearest picture pixel (no smoothing,
+    // as Tiled's --no-smoothing), multiplied by `tint` (all four channels,
+    // c·t/255) and faded by alpha. Any coordinates are safe.
+    void draw_picture(SDL_Surface* picture, const PictureBox& box, uint8_t alpha = 255, Rgba tint = {255, 255, 255, 255});
 
     Rgba pixel(int x, int y) const;  // (0, 0, 0, 0) outside
     // Writes the canvas as a PNG; throws RenderError naming the path.

@@ -10,28 +10,6 @@ namespace ds::render {
 
 namespace {
 
-int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
-
-// A picture's size and blend depend on the tile; the layer's opacity fades it.
-uint8_t opacity_alpha(double opacity) {
-    return static_cast<uint8_t>(std::lround(std::clamp(opacity, 0.0, 1.0) * 255));
-}
-
-// The largest tile of any tileset beyond the map's cell, per axis: how far a
-// bottom-left aligned tile can reach out of its cell.
-std::pair<int, int> overhang(const Tilemap& map) {
-    int w = 0, h = 0;
-    for (const Tileset& ts : map.tilesets) {
-        w = std::max(w, ts.tile_width - map.tile_width);
-        h = std::max(h, ts.tile_height - map.tile_height);
-        for (const TileInfo& t : ts.tiles) {  // collection tiles have their own sizes
-            w = std::max(w, t.image_width - map.tile_width);
-            h = std::max(h, t.image_height - map.tile_height);
-        }
-    }
-    return {w, h};
-}
-
 Rgba role_color(const EntityView& e) {
     if (e.immovable && e.solid) return kImmovableColor;
     if (e.solid && e.ghost) return kGhostColor;
@@ -151,84 +129,30 @@ void draw_overlay(Canvas& c, const SceneView& v, int64_t cx, int64_t cy) {
     draw_legend(c);
 }
 
-}  // namespace
-
-CellWindow visible_cells(const TileLayer& layer, int tile_w, int tile_h, int64_t view_x,
-                         int64_t view_y, int view_w, int view_h, int over_w, int over_h) {
-    CellWindow w;
-    if (tile_w <= 0 || tile_h <= 0) return w;
-    w.col0 = std::max(layer.origin_col, floor_div(view_x - over_w, tile_w));
-    w.col1 = std::min(layer.origin_col + layer.width, floor_div(view_x + view_w - 1, tile_w) + 1);
-    w.row0 = std::max(layer.origin_row, floor_div(view_y, tile_h));
-    w.row1 = std::min(layer.origin_row + layer.height, floor_div(view_y + view_h - 1 + over_h, tile_h) + 1);
-    if (w.col1 < w.col0) w.col1 = w.col0;
-    if (w.row1 < w.row0) w.row1 = w.row0;
-    return w;
-}
-
-namespace {
-
-// A layer offset in whole px, floored as the camera is; bounded to the
-// range where the core's coordinates are exact, so no cast overflows.
-int64_t offset_px(double offset) {
-    constexpr double kExact = 9007199254740992.0;  // 2^53
-    return int64_t(std::floor(std::clamp(offset, -kExact, kExact)));
-}
-
-// A cell whose gid no tileset holds (Tiled loads such maps and shows the
-// tile as missing): a marker the size of the cell, so the hole is seen.
-void draw_missing(Canvas& c, int64_t x, int64_t y, int w, int h, uint8_t alpha) {
-    Rgba fill = kMissingTileColor;
-    fill.a = uint8_t(alpha * kMissingTileFillAlpha / 255);
-    c.fill_rect(clamp_int(x), clamp_int(y), w, h, fill);
-    Rgba edge = kMissingTileColor;
-    edge.a = alpha;
-    c.outline_rect(clamp_int(x), clamp_int(y), w, h, edge);
-}
-
-size_t draw_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLayer& layer, int64_t cx,
-                  int64_t cy, std::pair<int, int> over, double time_ms) {
-    const uint8_t alpha = opacity_alpha(layer.opacity);
-    // A layer's offset moves it as a camera moving the other way would.
-    const int64_t lx = cx - offset_px(layer.offset_x), ly = cy - offset_px(layer.offset_y);
-    const CellWindow w = visible_cells(layer, map.tile_width, map.tile_height, lx, ly, c.width(),
-                                       c.height(), over.first, over.second);
-    size_t drawn = 0;
-    for (int64_t row = w.row0; row < w.row1; ++row) {
-        const size_t first = static_cast<size_t>((row - layer.origin_row) * layer.width - layer.origin_col);
-        for (int64_t col = w.col0; col < w.col1; ++col) {
-            const uint32_t gid = layer.cells[first + static_cast<size_t>(col)];
-            if (!gid) continue;
-            const int64_t x = col * map.tile_width - lx;
-            SDL_Surface* pic = art.tile(gid, time_ms);
-            if (!pic) {
-                if (!map.gid_known(gid)) draw_missing(c, x, row * map.tile_height - ly, map.tile_width, map.tile_height, alpha);
-                continue;
-            }
-            c.blit(pic, int(x), int((row + 1) * map.tile_height - pic->h - ly), alpha);
-            ++drawn;
-        }
-    }
-    return drawn;
-}
+Rgba map_rgba(const MapColor& m) { return {m.r, m.g, m.b, 255}; }
 
 }  // namespace
 
-size_t draw_map(Canvas& c, TileArt& art, const Tilemap& map, int64_t cx, int64_t cy, double time_ms) {
-    const std::pair<int, int> over = overhang(map);
-    size_t drawn = 0;
-    for (const TileLayer& layer : map.layers)
-        if (layer.visible && layer.opacity > 0) drawn += draw_layer(c, art, map, layer, cx, cy, over, time_ms);
-    return drawn;
+size_t entity_split(std::span<const DrawnLayer> layers, std::string_view name) {
+    if (!name.empty())
+        for (size_t i = 0; i < layers.size(); ++i)
+            if (layers[i].kind == LayerKind::Object && layers[i].info && layers[i].info->name == name) return i + 1;
+    return layers.size();
 }
 
 DrawCounts draw_scene(Canvas& c, TileArt& art, const SceneView& v) {
     DrawCounts n;
     const int64_t cx = pixel_of(v.camera_x), cy = pixel_of(v.camera_y);
     art.bind(v.map);
-    c.clear(kBackground);
-    if (v.map) n.tiles = draw_map(c, art, *v.map, cx, cy, v.time_ms);
+    c.clear(v.background ? *v.background : v.map && v.map->background ? map_rgba(*v.map->background) : kBackground);
+    std::vector<DrawnLayer> layers;
+    if (v.map) layers = drawn_layers(*v.map);
+    // Entities go after the layer named to hold them, else after the last.
+    const size_t split = v.map ? entity_split(layers, v.entity_layer) : 0;
+    const std::span<const DrawnLayer> all(layers);
+    if (v.map) n.tiles = draw_layers(c, art, *v.map, all.first(split), cx, cy, v.time_ms);
     draw_entities(c, art, v, cx, cy, n);
+    if (v.map) n.tiles += draw_layers(c, art, *v.map, all.subspan(split), cx, cy, v.time_ms);
     if (v.commands)
         for (const DrawCommand& d : v.commands->commands) draw_command(c, art, d, cx, cy, v.time_ms);
     if (v.commands) n.commands = v.commands->commands.size();

@@ -2,6 +2,7 @@
 // the entities, the render hook's commands, then the debug overlay.
 #pragma once
 #include "canvas.hpp"
+#include "map_draw.hpp"
 #include "scene_view.hpp"
 #include "tile_art.hpp"
 
@@ -12,11 +13,14 @@ struct DrawCounts {
     size_t tiles = 0, sprites = 0, boxes = 0, commands = 0;
 };
 
+// Clears to the view's background, else the map's (backgroundcolor=, drawn
+// opaque), else kBackground; draws the map's layers with the entities after
+// the object layer view.entity_layer names (after every layer when it names
+// none), then the render hook's commands and the debug overlay.
 DrawCounts draw_scene(Canvas& canvas, TileArt& art, const SceneView& view);
 
-// The map's tile layers alone (part of draw_scene; exposed for tests and the bench).
-// time_ms is the game's clock, for animated tiles (SceneView::time_ms).
-size_t draw_map(Canvas& canvas, TileArt& art, const Tilemap& map, int64_t cam_x, int64_t cam_y,
-                double time_ms = 0);
+// How many of `layers` are drawn before the entities: up to and including
+// the first object layer called `name`; all of them when none is.
+size_t entity_split(std::span<const DrawnLayer> layers, std::string_view name);
 
 }  // namespace ds::render

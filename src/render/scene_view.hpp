@@ -3,6 +3,8 @@
 // facts. The bindings fill it from the scene; draw_scene draws it.
 #pragma once
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <span>
 #include <utility>
 #include <vector>
@@ -32,6 +34,11 @@ struct SceneView {
     // Indices into entities of the pairs pushed apart in the last frame.
     std::span<const std::pair<uint32_t, uint32_t>> pushed_pairs;
     std::span<const Trail> trails;
+    // The object layer the entities are drawn in (after its tile objects, so
+    // the layers above it draw over them); empty: after every layer.
+    std::string_view entity_layer;
+    // The clear colour the game chose; unset: the map's, else the engine's.
+    std::optional<Rgba> background;
     // The game's clock in ms (frame number × frame delay): which frame of
     // each animated tile shows.
     double time_ms = 0;

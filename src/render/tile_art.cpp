@@ -49,6 +49,20 @@ SDL_Surface* turned(SDL_Surface* image, const SDL_Rect& r, uint32_t flips) {
     return out;
 }
 
+std::string key_text(const MapColor& c) {
+    return std::to_string(c.r) + ',' + std::to_string(c.g) + ',' + std::to_string(c.b);
+}
+
+// The colour key as Tiled applies it: every opaque pixel of exactly that
+// colour becomes clear, and the picture then blends.
+void clear_key(SDL_Surface* img, const MapColor& c) {
+    const uint32_t key = 0xff000000u | uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | c.b;
+    for (int y = 0; y < img->h; ++y)
+        for (int x = 0; x < img->w; ++x)
+            if (get(img, x, y) == key) put(img, x, y, 0);
+    SDL_SetSurfaceBlendMode(img, SDL_BLENDMODE_BLEND);
+}
+
 }  // namespace
 
 std::string image_path(const Tileset& ts, const std::string& image) {
@@ -75,18 +89,24 @@ TileArt::~TileArt() {
     for (auto& [_, s] : images_) SDL_FreeSurface(s);
 }
 
-SDL_Surface* TileArt::image(const std::string& path) {
-    if (auto it = images_.find(path); it != images_.end()) return it->second;
+SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColor>& trans, const char* what) {
+    const std::string key = trans ? path + '\x1f' + key_text(*trans) : path;
+    if (auto it = images_.find(key); it != images_.end()) return it->second;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw RenderError("cannot read tileset image '" + path + "': no such file");
+        throw RenderError(std::string("cannot read ") + what + " '" + path + "': no such file");
     SDL_Surface* raw = IMG_Load(path.c_str());
-    if (!raw) throw RenderError("cannot read tileset image '" + path + "': " + IMG_GetError());
+    if (!raw) throw RenderError(std::string("cannot read ") + what + " '" + path + "': " + IMG_GetError());
     SDL_Surface* img = to_argb(raw);
     SDL_FreeSurface(raw);
-    if (!img) throw RenderError("cannot convert tileset image '" + path + "': " + SDL_GetError());
-    images_.emplace(path, img);
+    if (!img) throw RenderError(std::string("cannot convert ") + what + " '" + path + "': " + SDL_GetError());
+    if (trans) clear_key(img, *trans);
+    images_.emplace(key, img);
     return img;
+}
+
+SDL_Surface* TileArt::picture(const std::string& path, const std::optional<MapColor>& trans) {
+    return image(path, trans, "image layer image");
 }
 
 SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) {
@@ -95,10 +115,10 @@ SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) 
     if (ts.image.empty()) {  // an image collection: each tile its own picture
         const TileInfo* info = ts.tile(local_id);
         if (!info || info->image.empty()) return nullptr;
-        img = image(image_path(ts, info->image));
+        img = image(image_path(ts, info->image), ts.trans, "tileset image");
         r = {0, 0, img->w, img->h};
     } else {
-        img = image(image_path(ts, ts.image));
+        img = image(image_path(ts, ts.image), ts.trans, "tileset image");
         if (!tile_rect(ts, img->w, img->h, local_id, r)) return nullptr;
     }
     return turned(img, r, flips);
@@ -114,7 +134,7 @@ void TileArt::bind(const Tilemap* map) {
                                 std::to_string(ts.firstgid) + '\x1f' + std::to_string(ts.tile_width) +
                                 'x' + std::to_string(ts.tile_height) + '\x1f' +
                                 std::to_string(ts.margin) + ',' + std::to_string(ts.spacing) + ',' +
-                                std::to_string(ts.columns);
+                                std::to_string(ts.columns) + (ts.trans ? '\x1f' + key_text(*ts.trans) : "");
         bound_.push_back(&sheets_[key]);
         animated_.push_back(has_animation(ts));
     }

@@ -6,6 +6,7 @@
 #include <SDL.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -34,14 +35,20 @@ public:
     // cannot be read.
     SDL_Surface* tile(uint32_t raw_gid, double time_ms = 0);
 
-    // How many images have been read (each file once).
+    // A whole image (an image layer's), read once per path and colour key:
+    // pixels of the colour `trans` are clear. Throws RenderError naming the
+    // file when it cannot be read.
+    SDL_Surface* picture(const std::string& path, const std::optional<MapColor>& trans);
+
+    // How many images have been read (each file and colour key once).
     size_t images_loaded() const { return images_.size(); }
 
 private:
-    SDL_Surface* image(const std::string& path);
+    // `what` names the image in errors ("tileset image").
+    SDL_Surface* image(const std::string& path, const std::optional<MapColor>& trans, const char* what);
     SDL_Surface* cut(const Tileset& ts, uint32_t local_id, uint32_t flips);
 
-    std::unordered_map<std::string, SDL_Surface*> images_;  // by path
+    std::unordered_map<std::string, SDL_Surface*> images_;  // by path and colour key
     // By tileset (its identity as text: image folder, image, name, firstgid
     // and cut) then by local id and flips.
     using Sheet = std::unordered_map<uint64_t, SDL_Surface*>;

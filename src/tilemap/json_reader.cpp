@@ -14,7 +14,9 @@
 #include "json_dom.hpp"
 #include "json_properties.hpp"
 #include "json_values.hpp"
+#include "draw_attrs.hpp"
 #include "map_build.hpp"
+#include "map_objects.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
 
@@ -134,7 +136,7 @@ std::pair<MapObject, ObjectFields> read_object(const Node& n) {
     o.visible = json::bool_or(n, "visible", true);
     f.shape = read_shape(n, o);
     if (f.text) o.text = read_text(n["text"]);
-    if (!f.shape && o.gid != 0) o.shape = ObjectShape::Tile;
+    o.shape = object_kind(o.gid, o.shape);
     o.properties = read_properties(n);
     return {std::move(o), f};
 }
@@ -195,6 +197,27 @@ TileInfo read_tile(const JsonFile& f, const Node& n) {
     return t;
 }
 
+// A colour key (map_color.hpp): nullopt when absent, an error naming the key
+// and its value when malformed.
+std::optional<MapColor> color_or(const Node& n, const char* key) {
+    if (!n.has(key)) return std::nullopt;
+    const std::string text = n[key].string();
+    const auto c = parse_map_color(text);
+    if (!c) n[key].fail("is \"" + text + "\", not a colour (#RRGGBB or #AARRGGBB)");
+    return c;
+}
+
+// One of a key's named values (`parse` reads them): `fallback` when absent,
+// an error naming the value when unknown.
+template <typename T, typename Parse>
+T named_or(const Node& n, const char* key, T fallback, Parse parse, const char* expected) {
+    if (!n.has(key)) return fallback;
+    const std::string text = n[key].string();
+    const std::optional<T> v = parse(std::string_view(text));
+    if (!v) n[key].fail("is \"" + text + "\", expected one of " + expected);
+    return *v;
+}
+
 // What a tileset says of itself, embedded or in a .tsj.
 void read_tileset_body(const JsonFile& f, const Node& n, Tileset& ts) {
     ts.name = json::string_or(n, "name");
@@ -211,6 +234,12 @@ void read_tileset_body(const JsonFile& f, const Node& n, Tileset& ts) {
         ts.image_width = bounded(n, "imagewidth", kMaxImageSide);
         ts.image_height = bounded(n, "imageheight", kMaxImageSide);
     }
+    ts.trans = color_or(n, "transparentcolor");
+    ts.object_alignment = named_or(n, "objectalignment", ObjectAlignment::Unspecified, parse_object_alignment,
+                                   "unspecified, topleft, top, topright, left, center, right, "
+                                   "bottomleft, bottom, bottomright");
+    ts.render_size = named_or(n, "tilerendersize", TileRenderSize::Tile, parse_tile_render_size, "tile, grid");
+    ts.fill_mode = named_or(n, "fillmode", FillMode::Stretch, parse_fill_mode, "stretch, preserve-aspect-fit");
     if (n.has("tileoffset")) {
         const Node off = n["tileoffset"];
         off.object();
@@ -358,6 +387,7 @@ LayerInfo read_layer_info(const Node& n) {
     info.parallax_x = json::number_or(n, "parallaxx", 1);
     info.parallax_y = json::number_or(n, "parallaxy", 1);
     info.tint_color = json::string_or(n, "tintcolor");
+    info.tint = color_or(n, "tintcolor");
     info.properties = read_properties(n);
     if (info.kind == LayerKind::Image) {
         info.image = json::string_or(n, "image");
@@ -365,6 +395,7 @@ LayerInfo read_layer_info(const Node& n) {
         info.image_height = bounded(n, "imageheight", kMaxImageSide);
         info.repeat_x = json::bool_or(n, "repeatx", false);
         info.repeat_y = json::bool_or(n, "repeaty", false);
+        info.image_trans = color_or(n, "transparentcolor");
     }
     return info;
 }
@@ -386,6 +417,7 @@ void read_object_layer(const JsonFile& f, const Node& n, LayerInfo& info, Tilema
     ObjectLayer l;
     l.name = info.name;
     l.properties = info.properties;
+    l.top_down = named_or(n, "draworder", true, parse_draw_order, "index, topdown");
     if (n.has("objects")) {
         const Node objects = n["objects"];
         for (size_t i = 0; i < objects.array().size(); ++i)
@@ -456,6 +488,11 @@ void read_map_header(const JsonFile& f, const Node& root, Tilemap& map) {
     check_map_header(f.where, *f.state, map, orientation);
     map.type = json::string_or(root, "class");
     map.background_color = json::string_or(root, "backgroundcolor");
+    map.background = color_or(root, "backgroundcolor");
+    map.parallax_origin_x = json::number_or(root, "parallaxoriginx", 0);
+    map.parallax_origin_y = json::number_or(root, "parallaxoriginy", 0);
+    map.render_order = named_or(root, "renderorder", RenderOrder::RightDown, parse_render_order,
+                                "right-down, right-up, left-down, left-up");
     map.properties = read_properties(root);
 }
 

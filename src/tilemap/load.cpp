@@ -33,12 +33,38 @@ void warn_bad_shapes(Tilemap& map) {
         }
 }
 
+// A tile object whose gid no tileset holds: Tiled loads such a map and
+// shows the tile as missing, and so does the engine, saying so once per
+// layer (naming the object and the gid); an error for a strict load, as a
+// cell's unknown gid is.
+void check_object_gids(Tilemap& map, const LoadState& s) {
+    for (const ObjectLayer& layer : map.object_layers) {
+        size_t unknown = 0;
+        const MapObject* first = nullptr;
+        for (const MapObject& o : layer.objects) {
+            if (o.shape != ObjectShape::Tile || map.gid_known(o.gid & kGidMask)) continue;
+            if (s.options.strict)
+                throw MapError(map.path, 0, "tile object " + std::to_string(o.id) + " of layer '" + layer.name +
+                                                "' has gid " + std::to_string(o.gid & kGidMask) +
+                                                ", beyond every tileset");
+            if (unknown++ == 0) first = &o;
+        }
+        if (first)
+            map.warnings.push_back(map.path + ": tile object " + std::to_string(first->id) + " of layer '" +
+                                   layer.name + "' has gid " + std::to_string(first->gid & kGidMask) +
+                                   ", beyond every tileset" +
+                                   (unknown > 1 ? " (" + std::to_string(unknown) + " objects in all)" : "") +
+                                   "; drawn as a missing tile");
+    }
+}
+
 Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
     const Where file{path, 0, ""};
     Tilemap map = sniff_syntax(text) == Syntax::Json ? read_json_map(text, file, s)
                                                      : read_tmx_map(text, file, s);
     inherit_tile_classes(map);
     warn_bad_shapes(map);
+    check_object_gids(map, s);
     return map;
 }
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "map_objects.hpp"
 #include "read_file.hpp"
 #include "readers.hpp"
 
@@ -417,7 +418,7 @@ void merge_template(const Where& w, LoadState& s, const ObjectTemplate& tmpl,
     }
     if (!fields.text) object.text = t.text;
     if (!fields.gid) object.gid = map ? map_tile_gid(w, s, tmpl, *map) : t.gid;
-    if (object.gid != 0 && !fields.shape) object.shape = ObjectShape::Tile;
+    object.shape = object_kind(object.gid, object.shape);
     merge_properties(t.properties, object.properties);
     object.template_path = tmpl.path;
 }

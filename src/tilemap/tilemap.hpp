@@ -3,6 +3,7 @@
 // into the TileGrid physics reads.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include "../shared_cells.hpp"
 #include "../tile_grid.hpp"
 #include "map_bounds.hpp"
+#include "map_color.hpp"
 
 namespace ds {
 
@@ -47,8 +49,18 @@ struct AnimationFrame {
     int duration_ms = 0;
 };
 
-// What an object is, as Tiled draws it. A tile object is one with a gid.
+// What an object is, as Tiled draws it. A tile object is one with a gid
+// (object_kind in map_objects.hpp decides).
 enum class ObjectShape : uint8_t { Rectangle, Ellipse, Point, Polygon, Polyline, Text, Tile };
+
+// The point of a tile object's picture its (x, y) names (Tiled's
+// objectalignment). Unspecified: BottomLeft on an orthogonal map.
+enum class ObjectAlignment : uint8_t {
+    Unspecified, TopLeft, Top, TopRight, Left, Center, Right, BottomLeft, Bottom, BottomRight
+};
+enum class TileRenderSize : uint8_t { Tile, Grid };
+enum class FillMode : uint8_t { Stretch, PreserveAspectFit };
+enum class RenderOrder : uint8_t { RightDown, RightUp, LeftDown, LeftUp };
 
 struct ObjectPoint {
     double x = 0, y = 0;  // px, relative to the object's x, y
@@ -111,6 +123,16 @@ struct Tileset {
     std::string type;  // class= of the tileset itself
     Properties properties;  // the tileset's own
     int tile_offset_x = 0, tile_offset_y = 0;  // <tileoffset>, px
+    // The image's colour key (<image trans=>): pixels of this colour are
+    // clear. Not set when the file gives none.
+    std::optional<MapColor> trans;
+    // Where a tile object's (x, y) sits on its picture (objectalignment=);
+    // Unspecified is bottom-left on an orthogonal map.
+    ObjectAlignment object_alignment = ObjectAlignment::Unspecified;
+    // Tiled 1.9: tiles drawn at their own size or at the map's grid size
+    // (tilerendersize=), and how a picture fills a size not its own (fillmode=).
+    TileRenderSize render_size = TileRenderSize::Tile;
+    FillMode fill_mode = FillMode::Stretch;
 
     // An image collection: no single image, each tile brings its own. Its
     // tile ids may have gaps (Tiled keeps ids of deleted tiles unused).
@@ -155,6 +177,9 @@ struct ObjectLayer {
     std::string name;
     Properties properties;
     std::vector<MapObject> objects;
+    // Drawn by y (stable), as Tiled's default draworder "topdown" says;
+    // false for draworder="index": in the file's order.
+    bool top_down = true;
 };
 
 // Every layer as the file nests it, for renderers and level scripts; physics
@@ -173,10 +198,12 @@ struct LayerInfo {
     double offset_x = 0, offset_y = 0;    // px
     double parallax_x = 1, parallax_y = 1;
     std::string tint_color;  // as written, empty when none
+    std::optional<MapColor> tint;  // tint_color read
     Properties properties;
     size_t index = 0;  // Tile: into layers; Object: into object_layers
     std::string image;  // Image: as written, relative to the map's folder
     int image_width = 0, image_height = 0;
+    std::optional<MapColor> image_trans;  // Image: its colour key
     bool repeat_x = false, repeat_y = false;
     std::vector<LayerInfo> children;  // Group
 };
@@ -208,6 +235,13 @@ struct Tilemap {
     std::vector<LayerInfo> layer_tree;  // every layer, groups nested
     std::string type;  // class= of the map
     std::string background_color;  // as written, empty when none
+    std::optional<MapColor> background;  // background_color read
+    // The point parallax layers line up at when it is the view's centre
+    // (parallaxoriginx/y, Tiled 1.8), px.
+    double parallax_origin_x = 0, parallax_origin_y = 0;
+    // renderorder=: the order a tile layer's cells are drawn in, which shows
+    // where tiles larger than a cell overlap.
+    RenderOrder render_order = RenderOrder::RightDown;
     // Things the map does that Tiled allows but the loader had to interpret
     // (a gid beyond every tileset, loaded as an empty, non-solid cell).
     // Each names the file, the layer and the cell.

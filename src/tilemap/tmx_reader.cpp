@@ -16,7 +16,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "draw_attrs.hpp"
 #include "map_build.hpp"
+#include "map_objects.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
 #include "xml_encoding.hpp"
@@ -205,6 +207,30 @@ int bounded_attr(const XmlFile& f, const XMLElement* e, const char* name, int64_
     return v;
 }
 
+// A colour attribute (map_color.hpp): nullopt when absent, an error naming
+// the attribute and its value when malformed.
+std::optional<MapColor> color_attr(const XmlFile& f, const XMLElement* e, const char* name) {
+    const char* text = e->Attribute(name);
+    if (!text) return std::nullopt;
+    const auto c = parse_map_color(text);
+    if (!c)
+        f.fail(e, tag(e) + " attribute " + name + "='" + text +
+                      "' is not a colour (#RRGGBB or #AARRGGBB)");
+    return c;
+}
+
+// One of an attribute's named values (`parse` reads them); `fallback` when
+// absent, an error naming the attribute and its value when unknown.
+template <typename T, typename Parse>
+T named_attr(const XmlFile& f, const XMLElement* e, const char* name, T fallback, Parse parse,
+             const char* expected) {
+    const char* text = e->Attribute(name);
+    if (!text) return fallback;
+    const std::optional<T> v = parse(std::string_view(text));
+    if (!v) f.fail(e, tag(e) + " attribute " + name + "='" + text + "' is not one of " + expected);
+    return *v;
+}
+
 void read_image_size(const XmlFile& f, const XMLElement* img, int& w, int& h) {
     w = bounded_attr(f, img, "width", kMaxImageSide);
     h = bounded_attr(f, img, "height", kMaxImageSide);
@@ -254,7 +280,15 @@ void read_tileset_body(const XmlFile& f, const XMLElement* e, Tileset& ts) {
     if (const XMLElement* img = e->FirstChildElement("image")) {
         ts.image = str_attr(img, "source");
         read_image_size(f, img, ts.image_width, ts.image_height);
+        ts.trans = color_attr(f, img, "trans");
     }
+    ts.object_alignment = named_attr(f, e, "objectalignment", ObjectAlignment::Unspecified,
+                                     parse_object_alignment, "unspecified, topleft, top, topright, "
+                                     "left, center, right, bottomleft, bottom, bottomright");
+    ts.render_size = named_attr(f, e, "tilerendersize", TileRenderSize::Tile, parse_tile_render_size,
+                                "tile, grid");
+    ts.fill_mode = named_attr(f, e, "fillmode", FillMode::Stretch, parse_fill_mode,
+                              "stretch, preserve-aspect-fit");
     each_child(e, "tile", [&](const XMLElement* t) { ts.tiles.push_back(read_tile(f, t)); });
     sort_tiles(ts);
 }
@@ -360,6 +394,7 @@ LayerInfo read_layer_info(const XmlFile& f, const XMLElement* e, LayerKind kind)
     info.parallax_x = double_attr(f, e, "parallaxx", 1);
     info.parallax_y = double_attr(f, e, "parallaxy", 1);
     info.tint_color = str_attr(e, "tintcolor");
+    info.tint = color_attr(f, e, "tintcolor");
     info.properties = read_properties(f, e);
     return info;
 }
@@ -467,7 +502,7 @@ MapObject read_object(const XmlFile& f, const XMLElement* e, Tilemap* map, Objec
     o.visible = flag_attr(f, e, "visible", true);
     o.properties = read_properties(f, e);
     read_shape(f, e, o, fields);
-    if (o.gid != 0) o.shape = ObjectShape::Tile;
+    o.shape = object_kind(o.gid, o.shape);
     if (written) *written = fields;
     if (const char* tmpl = e->Attribute("template"); tmpl && !written) {
         const auto t = load_template_file(resolve_path(f.where.file, tmpl), *f.state, f.at(e));
@@ -480,6 +515,7 @@ void read_object_layer(const XmlFile& f, const XMLElement* e, Tilemap& map, Laye
     ObjectLayer l;
     l.name = info.name;
     l.properties = info.properties;
+    l.top_down = named_attr(f, e, "draworder", true, parse_draw_order, "index, topdown");
     each_child(e, "object",
                [&](const XMLElement* o) { l.objects.push_back(read_object(f, o, &map, nullptr)); });
     info.index = map.object_layers.size();
@@ -492,6 +528,7 @@ void read_image_layer(const XmlFile& f, const XMLElement* e, LayerInfo& info) {
     if (const XMLElement* img = e->FirstChildElement("image")) {
         info.image = str_attr(img, "source");
         read_image_size(f, img, info.image_width, info.image_height);
+        info.image_trans = color_attr(f, img, "trans");
     }
 }
 
@@ -565,6 +602,11 @@ void read_map_header(const XmlFile& f, const XMLElement* root, Tilemap& map) {
     map.infinite = flag_attr(f, root, "infinite", false);
     map.type = type_or_class(root);
     map.background_color = str_attr(root, "backgroundcolor");
+    map.background = color_attr(f, root, "backgroundcolor");
+    map.parallax_origin_x = double_attr(f, root, "parallaxoriginx", 0);
+    map.parallax_origin_y = double_attr(f, root, "parallaxoriginy", 0);
+    map.render_order = named_attr(f, root, "renderorder", RenderOrder::RightDown, parse_render_order,
+                                  "right-down, right-up, left-down, left-up");
     check_map_header(f.at(root), *f.state, map, orientation);
     map.properties = read_properties(f, root);
 }

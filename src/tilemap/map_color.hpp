@@ -1,0 +1,19 @@
+// A colour as a Tiled map writes it (backgroundcolor=, tintcolor=, an
+// image's trans=): "#RRGGBB" or "#AARRGGBB", the '#' optional.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace ds {
+
+struct MapColor {
+    uint8_t r = 0, g = 0, b = 0, a = 255;
+    friend bool operator==(const MapColor&, const MapColor&) = default;
+};
+
+// The colour `text` names, or nullopt when it is not one of the forms above
+// (the readers turn that into an error naming the file and the value).
+std::optional<MapColor> parse_map_color(std::string_view text);
+
+}  // namespace ds
