@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "font.hpp"
 #include "render_error.hpp"
@@ -239,8 +240,9 @@ namespace {
 uint32_t times(uint32_t a, uint32_t b) { return (a * b + 127) / 255; }
 
 // Where a picture pixel edge falls exactly on a canvas pixel centre (a
-// scale of 3/4 puts every fourth there), the pixel before it is taken, as
-// Qt's fixed-point sampling does: Tiled's pictures match ours then.
+// scale of 3/4 puts every fourth there), the source image's pixel before it
+// is taken, as Qt's fixed-point sampling does: Tiled's pictures match ours
+// then, flipped tiles too (PictureBox::reversed_x/y).
 constexpr double kTie = 1.0 / 65536;
 
 // The canvas pixels a turned box can touch: its corners' bounds, clipped.
@@ -260,36 +262,89 @@ PixelSpan touched(const PictureBox& b, double cos_t, double sin_t, int width, in
             clip(std::ceil(hi_y), height)};
 }
 
+// Qt's rounding to whole px: half up.
+int64_t q_round(double v) { return int64_t(std::floor(v + 0.5)); }
+
+// For each canvas pixel t in [first, first + size) along one axis, the
+// source pixel a picture n px long, drawn over [a0, a0 + len), shows there,
+// or -1: exactly as Qt 5's scaled blit picks it (qt_scale_image_* in
+// qblendfunctions: 16.16 fixed point from the first pixel drawn, the step
+// truncated), so that a stretched tile matches Tiled's picture pixel for
+// pixel. `reversed`: the picture runs against its source (a flip), which Qt
+// draws with a negative step from the source's far end (rounded as the
+// forward case is: Tiled 1.8 on Debian's Qt 5.15 draws it so).
+struct AxisMap {
+    int64_t first = 0, last = 0;  // canvas px drawn: [first, last)
+    std::vector<int> source;
+};
+AxisMap qt_axis(double a0, double len, int n, bool reversed, int canvas) {
+    AxisMap m;
+    m.first = std::max<int64_t>(q_round(a0), 0);
+    m.last = std::min<int64_t>(q_round(a0 + len), canvas);
+    if (m.first >= m.last) return m;
+    const double s = (reversed ? -n : n) / len;
+    const auto step = int64_t(65536 * s);  // truncated toward zero, as Qt's int conversion
+    const double from = (double(m.first) + 0.5 - a0) * s * 65536;
+    int64_t at = (reversed ? int64_t(n) * 65536 : 0) + int64_t(std::ceil(from)) - 1;
+    m.source.resize(size_t(m.last - m.first));
+    for (int& v : m.source) {
+        const int64_t i = at >> 16;  // arithmetic: a negative stays out of range
+        v = i >= 0 && i < n ? int(reversed ? n - 1 - i : i) : -1;
+        at += step;
+    }
+    return m;
+}
+
 }  // namespace
+
+void Canvas::blend_sample(uint32_t* row, int x, uint32_t s, bool opaque, uint8_t alpha, Rgba tint) {
+    uint32_t a = opaque ? 255 : s >> 24;
+    a = times(times(a, tint.a), alpha);
+    if (a == 0) return;
+    const uint32_t r = times(s >> 16 & 0xff, tint.r), g = times(s >> 8 & 0xff, tint.g), bl = times(s & 0xff, tint.b);
+    const uint32_t d = row[x];
+    const auto over = [&](uint32_t src, uint32_t dst) { return (src * a + dst * (255 - a) + 127) / 255; };
+    row[x] = 0xff000000u | over(r, d >> 16 & 0xff) << 16 | over(g, d >> 8 & 0xff) << 8 | over(bl, d & 0xff);
+}
 
 void Canvas::draw_picture(SDL_Surface* pic, const PictureBox& b, uint8_t alpha, Rgba tint) {
     if (!pic || pic->w <= 0 || pic->h <= 0 || !(b.w > 0) || !(b.h > 0) || alpha == 0) return;
     if (pic->format->format != SDL_PIXELFORMAT_ARGB8888 || SDL_MUSTLOCK(pic)) return;
-    const double rad = b.degrees * (3.14159265358979323846 / 180.0);
-    const double cos_t = b.degrees == 0 ? 1 : std::cos(rad), sin_t = b.degrees == 0 ? 0 : std::sin(rad);
-    const PixelSpan span = touched(b, cos_t, sin_t, width(), height());
+    if (!(std::fabs(b.cx) < 1e9 && std::fabs(b.cy) < 1e9 && b.w < 1e9 && b.h < 1e9)) return;
     SDL_BlendMode mode;
     SDL_GetSurfaceBlendMode(pic, &mode);
     const bool opaque = mode == SDL_BLENDMODE_NONE;
     const double left = b.cx - b.w / 2, top = b.cy - b.h / 2;
+    const auto sample = [&](int u, int v) {
+        return reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(pic->pixels) + v * pic->pitch)[u];
+    };
+    if (b.degrees == 0 && !b.transposed) {  // stretched, maybe flipped: Qt's scaled blit
+        const AxisMap xs = qt_axis(left, b.w, pic->w, b.reversed_x, width());
+        const AxisMap ys = qt_axis(top, b.h, pic->h, b.reversed_y, height());
+        for (int64_t y = ys.first; y < ys.last; ++y) {
+            const int v = ys.source[size_t(y - ys.first)];
+            if (v < 0) continue;
+            auto* row = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(surface_->pixels) + y * surface_->pitch);
+            for (int64_t x = xs.first; x < xs.last; ++x)
+                if (const int u = xs.source[size_t(x - xs.first)]; u >= 0)
+                    blend_sample(row, int(x), sample(u, v), opaque, alpha, tint);
+        }
+        return;
+    }
+    const double rad = b.degrees * (3.14159265358979323846 / 180.0);
+    const double cos_t = b.degrees == 0 ? 1 : std::cos(rad), sin_t = b.degrees == 0 ? 0 : std::sin(rad);
+    const PixelSpan span = touched(b, cos_t, sin_t, width(), height());
     const double to_u = pic->w / b.w, to_v = pic->h / b.h;
+    const double tie_x = b.reversed_x ? kTie : -kTie, tie_y = b.reversed_y ? kTie : -kTie;
     for (int y = span.y0; y < span.y1; ++y) {
         auto* row = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(surface_->pixels) + y * surface_->pitch);
         for (int x = span.x0; x < span.x1; ++x) {
             // The pixel's centre, turned back about the pivot into the box.
             const double px = x + 0.5 - b.pivot_x, py = y + 0.5 - b.pivot_y;
             const double bx = b.pivot_x + px * cos_t + py * sin_t, by = b.pivot_y - px * sin_t + py * cos_t;
-            const double u = std::floor((bx - left) * to_u - kTie), v = std::floor((by - top) * to_v - kTie);
+            const double u = std::floor((bx - left) * to_u + tie_x), v = std::floor((by - top) * to_v + tie_y);
             if (!(u >= 0 && u < pic->w && v >= 0 && v < pic->h)) continue;
-            const uint32_t s = reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(pic->pixels) +
-                                                                 int(v) * pic->pitch)[int(u)];
-            uint32_t a = opaque ? 255 : s >> 24;
-            a = times(times(a, tint.a), alpha);
-            if (a == 0) continue;
-            const uint32_t r = times(s >> 16 & 0xff, tint.r), g = times(s >> 8 & 0xff, tint.g), bl = times(s & 0xff, tint.b);
-            const uint32_t d = row[x];
-            const auto over = [&](uint32_t src, uint32_t dst) { return (src * a + dst * (255 - a) + 127) / 255; };
-            row[x] = 0xff000000u | over(r, d >> 16 & 0xff) << 16 | over(g, d >> 8 & 0xff) << 8 | over(bl, d & 0xff);
+            blend_sample(row, x, sample(int(u), int(v)), opaque, alpha, tint);
         }
     }
 }

@@ -15,6 +15,12 @@ namespace ds::render {
 struct PictureBox {
     double cx = 0, cy = 0, w = 0, h = 0;
     double degrees = 0, pivot_x = 0, pivot_y = 0;
+    // The picture runs against its source image along x (y): a tile's
+    // horizontal (vertical) flip. Where sampling ties, the source pixel
+    // before the tie is taken, so a flipped axis takes the one after it.
+    bool reversed_x = false, reversed_y = false;
+    // The picture is its source image transposed (a tile's diagonal flip).
+    bool transposed = false;
 };
 
 class Canvas {
@@ -53,6 +59,8 @@ public:
 
 private:
     void blend(int x, int y, Rgba c);  // no clipping: callers clip
+    // One picture pixel `s` over row[x], tinted and faded (draw_picture).
+    static void blend_sample(uint32_t* row, int x, uint32_t s, bool opaque, uint8_t alpha, Rgba tint);
     SDL_Surface* surface_ = nullptr;
 };
 

@@ -65,7 +65,8 @@ void draw_missing(Canvas& c, int64_t x, int64_t y, int w, int h, uint8_t alpha) 
 // box (by the smaller factor, centred, under preserve-aspect-fit), moved by
 // the tileset's tile offset at that scale; a diagonal flip turns the
 // picture about the box's bottom-left corner.
-PictureBox cell_box(const Tileset& ts, SDL_Surface* pic, bool diagonal, double x, double y, double w, double h) {
+PictureBox cell_box(const Tileset& ts, SDL_Surface* pic, uint32_t raw_gid, double x, double y, double w, double h) {
+    const bool diagonal = raw_gid & kFlipDiagonal;
     const double iw = diagonal ? pic->h : pic->w, ih = diagonal ? pic->w : pic->h;
     double sx = w / iw, sy = h / ih;
     if (ts.fill_mode == FillMode::PreserveAspectFit) sx = sy = std::min(sx, sy);
@@ -78,6 +79,8 @@ PictureBox cell_box(const Tileset& ts, SDL_Surface* pic, bool diagonal, double x
         b.cx += half_diff, b.cy += half_diff;
         std::swap(b.w, b.h);
     }
+    b.reversed_x = raw_gid & kFlipHorizontal, b.reversed_y = raw_gid & kFlipVertical;
+    b.transposed = diagonal;
     return b;
 }
 
@@ -125,7 +128,7 @@ size_t draw_tile_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLa
             const bool diagonal = gid & kFlipDiagonal;
             double bw = diagonal ? pic->h : pic->w, bh = diagonal ? pic->w : pic->h;
             if (ts.render_size == TileRenderSize::Grid) bw = map.tile_width, bh = map.tile_height;
-            put_picture(c, pic, cell_box(ts, pic, diagonal, double(x), double(bottom) - bh, bw, bh), p.alpha, p.tint);
+            put_picture(c, pic, cell_box(ts, pic, gid, double(x), double(bottom) - bh, bw, bh), p.alpha, p.tint);
             ++drawn;
         }
     }
@@ -156,7 +159,7 @@ size_t draw_object_layer(Canvas& c, TileArt& art, const Tilemap& map, const Obje
             continue;
         }
         if (!pic || !ts) continue;
-        PictureBox b = cell_box(*ts, pic, o.gid & kFlipDiagonal, x, y, box.width, box.height);
+        PictureBox b = cell_box(*ts, pic, o.gid, x, y, box.width, box.height);
         b.degrees = box.rotation;
         b.pivot_x = box.pivot_x - double(p.cam.x), b.pivot_y = box.pivot_y - double(p.cam.y);
         put_picture(c, pic, b, p.alpha, p.tint);

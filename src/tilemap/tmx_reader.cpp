@@ -523,6 +523,13 @@ void read_object_layer(const XmlFile& f, const XMLElement* e, Tilemap& map, Laye
 }
 
 void read_image_layer(const XmlFile& f, const XMLElement* e, LayerInfo& info) {
+    // Tiled's reader: an image layer without offsetx= is placed by its old
+    // x=, y= attributes (before Tiled 1.0 they were its position), its
+    // offsety= ignored. Tiled itself draws it there, so the engine does too.
+    if (!e->Attribute("offsetx")) {
+        info.offset_x = double_attr(f, e, "x", 0);
+        info.offset_y = double_attr(f, e, "y", 0);
+    }
     info.repeat_x = flag_attr(f, e, "repeatx", false);
     info.repeat_y = flag_attr(f, e, "repeaty", false);
     if (const XMLElement* img = e->FirstChildElement("image")) {
