@@ -224,6 +224,21 @@ bool trails_of(SCM current, const std::vector<EntityView>& now, SCM past_lists, 
     return true;
 }
 
+// The map property entity-layer names the object layer the entities are
+// drawn in (the layers after it draw over them); a name no object layer has
+// is an error, not a silent "on top".
+void entity_layer_of(const Tilemap& map, SceneView& view, Failure& f) {
+    const Property* p = find_property(map.properties, "entity-layer");
+    if (!p) return;
+    for (const ObjectLayer& l : map.object_layers)
+        if (l.name == p->value) {
+            view.entity_layer = p->value;
+            return;
+        }
+    fail(f, "misc-error", scm_list_2(scm_from_utf8_string(p->value.c_str()), scm_from_utf8_string(map.path.c_str())),
+         "map property entity-layer is ~S, which names no object layer of ~S");
+}
+
 SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history,
                  SCM time_ms) {
     Failure f;
@@ -233,6 +248,7 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
         if (is_tilemap(tilemap)) view.map = &tilemap_handle(tilemap).map;
         else fail_arg(f, "tilemap", tilemap, "a tilemap or #f");
     }
+    if (d && !f && view.map) entity_layer_of(*view.map, view, f);
     if (d && !f && !SCM_UNBNDP(time_ms)) from_scm(time_ms, view.time_ms, "time-ms", f);
     if (d && !f && from_scm(cam_x, view.camera_x, "camera x", f) && from_scm(cam_y, view.camera_y, "camera y", f))
         guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too

@@ -22,6 +22,7 @@ box the demos give that thing (a 12x12 box: columns 2-13, rows 4-15; the 2x6
 bullet: columns 7-8, rows 10-15). Characters face right; the engine mirrors
 them for left.
 """
+import math
 import os
 import struct
 import sys
@@ -618,6 +619,37 @@ def png(pixels, scale=1):
             + chunk(b"IEND", b""))
 
 
+# ---------------------------------------------------------------- backdrop.png
+# The platformer's far background, an image layer repeated along x that
+# scrolls at a third of the camera's speed (parallaxx 0.33): a sky that
+# darkens upward and two ranges of hills whose outlines repeat every
+# BACKDROP_WIDTH px, so the picture tiles without a seam.
+BACKDROP_WIDTH, BACKDROP_HEIGHT = 192, 240
+
+
+def backdrop():
+    def mix(a, b, t):
+        return tuple(round(x + (y - x) * t) for x, y in zip(a, b))
+
+    def ridge(x, base, amp, phase):
+        w = 2 * math.pi * x / BACKDROP_WIDTH
+        return base - amp * (0.6 * math.sin(w + phase) + 0.4 * math.sin(3 * w + 2 * phase))
+
+    rows = []
+    for y in range(BACKDROP_HEIGHT):
+        row = []
+        for x in range(BACKDROP_WIDTH):
+            if y > ridge(x, 150, 22, 0.0):
+                c = (52, 70, 96)       # near hills
+            elif y > ridge(x, 120, 30, 1.7):
+                c = (74, 96, 128)      # far hills
+            else:
+                c = mix((34, 46, 84), (118, 150, 186), y / 150)  # sky
+            row.append(c + (255,))
+        rows.append(row)
+    return rows
+
+
 def sprites_tsx():
     rows = -(-len(SPRITES) // SHEET_COLUMNS)
     lines = [
@@ -664,6 +696,7 @@ def main(argv):
     write(os.path.join(HERE, "level-tiles.png"), png(level_tiles))
     write(os.path.join(HERE, "sprites.png"), png(sprites))
     write(os.path.join(HERE, "sprites.tsx"), sprites_tsx())
+    write(os.path.join(HERE, "backdrop.png"), png(backdrop()))
 
     if len(argv) == 3 and argv[1] == "--preview":
         os.makedirs(argv[2], exist_ok=True)

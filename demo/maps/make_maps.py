@@ -242,20 +242,43 @@ LEVEL_TILESET = """<?xml version="1.0" encoding="UTF-8"?>
 """
 
 
-def tmx(rows, encoding, objects=(), title="", level_tiles=False):
+# The platformer's layers around its level: a far backdrop (an image layer
+# repeated along x, scrolling at a third of the camera's speed) under it,
+# and grass in front: a tile layer after the object layer the entities are
+# drawn in (the map property entity-layer names it), so the player walks
+# behind the tufts. Grass never collides (tile 3 is not solid).
+BACKDROP = """ <imagelayer id="3" name="backdrop" repeatx="1" parallaxx="0.33" parallaxy="1">
+  <image source="backdrop.png" width="192" height="240"/>
+ </imagelayer>
+"""
+FRONT_GRASS_COLUMNS = [6, 7, 8, 17, 18, 27, 28, 40, 41, 60, 61, 62, 95, 96]
+
+
+def front_layer(rows, width, height, encoding):
+    gids = [0] * (width * height)
+    for col in FRONT_GRASS_COLUMNS:
+        row = next(r for r in range(height) if rows[r][col] == "#") - 1
+        assert rows[row][col] == ".", f"front grass at column {col} would cover a tile"
+        gids[row * width + col] = GIDS['"']
+    return (f' <layer id="4" name="front" width="{width}" height="{height}">\n'
+            f'{data_element(gids, width, encoding)}\n </layer>\n')
+
+
+def tmx(rows, encoding, objects=(), title="", level_tiles=False, scenery=False):
     gids, width, height = gids_of(rows)
     level_tileset = f' <tileset firstgid="{LEVEL_FIRSTGID}" source="level-tiles.tsx"/>\n' if level_tiles else ""
+    entity_layer = '  <property name="entity-layer" value="spawns"/>\n' if scenery else ""
     return f"""<?xml version="1.0" encoding="UTF-8"?>
-<map version="1.10" tiledversion="1.10.2" orientation="orthogonal" renderorder="right-down" width="{width}" height="{height}" tilewidth="{TILE}" tileheight="{TILE}" infinite="0" nextlayerid="3" nextobjectid="{len(objects) + 1}">
+<map version="1.10" tiledversion="1.10.2" orientation="orthogonal" renderorder="right-down" width="{width}" height="{height}" tilewidth="{TILE}" tileheight="{TILE}" infinite="0" nextlayerid="{5 if scenery else 3}" nextobjectid="{len(objects) + 1}">
  <properties>
-  <property name="title" value="{title}"/>
+{entity_layer}  <property name="title" value="{title}"/>
  </properties>
  <tileset firstgid="1" source="demo-tiles.tsx"/>
  <tileset firstgid="{SPRITES_FIRSTGID}" source="sprites.tsx"/>
-{level_tileset} <layer id="1" name="tiles" width="{width}" height="{height}">
+{level_tileset}{BACKDROP if scenery else ""} <layer id="1" name="tiles" width="{width}" height="{height}">
 {data_element(gids, width, encoding)}
  </layer>
-{objects_element(objects)}</map>
+{objects_element(objects)}{front_layer(rows, width, height, encoding) if scenery else ""}</map>
 """
 
 
@@ -268,7 +291,8 @@ def main():
     write("demo-tiles.tsx", TILESET)
     write("level-tiles.tsx", LEVEL_TILESET.replace(
         "{ramp_tiles}", "".join(RAMP_TILE.format(id=i, points=p) for i, p in RAMPS.items())))
-    write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer", level_tiles=True))
+    write("platformer.tmx", tmx(PLATFORMER, "csv", PLATFORMER_OBJECTS, "platformer", level_tiles=True,
+                                scenery=True))
     write("topdown.tmx", tmx(TOPDOWN, "base64", TOPDOWN_OBJECTS, "top-down"))
     write("sandbox.tmx", tmx(SANDBOX, "zlib", (), "sandbox"))
     write("shmup.tmx", tmx(EMPTY_SCREEN, "csv", (), "shmup"))

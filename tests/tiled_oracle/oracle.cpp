@@ -166,6 +166,15 @@ void mask_shapes(const Tilemap& map, const std::vector<const MapObject*>& shapes
     }
 }
 
+// tmxrasterizer has no camera and draws no parallax: the engine's picture
+// is taken with every factor 1 (map-draw checks parallax by its formula).
+void without_parallax(std::vector<LayerInfo>& tree) {
+    for (LayerInfo& l : tree) {
+        l.parallax_x = l.parallax_y = 1;
+        without_parallax(l.children);
+    }
+}
+
 // One map: 0 when the pictures match, 1 when not, 2 when it could not be compared.
 int compare(const std::string& path, const std::string& keep) {
     Tilemap map;
@@ -193,6 +202,7 @@ int compare(const std::string& path, const std::string& keep) {
         std::printf("ERROR %s: cannot read %s\n", path.c_str(), tiled_png.c_str());
         return 2;
     }
+    without_parallax(map.layer_tree);
     const int w = map.width * map.tile_width, h = map.height * map.tile_height;
     int left = 0, top = 0;
     tiled_margins(map.layer_tree, 0, 0, left, top);
