@@ -183,6 +183,36 @@
 (test-assert "a bad sprite gid is named"
   (mentions? (error-in-render (lambda () (draw-sprite -1 0 0))) "draw-sprite" "gid" "-1"))
 
+;;; ---------------------------------------------------------------- entities between layers
+;; The platformer's map names its object layer "spawns" in the property
+;; entity-layer; its layer "front" (grass at cell (6, 10)) comes after it, so
+;; in that cell each pixel is the grass's where the grass is opaque and the
+;; entity's box where it is clear.
+(define platformer-map (load-tilemap "demo/maps/platformer.tmx"))
+(define (grass-cell-pixels entities)
+  (let ((game (make-game width: 160 height: 200
+                         scene: (make-scene tilemap: platformer-map entities: entities))))
+    (game-capture game (string-append dir "/grass.png"))
+    (append-map (lambda (y) (map (lambda (x) (game-pixel game (+ 96 x) (+ 160 y))) (iota 16))) (iota 16))))
+(define without-box (grass-cell-pixels '()))
+(define with-box (grass-cell-pixels (list '(#:x 96 #:y 160 #:width 16 #:height 16 #:solid? #t))))
+(define kept (count equal? without-box with-box))
+;; A box drawn on top would change all 256 pixels (its fill blends over each).
+(test-assert "an entity in the entity-layer is drawn under the layers after it: the grass stays in front, the box shows where it is clear"
+  (< 0 kept 256))
+(define bad-layer-map (string-append dir "/bad-entity-layer.tmx"))
+(call-with-output-file bad-layer-map
+  (lambda (port)
+    (display "<map orientation=\"orthogonal\" width=\"1\" height=\"1\" tilewidth=\"8\" tileheight=\"8\">
+ <properties><property name=\"entity-layer\" value=\"actors\"/></properties>
+ <objectgroup name=\"spawns\"/>
+</map>" port)))
+(test-assert "an entity-layer naming no object layer is an error naming the value and the map"
+  (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8
+                                                             scene: (make-scene tilemap: (load-tilemap bad-layer-map)))
+                                                  (string-append dir "/bad.png"))))
+             "entity-layer" "\"actors\"" "bad-entity-layer.tmx"))
+
 ;;; ---------------------------------------------------------------- entities and maps that cannot be drawn
 (test-assert "a bad #:sprite is named by key and value"
   (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8
