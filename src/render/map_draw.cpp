@@ -139,14 +139,27 @@ size_t draw_tile_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLa
 // drawn), in its draw order: the file's, or by y for draworder="topdown".
 size_t draw_object_layer(Canvas& c, TileArt& art, const Tilemap& map, const ObjectLayer& layer,
                          const LayerPaint& p, double time_ms) {
-    std::vector<size_t> order(layer.objects.size());
-    std::iota(order.begin(), order.end(), size_t{0});
-    if (layer.top_down)
-        std::stable_sort(order.begin(), order.end(),
-                         [&](size_t a, size_t b) { return layer.objects[a].y < layer.objects[b].y; });
+    // The objects to visit, in draw order: those the index finds in view,
+    // else (a layer made by hand, or edited since) every one.
+    static thread_local std::vector<uint32_t> ranks;
+    const std::vector<uint32_t>* order = &layer.index.order;
+    if (layer.index.built && layer.index.order.size() == layer.objects.size()) {
+        objects_in_view(layer.index, double(p.cam.x), double(p.cam.y), double(p.cam.x) + c.width(),
+                        double(p.cam.y) + c.height(), ranks);
+    } else {
+        static thread_local std::vector<uint32_t> all;
+        all.resize(layer.objects.size());
+        std::iota(all.begin(), all.end(), 0u);
+        if (layer.top_down)
+            std::stable_sort(all.begin(), all.end(),
+                             [&](uint32_t a, uint32_t b) { return layer.objects[a].y < layer.objects[b].y; });
+        order = &all;
+        ranks.resize(all.size());
+        std::iota(ranks.begin(), ranks.end(), 0u);
+    }
     size_t drawn = 0;
-    for (size_t i : order) {
-        const MapObject& o = layer.objects[i];
+    for (uint32_t rank : ranks) {
+        const MapObject& o = layer.objects[(*order)[rank]];
         if (!o.visible || o.shape != ObjectShape::Tile) continue;
         const TileObjectBox box = tile_object_box(map, o);
         SDL_Surface* pic = art.tile(o.gid, time_ms);

@@ -65,6 +65,7 @@ Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
     inherit_tile_classes(map);
     warn_bad_shapes(map);
     check_object_gids(map, s);
+    for (ObjectLayer& layer : map.object_layers) layer.index = index_objects(map, layer);
     return map;
 }
 

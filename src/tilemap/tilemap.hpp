@@ -13,6 +13,7 @@
 #include "../tile_grid.hpp"
 #include "map_bounds.hpp"
 #include "map_color.hpp"
+#include "object_index.hpp"
 
 namespace ds {
 
@@ -180,6 +181,10 @@ struct ObjectLayer {
     // Drawn by y (stable), as Tiled's default draworder "topdown" says;
     // false for draworder="index": in the file's order.
     bool top_down = true;
+    // Its tile objects by area, for drawing (object_index.hpp): built by the
+    // loader once the map is whole; a layer made by hand has none, and is
+    // drawn by visiting every object.
+    ObjectIndex index;
 };
 
 // Every layer as the file nests it, for renderers and level scripts; physics

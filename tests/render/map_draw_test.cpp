@@ -10,6 +10,7 @@
 #include "constants.hpp"
 #include "render_error.hpp"
 #include "scene_draw.hpp"
+#include "tilemap/object_index.hpp"
 #include "test_sheet.hpp"
 
 using namespace ds;
@@ -109,7 +110,7 @@ TEST_CASE("parallax: a layer moves by (1 − factor) × (view centre − paralla
     layer.parallax_x = 0.5, layer.parallax_y = 0.0;
     group.children.push_back(layer);
     m.layer_tree.push_back(group);
-    for (const auto [cx, cy] : {std::pair<int64_t, int64_t>{0, 0}, {7, 3}, {-13, 11}, {31, -2}}) {
+    for (const auto& [cx, cy] : {std::pair<int64_t, int64_t>{0, 0}, {7, 3}, {-13, 11}, {31, -2}}) {
         Canvas c(40, 32);
         TileArt art;
         art.bind(&m);
@@ -138,7 +139,7 @@ TEST_CASE("an image layer repeats from its offset in both directions under any c
     img.offset_x = 3, img.offset_y = -2;
     img.repeat_x = img.repeat_y = true;
     m.layer_tree.push_back(img);
-    for (const auto [cx, cy] : {std::pair<int64_t, int64_t>{0, 0}, {-5, 9}, {21, -30}}) {
+    for (const auto& [cx, cy] : {std::pair<int64_t, int64_t>{0, 0}, {-5, 9}, {21, -30}}) {
         Canvas c(20, 12);
         TileArt art;
         art.bind(&m);
@@ -163,11 +164,16 @@ TEST_CASE("entities draw in the object layer the view names, so the layers after
     front.width = 2, front.height = 1;
     front.cells = std::vector<uint32_t>{0, 4};
     m.layers.push_back(front);
-    m.object_layers.push_back(ObjectLayer{.name = "actors"});
-    LayerInfo back{.kind = LayerKind::Tile, .name = "back", .index = 0};
-    LayerInfo actors{.kind = LayerKind::Object, .name = "actors", .index = 0};
-    LayerInfo fore{.kind = LayerKind::Tile, .name = "front", .index = 1};
-    m.layer_tree = {back, actors, fore};
+    ObjectLayer objects;
+    objects.name = "actors";
+    m.object_layers.push_back(objects);
+    const auto info = [](LayerKind kind, const char* name, size_t index) {
+        LayerInfo l;
+        l.kind = kind, l.name = name, l.index = index;
+        return l;
+    };
+    m.layer_tree = {info(LayerKind::Tile, "back", 0), info(LayerKind::Object, "actors", 0),
+                    info(LayerKind::Tile, "front", 1)};
     const std::vector<EntityView> entities{{.x = 0, .y = 0, .w = 8, .h = 4, .solid = true}};
     for (const bool between : {false, true}) {
         SceneView v;
@@ -237,6 +243,53 @@ TEST_CASE("a template instance and an animated tile object draw as the tile they
                 CHECK(c.pixel(8 + x, y) == sheet_color(t < 100 ? 2 : 3, x, y));  // animated: 2, then 3
             }
     }
+}
+
+TEST_CASE("the object index finds every object that shows in a view, and none far from it") {
+    // 400 tile objects over 2000 × 2000 px: stretched, flipped, turned, in
+    // topdown order. Drawn through the index, every view is the picture
+    // drawn by visiting every object.
+    Tilemap m = map_with(1, 1, {0});
+    ObjectLayer layer;
+    layer.name = "things";
+    for (uint32_t i = 0; i < 400; ++i) {
+        MapObject o;
+        o.id = int(i + 1);
+        o.shape = ObjectShape::Tile;
+        o.gid = (1 + i % 4) | (i % 3 == 0 ? kFlipHorizontal : 0) | (i % 7 == 0 ? kFlipDiagonal : 0);
+        o.x = (i * 7919) % 2000, o.y = (i * 104729) % 2000;
+        o.width = 4 + i % 9, o.height = 4 + i % 5;
+        o.rotation = i % 5 == 0 ? double(i % 360) : 0;
+        layer.objects.push_back(o);
+    }
+    m.object_layers.push_back(layer);
+    LayerInfo info;
+    info.kind = LayerKind::Object;
+    m.layer_tree = {info};
+    Tilemap indexed = m;
+    indexed.object_layers[0].index = index_objects(indexed, indexed.object_layers[0]);
+    for (int k = 0; k < 25; ++k) {
+        const int64_t cx = (k * 389) % 2100 - 50, cy = (k * 577) % 2100 - 50;
+        Canvas a(64, 48), b(64, 48);
+        TileArt art;
+        art.bind(&m);
+        a.clear(kBackground);
+        draw_map(a, art, m, cx, cy);
+        art.bind(&indexed);
+        b.clear(kBackground);
+        draw_map(b, art, indexed, cx, cy);
+        CAPTURE(cx);
+        CAPTURE(cy);
+        int same = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 64; ++x) same += a.pixel(x, y) == b.pixel(x, y);
+        CHECK(same == 64 * 48);
+    }
+    std::vector<uint32_t> found;
+    objects_in_view(indexed.object_layers[0].index, 5000, 5000, 5640, 5360, found);
+    CHECK(found.empty());  // far beyond every object: nothing is visited
+    objects_in_view(indexed.object_layers[0].index, 0, 0, 640, 360, found);
+    CHECK(found.size() < 400 / 4);  // a view of 640 × 360 of 2000² px sees few of them
 }
 
 TEST_CASE("bad input names the file and the value") {
