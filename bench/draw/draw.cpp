@@ -128,6 +128,18 @@ std::vector<Row> measure(const Args& a) {
     for (int s : kSizes)
         add("map " + std::to_string(s) + "²", s, &spread, over, small, cross_small, false, s);
     add("debug overlay", kMapSide, &spread, over, whole, cross_all, true, 0);
+    // Tiled's other layers (issue 34): the same map with a repeated,
+    // parallax image layer, a parallax tile layer and 2,000 tile objects
+    // over the area the camera crosses; then with 20,000 and 200,000 more
+    // objects where it never looks, which must cost nothing.
+    std::map<int, ds::Tilemap> tiled;
+    for (const int extra : {0, 20000, 200000}) tiled.emplace(extra, make_tiled_map(kMapSide, extra));
+    for (const auto& [extra, map] : tiled) {
+        const std::string objects = std::to_string(kTileObjects) + " objects" +
+                                    (extra ? " + " + std::to_string(extra) + " out of view" : "");
+        add("Tiled layers, " + objects, kMapSide, &spread, over, small, cross_small, false, 0);
+        cases.back().map = &map;
+    }
 
     ds::render::Canvas canvas(kViewW, kViewH);
     ds::render::TileArt art;

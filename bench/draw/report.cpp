@@ -72,7 +72,15 @@ std::string section(const Document& d) {
          "the min over those of the " << side(kMapSide)
       << " map-size case. Map-size independence is judged\n"
          "on the min: the VM's other tenants move medians far more than minima,\n"
-         "and a cost that grew with the map would be in every frame.\n\n";
+         "and a cost that grew with the map would be in every frame.\n\n"
+         "The Tiled layers cases draw what a map made in Tiled adds (issue 34): the\n"
+         "1000² map under a 192 × 240 px backdrop image repeated along both axes at\n"
+         "parallax 0.2, its detail layer at parallax 0.5, and an object layer of\n"
+         "2000 tile objects over the first 100² cells (flipped, a fifth stretched to\n"
+         "24 × 32, a tenth turned), indexed as the loader indexes them; tiles/frame\n"
+         "counts the backdrop's copies and the objects drawn too. The two cases\n"
+         "with objects beyond the area the camera crosses are judged, as map size\n"
+         "is, on the min.\n\n";
     o << org_row({"case", "map", "sprites", "camera crosses", "frames", "tiles/frame", "sprites/frame",
                   "median ms", "min ms", "× " + side(kMapSide) + " (median, min)"})
       << "|-\n";
@@ -106,6 +114,25 @@ std::vector<Goal> judge(const std::vector<Row>& rows) {
         sizes.met = sizes.met && r.min_ratio > 0 && std::abs(r.min_ratio - 1) <= kSizeTolerance;
     }
     if (!sizes.measured.empty()) goals.push_back(sizes);
+    // Objects beyond the view cost nothing (issue 34): the Tiled-layers cases
+    // with more objects out of view against the one without, on the minimum.
+    const Row* base = nullptr;
+    Goal objects{"tile objects out of view cost nothing (fastest frame within " + sig3(kSizeTolerance * 100) +
+                     " % of the case without them)",
+                 "", true};
+    for (const Row& r : rows) {
+        if (r.name.rfind("Tiled layers", 0) != 0) continue;
+        if (r.name.find("out of view") == std::string::npos) {
+            base = &r;
+            continue;
+        }
+        if (!base || base->stats.min_ms <= 0) continue;
+        const double q = r.stats.min_ms / base->stats.min_ms;
+        objects.measured += (objects.measured.empty() ? "" : ", ") + r.name.substr(r.name.find("+ ") + 2) + ": " +
+                            ratio(q) + " (median " + ratio(r.stats.median_ms / base->stats.median_ms) + ")";
+        objects.met = objects.met && std::abs(q - 1) <= kSizeTolerance;
+    }
+    if (!objects.measured.empty()) goals.push_back(objects);
     return goals;
 }
 

@@ -1,6 +1,9 @@
 #include "draw/scenes.hpp"
 
 #include <cstdint>
+#include <string>
+
+#include "tilemap/object_index.hpp"
 
 namespace bench::draw {
 
@@ -61,6 +64,51 @@ ds::Tilemap make_map(int side) {
         }
     m.layers.push_back(std::move(ground));
     m.layers.push_back(std::move(detail));
+    return m;
+}
+
+ds::Tilemap make_tiled_map(int side, int out_of_view) {
+    ds::Tilemap m = make_map(side);
+    ds::LayerInfo backdrop;
+    backdrop.kind = ds::LayerKind::Image;
+    backdrop.name = "backdrop";
+    backdrop.image = std::string(DS_BENCH_MAPS_DIR) + "/backdrop.png";
+    backdrop.repeat_x = backdrop.repeat_y = true;
+    backdrop.parallax_x = backdrop.parallax_y = 0.2;
+    ds::LayerInfo ground;
+    ground.kind = ds::LayerKind::Tile;
+    ground.name = "ground";
+    ground.index = 0;
+    ds::LayerInfo detail = ground;
+    detail.name = "detail";
+    detail.index = 1;
+    detail.parallax_x = detail.parallax_y = 0.5;
+    ds::LayerInfo things;
+    things.kind = ds::LayerKind::Object;
+    things.name = "things";
+    m.layer_tree = {backdrop, ground, detail, things};
+    ds::ObjectLayer layer;
+    layer.name = "things";
+    const int total = kTileObjects + out_of_view;
+    layer.objects.reserve(size_t(total));
+    for (int i = 0; i < total; ++i) {
+        const uint64_t h = mix(0x0b1ec7000000u + uint64_t(i));
+        ds::MapObject o;
+        o.id = i + 1;
+        o.shape = ds::ObjectShape::Tile;
+        o.gid = gid(h);
+        o.width = o.height = kTile;
+        if ((h >> 40) % 5 == 0) o.width = 24, o.height = 32;  // stretched
+        if ((h >> 44) % 10 == 0) o.rotation = double((h >> 48) % 360);
+        // In view: over the first kObjectArea px square; beyond: past the
+        // map's far corner, where the camera never goes.
+        const double far = i < kTileObjects ? 0 : double(side) * kTile + 1000;
+        o.x = far + double(h & 0xffffff) / 0x1000000 * kObjectArea;
+        o.y = far + double(h >> 24 & 0xffff) / 0x10000 * kObjectArea;
+        layer.objects.push_back(std::move(o));
+    }
+    m.object_layers.push_back(std::move(layer));
+    m.object_layers[0].index = ds::index_objects(m, m.object_layers[0]);
     return m;
 }
 

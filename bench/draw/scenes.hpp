@@ -21,6 +21,17 @@ constexpr int kSizes[] = {100, kMapSide, 4000};  // cells, the map-size cases
 // wherever their views overlap.
 ds::Tilemap make_map(int side);
 
+// The Tiled-layers case (issue 34): make_map(side) with, in file order, an
+// image layer (the demo backdrop, 192 × 240 px) repeated along both axes at
+// parallax 0.2, the ground layer, the detail layer at parallax 0.5, and an
+// object layer of kTileObjects tile objects spread over the first
+// kObjectArea × kObjectArea px (flipped, a fifth stretched, a tenth turned),
+// plus `out_of_view` more beyond it, where the camera never looks; the
+// object layer indexed as the loader indexes it.
+constexpr int kTileObjects = 2000;
+constexpr int kObjectArea = 100 * kTile;  // the first 100² cells: what the small-area cases cross
+ds::Tilemap make_tiled_map(int side, int out_of_view);
+
 // Sprites (16×16, gids 1–4, a third flipped) with velocities and roles that
 // the debug overlay shows, at random points of [0, w) × [0, h) px.
 std::vector<ds::render::EntityView> spread_sprites(int count, double w, double h);
