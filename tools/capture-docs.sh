@@ -28,3 +28,15 @@ capture shmup 24
 capture tweens 14
 capture fall 45
 capture sandbox 60 sandbox-debug --debug
+capture platformer 44 platformer-front
+
+# render.org's pictures of what a Tiled map draws: each feature map of the
+# oracle test drawn by the engine (left) and by Tiled's tmxrasterizer
+# (right), three times their size.
+if command -v tmxrasterizer >/dev/null; then
+  QT_QPA_PLATFORM=offscreen build/bin/downstroke-tiled-oracle --keep "$tmp/oracle" --doc "$out" \
+    tests/data/maps/render/oracle >/dev/null
+  echo "docs/images/render-*.png: tests/data/maps/render/oracle/*.tmx, the engine beside Tiled"
+else
+  echo "tmxrasterizer is absent (Debian's package tiled): docs/images/render-*.png kept as they are" >&2
+fi

@@ -1,7 +1,7 @@
 // Draws maps whole with the engine and with Tiled's own renderer,
 // tmxrasterizer, and compares the two pictures pixel by pixel (issue 34).
 //
-//   downstroke-tiled-oracle [--keep DIR] MAP.tmx|DIR ...
+//   downstroke-tiled-oracle [--keep DIR] [--doc DIR] MAP.tmx|DIR ...
 //
 // A directory stands for every *.tmx in it (not below). Tiled's picture
 // covers what reaches past the map's edges, so only the map's own area is
@@ -12,7 +12,8 @@
 // differ on its edge pixels (the two renderers sample them differently):
 // pixels next to such an object's outline are left out. Exits 0 when every
 // map matched, 1 when one did not, 77 (CTest's skip) when tmxrasterizer is
-// not installed.
+// not installed. --doc DIR also writes, for each map, DIR/render-NAME.png:
+// the engine's picture and Tiled's side by side, each kDocScale times.
 #include <SDL.h>
 #include <SDL_image.h>
 
@@ -38,6 +39,8 @@ namespace {
 
 constexpr int kTolerance = 2;       // per channel: Qt's and our rounding of opacity differ by 1
 constexpr int kExitSkip = 77;      // CTest's SKIP_RETURN_CODE
+constexpr int kDocScale = 3;       // the docs' pictures: small maps, shown large enough to see a pixel
+constexpr int kDocGap = 4;         // px between the two pictures, at scale 1
 
 bool have_rasterizer() { return std::system("command -v tmxrasterizer >/dev/null 2>&1") == 0; }
 
@@ -176,7 +179,26 @@ void without_parallax(std::vector<LayerInfo>& tree) {
 }
 
 // One map: 0 when the pictures match, 1 when not, 2 when it could not be compared.
-int compare(const std::string& path, const std::string& keep) {
+// The engine's picture (left) and Tiled's laid over the same background
+// (right), side by side and scaled up, for render.org.
+void write_doc_picture(const std::string& file, const Canvas& ours, SDL_Surface* tiled, int left, int top, Rgba bg) {
+    const int w = ours.width(), h = ours.height();
+    Canvas doc((2 * w + kDocGap) * kDocScale, h * kDocScale);
+    doc.clear({255, 255, 255, 255});
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int tx = x + left, ty = y + top;
+            const uint32_t p = tx < tiled->w && ty < tiled->h ? at(tiled, tx, ty) : 0;
+            const unsigned a = p >> 24;
+            const auto over = [&](unsigned src, unsigned dst) { return uint8_t((src * a + dst * (255 - a) + 127) / 255); };
+            const Rgba theirs{over(p >> 16 & 0xff, bg.r), over(p >> 8 & 0xff, bg.g), over(p & 0xff, bg.b), 255};
+            doc.fill_rect(x * kDocScale, y * kDocScale, kDocScale, kDocScale, ours.pixel(x, y));
+            doc.fill_rect((w + kDocGap + x) * kDocScale, y * kDocScale, kDocScale, kDocScale, theirs);
+        }
+    doc.save_png(file);
+}
+
+int compare(const std::string& path, const std::string& keep, const std::string& doc_dir) {
     Tilemap map;
     try {
         map = load_tilemap(path);
@@ -218,6 +240,10 @@ int compare(const std::string& path, const std::string& keep) {
         return 2;
     }
     canvas.save_png(ours_png);
+    if (!doc_dir.empty()) {
+        const Rgba doc_bg = map.background ? Rgba{map.background->r, map.background->g, map.background->b, 255} : kBackground;
+        write_doc_picture((fs::path(doc_dir) / ("render-" + base + ".png")).string(), canvas, tiled, left, top, doc_bg);
+    }
     const Rgba bg = map.background ? Rgba{map.background->r, map.background->g, map.background->b, 255} : kBackground;
     std::vector<uint8_t> mask = edge_mask(map, w, h);
     mask_shapes(map, shapes, w, h, mask);
@@ -268,11 +294,15 @@ int compare(const std::string& path, const std::string& keep) {
 
 int main(int argc, char** argv) {
     std::vector<std::string> maps;
-    std::string keep;
+    std::string keep, doc_dir;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--keep" && i + 1 < argc) {
             keep = argv[++i];
+            continue;
+        }
+        if (a == "--doc" && i + 1 < argc) {
+            doc_dir = argv[++i];
             continue;
         }
         std::error_code ec;
@@ -296,7 +326,7 @@ int main(int argc, char** argv) {
     IMG_Init(IMG_INIT_PNG);
     int failed = 0, errors = 0;
     for (const std::string& m : maps) {
-        const int r = compare(m, keep);
+        const int r = compare(m, keep, doc_dir);
         failed += r == 1;
         errors += r == 2;
     }
