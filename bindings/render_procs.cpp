@@ -4,6 +4,7 @@
 // with SDL2 (render_missing.cpp stands in without it).
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -47,6 +48,7 @@ struct Display {
     DrawCounts counts;
     size_t culled = 0;
     double ms = 0;
+    std::optional<Rgba> background;  // make-game's background:, else the map's
 };
 
 SCM display_type = SCM_BOOL_F;
@@ -249,6 +251,7 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
         else fail_arg(f, "tilemap", tilemap, "a tilemap or #f");
     }
     if (d && !f && view.map) entity_layer_of(*view.map, view, f);
+    if (d) view.background = d->background;
     if (d && !f && !SCM_UNBNDP(time_ms)) from_scm(time_ms, view.time_ms, "time-ms", f);
     if (d && !f && from_scm(cam_x, view.camera_x, "camera x", f) && from_scm(cam_y, view.camera_y, "camera y", f))
         guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too
@@ -365,6 +368,21 @@ SCM draw_text(SCM display, SCM text, SCM x, SCM y, SCM color, SCM scale, SCM spa
 // ---------------------------------------------------------------- input
 
 // ((action name …) …): the actions, each with the inputs that hold it.
+SCM set_background(SCM display, SCM color) {
+    Failure f;
+    Display* d = display_of(display, "make-game", f);
+    Rgba c;
+    if (d && scm_is_false(color)) {
+        d->background.reset();
+    } else if (d) {
+        Failure quiet;  // color_arg names the argument "color": make-game's is background
+        if (color_arg(color, c, quiet)) d->background = Rgba{c.r, c.g, c.b, 255};  // a clear colour is opaque
+        else fail_arg(f, "background", color, "(r g b) or (r g b a) of integers 0–255, or #f");
+    }
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
 SCM set_input_map(SCM display, SCM map) {
     Failure f;
     Display* d = display_of(display, "make-game", f);
@@ -532,6 +550,8 @@ void register_render_procedures() {
         "(display file): writes the last frame drawn as a PNG.");
     define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",
         "(display): forgets the draw commands of the last frame.");
+    define_procedure<2, 0, 0, set_background>("%display-set-background!",
+                                               "(display color): the clear colour, (r g b) or #f (the map's).");
     define_procedure<2, 0, 0, set_input_map>("%display-set-input-map!",
         "(display map): binds keys and controller inputs to actions: ((action name …) …).");
     define_procedure<1, 0, 0, poll_input>("%display-poll!",

@@ -11,6 +11,7 @@
   #:use-module ((downstroke native)
                 #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor! %make-display
                           %display-draw! %display-stats %display-save-png %display-pixel
+                          %display-set-background!
                           %display-clear-commands! %display-set-input-map! %display-poll!
                           %display-open-window! %display-close-window! %open-audio!
                           %play-sound %note-pushed-pairs! %max-substeps))
@@ -140,7 +141,7 @@ collision mode, substeps and resting contacts."
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
-                    (input-script '()) (history 0) (input-map #f))
+                    (input-script '()) (history 0) (input-map #f) (background #f))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
@@ -148,7 +149,9 @@ rest (both off by default). HISTORY keeps the scenes of
 that many past frames for game-rewind!. WIDTH × HEIGHT is the picture in
 pixels (a window shows it scaled up). INPUT-MAP binds keys and controller
 inputs to actions in a window, as ((action name …) …) — see
-default-input-map, which is used when it is #f."
+default-input-map, which is used when it is #f. BACKGROUND, (r g b), is the
+colour a frame is cleared to; #f uses the map's backgroundcolor, else the
+engine's (24 28 40)."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
@@ -168,7 +171,9 @@ default-input-map, which is used when it is #f."
   (for-each (lambda (what proc) (check-procedure-or-false "make-game" what proc))
             '(update render engine-update) (list update render engine-update))
   (let ((display (and (renderer-available?) (%make-display width height))))
-    (when display (%display-set-input-map! display (or input-map (default-input-map))))
+    (when display
+      (%display-set-input-map! display (or input-map (default-input-map)))
+      (%display-set-background! display background))
     (let ((game (%make-game title width height frame-delay scene update render engine-update
                             collision-mode substeps (and resting-contacts? #t)
                             (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)

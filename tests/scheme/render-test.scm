@@ -213,6 +213,17 @@
                                                   (string-append dir "/bad.png"))))
              "entity-layer" "\"actors\"" "bad-entity-layer.tmx"))
 
+;;; ---------------------------------------------------------------- the background
+(define (background-of . args)
+  (let ((game (apply make-game width: 8 height: 8 args)))
+    (game-capture game (string-append dir "/bg.png"))
+    (game-pixel game 4 4)))
+(test-equal "with no map and no background: the engine's" background (background-of))
+(test-equal "make-game's background: is the clear colour" '(10 20 30 255) (background-of background: '(10 20 30)))
+(test-equal "… drawn opaque whatever its alpha" '(10 20 30 255) (background-of background: '(10 20 30 7)))
+(test-assert "a bad background: is named by make-game with its value"
+  (mentions? (error-text (lambda () (make-game background: 'sky))) "make-game" "background" "sky"))
+
 ;;; ---------------------------------------------------------------- entities and maps that cannot be drawn
 (test-assert "a bad #:sprite is named by key and value"
   (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8
