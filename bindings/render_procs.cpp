@@ -49,6 +49,7 @@ struct Display {
     size_t culled = 0;
     double ms = 0;
     std::optional<Rgba> background;  // make-game's background:, else the map's
+    std::vector<std::string> warnings;  // drawing's, until written to the warning port
 };
 
 SCM display_type = SCM_BOOL_F;
@@ -241,6 +242,18 @@ void entity_layer_of(const Tilemap& map, SceneView& view, Failure& f) {
          "map property entity-layer is ~S, which names no object layer of ~S");
 }
 
+// Writes drawing's warnings to (current-warning-port), as load-tilemap
+// writes its own. Only Display-owned strings are alive while Guile runs.
+void warn_all(Display& d) {
+    SCM port = scm_current_warning_port();
+    for (size_t i = 0; i < d.warnings.size(); ++i) {
+        scm_puts("game-draw: warning: ", port);
+        scm_display(scm_from_utf8_string(d.warnings[i].c_str()), port);
+        scm_newline(port);
+    }
+    d.warnings.clear();
+}
+
 SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history,
                  SCM time_ms) {
     Failure f;
@@ -271,10 +284,12 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
             view.trails = d->trails;
             const auto t0 = Clock::now();
             d->counts = draw_scene(canvas_of(*d), d->art, view);
+            d->warnings = d->art.take_warnings();
             d->culled = d->entities.size() - d->counts.sprites - d->counts.boxes;
             if (d->window) d->window->present(*d->canvas);
             d->ms = ms_since(t0);
         });
+    if (d) warn_all(*d);
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }

@@ -1,5 +1,7 @@
 // Every tunable of the renderer, each with the reason for its value.
 #pragma once
+#include <cstdint>
+
 #include "color.hpp"
 
 namespace ds::render {
@@ -8,6 +10,15 @@ namespace ds::render {
 // "sky" and black tiles or text still show against it.
 constexpr Rgba kBackground{24, 28, 40, 255};
 
+
+// The largest image the renderer decodes (tilesets, image collections, image
+// layers), checked from the file's header before a pixel is allocated: a
+// side of 16384 px is the largest texture side common GPUs take, and 256 MiB
+// decoded (8192 × 8192 at 4 bytes a pixel) is far past any tileset or
+// backdrop while a machine can hold several; a 3.5 MB PNG declaring
+// 30000 × 30000 px would otherwise decode to 3.6 GB.
+constexpr int64_t kMaxImageSidePx = 16384;
+constexpr int64_t kMaxImageDecodedBytes = int64_t(256) << 20;
 
 // The largest window scale tried when fitting the screen: beyond this a
 // pixel-art game is already huge, and a 64× surface blit would be wasteful.

@@ -187,7 +187,7 @@ size_t draw_image_layer(Canvas& c, TileArt& art, const Tilemap& map, const Layer
     if (info.image.empty()) return 0;
     std::filesystem::path path(info.image);
     if (path.is_relative() && !map.path.empty()) path = std::filesystem::path(map.path).parent_path() / path;
-    SDL_Surface* pic = art.picture(path.string(), info.image_trans);
+    SDL_Surface* pic = art.picture(path.string(), info.image_trans, info.image_width, info.image_height);
     if (!pic || pic->w <= 0 || pic->h <= 0) return 0;
     const auto first = [](int64_t origin, int64_t size, bool repeat) {
         return repeat ? origin - floor_div(origin, size) * size - size : origin;

@@ -3,7 +3,11 @@
 #include <SDL_image.h>
 
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
+#include "constants.hpp"
+#include "image_header.hpp"
 #include "render_error.hpp"
 #include "tile_animation.hpp"
 
@@ -63,6 +67,34 @@ void clear_key(SDL_Surface* img, const MapColor& c) {
     SDL_SetSurfaceBlendMode(img, SDL_BLENDMODE_BLEND);
 }
 
+// The file's header, read before anything is decoded, within the bounds:
+// a RenderError naming the file otherwise (not a file, unreadable, not an
+// image, cut short, or larger than kMaxImageSidePx / kMaxImageDecodedBytes).
+ImageHeader checked_header(const std::string& path, const char* what) {
+    const std::string named = std::string(what) + " '" + path + "'";
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw RenderError("cannot read " + named + ": no such file");
+    if (!std::filesystem::is_regular_file(status)) throw RenderError("cannot read " + named + ": not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    std::vector<uint8_t> head(kImageHeaderBytes);
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    if (in.bad()) throw RenderError("cannot read " + named + ": reading it failed");
+    head.resize(size_t(in.gcount()));
+    ImageHeader h;
+    std::string why;
+    if (!read_image_header(head, h, why)) throw RenderError("cannot read " + named + ": " + why);
+    const std::string size = std::to_string(h.width) + "x" + std::to_string(h.height) + " px";
+    if (h.width > kMaxImageSidePx || h.height > kMaxImageSidePx)
+        throw RenderError("refusing " + named + ": its " + h.format + " header declares " + size +
+                          ", more than the limit of " + std::to_string(kMaxImageSidePx) + " px a side");
+    if (h.width * h.height * 4 > kMaxImageDecodedBytes)
+        throw RenderError("refusing " + named + ": its " + h.format + " header declares " + size + ", " +
+                          std::to_string(h.width * h.height * 4 >> 20) + " MiB decoded, more than the limit of " +
+                          std::to_string(kMaxImageDecodedBytes >> 20) + " MiB");
+    return h;
+}
+
 }  // namespace
 
 std::string image_path(const Tileset& ts, const std::string& image) {
@@ -70,10 +102,9 @@ std::string image_path(const Tileset& ts, const std::string& image) {
     return (std::filesystem::path(ts.image_dir) / image).string();
 }
 
-bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out) {
+bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out, int columns) {
     const int tw = ts.tile_width, th = ts.tile_height;
     if (tw <= 0 || th <= 0) return false;
-    int columns = ts.columns;
     if (columns <= 0) columns = (image_w - 2 * ts.margin + ts.spacing) / (tw + ts.spacing);
     if (columns <= 0) return false;
     const int64_t col = id % uint32_t(columns), row = id / uint32_t(columns);
@@ -92,11 +123,15 @@ TileArt::~TileArt() {
 SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColor>& trans, const char* what) {
     const std::string key = trans ? path + '\x1f' + key_text(*trans) : path;
     if (auto it = images_.find(key); it != images_.end()) return it->second;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw RenderError(std::string("cannot read ") + what + " '" + path + "': no such file");
+    const ImageHeader header = checked_header(path, what);
     SDL_Surface* raw = IMG_Load(path.c_str());
     if (!raw) throw RenderError(std::string("cannot read ") + what + " '" + path + "': " + IMG_GetError());
+    if (raw->w != header.width || raw->h != header.height) {  // a decoder that disagrees with the header
+        const std::string got = std::to_string(raw->w) + "x" + std::to_string(raw->h);
+        SDL_FreeSurface(raw);
+        throw RenderError(std::string("cannot read ") + what + " '" + path + "': it decoded to " + got +
+                          " px, its header says " + std::to_string(header.width) + "x" + std::to_string(header.height));
+    }
     SDL_Surface* img = to_argb(raw);
     SDL_FreeSurface(raw);
     if (!img) throw RenderError(std::string("cannot convert ") + what + " '" + path + "': " + SDL_GetError());
@@ -105,8 +140,20 @@ SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColo
     return img;
 }
 
-SDL_Surface* TileArt::picture(const std::string& path, const std::optional<MapColor>& trans) {
-    return image(path, trans, "image layer image");
+SDL_Surface* TileArt::picture(const std::string& path, const std::optional<MapColor>& trans, int declared_w,
+                              int declared_h) {
+    SDL_Surface* img = image(path, trans, "image layer image");
+    note_size(path, img, declared_w, declared_h, "image layer image");
+    return img;
+}
+
+bool TileArt::note_size(const std::string& path, SDL_Surface* img, int declared_w, int declared_h, const char* what) {
+    if (declared_w <= 0 || declared_h <= 0 || (img->w == declared_w && img->h == declared_h)) return true;
+    if (warned_.insert(path).second)
+        warnings_.push_back(std::string(what) + " '" + path + "' is " + std::to_string(img->w) + "x" +
+                            std::to_string(img->h) + " px, but the map declares " + std::to_string(declared_w) + "x" +
+                            std::to_string(declared_h) + "; drawn at its real size, as Tiled does");
+    return false;
 }
 
 SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) {
@@ -115,11 +162,17 @@ SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) 
     if (ts.image.empty()) {  // an image collection: each tile its own picture
         const TileInfo* info = ts.tile(local_id);
         if (!info || info->image.empty()) return nullptr;
-        img = image(image_path(ts, info->image), ts.trans, "tileset image");
+        const std::string path = image_path(ts, info->image);
+        img = image(path, ts.trans, "tileset image");
+        note_size(path, img, info->image_width, info->image_height, "tileset image");
         r = {0, 0, img->w, img->h};
     } else {
-        img = image(image_path(ts, ts.image), ts.trans, "tileset image");
-        if (!tile_rect(ts, img->w, img->h, local_id, r)) return nullptr;
+        const std::string path = image_path(ts, ts.image);
+        img = image(path, ts.trans, "tileset image");
+        // Tiled cuts an image whose size is not the one its tileset declares
+        // by its real size, counting its columns anew.
+        const bool as_declared = note_size(path, img, ts.image_width, ts.image_height, "tileset image");
+        if (!tile_rect(ts, img->w, img->h, local_id, r, as_declared ? ts.columns : 0)) return nullptr;
     }
     return turned(img, r, flips);
 }

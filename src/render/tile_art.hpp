@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "tilemap/tilemap.hpp"
@@ -38,12 +40,22 @@ public:
     // A whole image (an image layer's), read once per path and colour key:
     // pixels of the colour `trans` are clear. Throws RenderError naming the
     // file when it cannot be read.
-    SDL_Surface* picture(const std::string& path, const std::optional<MapColor>& trans);
+    // The map's declared size (0: none) is checked as a tileset's is.
+    SDL_Surface* picture(const std::string& path, const std::optional<MapColor>& trans, int declared_w = 0,
+                         int declared_h = 0);
+
+    // What drawing found that the game should hear of, once per image: an
+    // image whose real size is not the one the map declares. take_warnings
+    // hands them over and forgets them.
+    std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
 
     // How many images have been read (each file and colour key once).
     size_t images_loaded() const { return images_.size(); }
 
 private:
+    // Whether `img` has the size the map declares for it (or none is
+    // declared); a warning, once per path, when not.
+    bool note_size(const std::string& path, SDL_Surface* img, int declared_w, int declared_h, const char* what);
     // `what` names the image in errors ("tileset image").
     SDL_Surface* image(const std::string& path, const std::optional<MapColor>& trans, const char* what);
     SDL_Surface* cut(const Tileset& ts, uint32_t local_id, uint32_t flips);
@@ -55,7 +67,9 @@ private:
     std::unordered_map<std::string, Sheet> sheets_;
     const Tilemap* map_ = nullptr;
     std::vector<Sheet*> bound_;  // per tileset of map_
-    std::vector<bool> animated_;  // per tileset of map_: has_animation
+    std::vector<bool> animated_;  // per tileset of map_
+    std::vector<std::string> warnings_;
+    std::unordered_set<std::string> warned_;  // image paths warned of: has_animation
 };
 
 // The image path of a tileset (or of one of its collection tiles) as the
@@ -63,7 +77,8 @@ private:
 std::string image_path(const Tileset& ts, const std::string& image);
 
 // Where local tile `id` sits in a single-image tileset of an image
-// `image_w` × `image_h` px; false when it is beyond the image.
-bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out);
+// `image_w` × `image_h` px, in `columns` columns (0: as many as fit);
+// false when it is beyond the image.
+bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out, int columns);
 
 }  // namespace ds::render

@@ -1,0 +1,120 @@
+#include "image_header.hpp"
+
+#include <cstring>
+
+namespace ds::render {
+
+namespace {
+
+uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
+uint32_t be16(const uint8_t* p) { return uint32_t(p[0]) << 8 | p[1]; }
+uint32_t le16(const uint8_t* p) { return uint32_t(p[1]) << 8 | p[0]; }
+uint32_t le32(const uint8_t* p) { return uint32_t(p[3]) << 24 | uint32_t(p[2]) << 16 | uint32_t(p[1]) << 8 | p[0]; }
+
+bool starts(std::span<const uint8_t> b, const char* magic, size_t n) {
+    return b.size() >= n && std::memcmp(b.data(), magic, n) == 0;
+}
+
+bool sized(ImageHeader& out, const char* format, int64_t w, int64_t h, std::string& why) {
+    out.format = format;
+    out.width = w, out.height = h;
+    if (w > 0 && h > 0) return true;
+    why = std::string("its ") + format + " header declares a size of " + std::to_string(w) + "x" +
+          std::to_string(h) + " px";
+    return false;
+}
+
+// PNG: the 8-byte signature, then the IHDR chunk: length 13, "IHDR", width
+// and height big-endian (each at most 2^31 − 1 by the format).
+bool png(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
+    if (b.size() < 24 || std::memcmp(b.data() + 12, "IHDR", 4) != 0) {
+        why = "its PNG header is cut short or has no IHDR chunk first";
+        return false;
+    }
+    const uint32_t w = be32(b.data() + 16), h = be32(b.data() + 20);
+    if (w > 0x7fffffffu || h > 0x7fffffffu) {
+        why = "its PNG header declares a size beyond the format's (" + std::to_string(w) + "x" + std::to_string(h) + ")";
+        return false;
+    }
+    return sized(out, "PNG", w, h, why);
+}
+
+// GIF: "GIF87a"/"GIF89a", then the logical screen's width and height,
+// little-endian 16-bit.
+bool gif(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
+    if (b.size() < 10) {
+        why = "its GIF header is cut short";
+        return false;
+    }
+    return sized(out, "GIF", le16(b.data() + 6), le16(b.data() + 8), why);
+}
+
+// BMP: "BM", a 14-byte file header, then the DIB header: BITMAPCOREHEADER
+// (12 bytes, 16-bit sizes) or any larger one (signed 32-bit width and
+// height; a negative height is a top-down picture of that many rows).
+bool bmp(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
+    if (b.size() < 26) {
+        why = "its BMP header is cut short";
+        return false;
+    }
+    const uint32_t dib = le32(b.data() + 14);
+    if (dib == 12) return sized(out, "BMP", le16(b.data() + 18), le16(b.data() + 20), why);
+    if (dib < 40 || b.size() < 26) {
+        why = "its BMP header is of an unknown kind (" + std::to_string(dib) + " bytes)";
+        return false;
+    }
+    const auto w = int32_t(le32(b.data() + 18)), h = int32_t(le32(b.data() + 22));
+    return sized(out, "BMP", w, h == INT32_MIN ? 0 : (h < 0 ? -int64_t(h) : h), why);
+}
+
+// JPEG: SOI, then segments (0xFF, marker, big-endian length including
+// itself) up to a start-of-frame (SOF0–SOF15 but DHT C4, JPG C8, DAC CC),
+// whose height and width follow its precision byte.
+bool jpeg(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
+    size_t i = 2;
+    while (i + 4 <= b.size()) {
+        if (b[i] != 0xFF) {
+            why = "its JPEG segments are corrupt at byte " + std::to_string(i);
+            return false;
+        }
+        const uint8_t marker = b[i + 1];
+        if (marker == 0xFF) {  // fill bytes
+            ++i;
+            continue;
+        }
+        if (marker == 0xD8 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {  // no length
+            i += 2;
+            continue;
+        }
+        const uint32_t len = be16(b.data() + i + 2);
+        if (len < 2) {
+            why = "its JPEG segments are corrupt at byte " + std::to_string(i);
+            return false;
+        }
+        const bool sof = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+        if (sof) {
+            if (i + 9 > b.size()) break;
+            return sized(out, "JPEG", be16(b.data() + i + 7), be16(b.data() + i + 5), why);
+        }
+        if (marker == 0xD9 || marker == 0xDA) {  // end of image, or scan data before any frame
+            why = "its JPEG data has no frame header before its image data";
+            return false;
+        }
+        i += 2 + size_t(len);
+    }
+    why = "its JPEG header is cut short before the frame's size";
+    return false;
+}
+
+}  // namespace
+
+bool read_image_header(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
+    if (starts(b, "\x89PNG\r\n\x1a\n", 8)) return png(b, out, why);
+    if (starts(b, "\xFF\xD8\xFF", 3)) return jpeg(b, out, why);
+    if (starts(b, "GIF87a", 6) || starts(b, "GIF89a", 6)) return gif(b, out, why);
+    if (starts(b, "BM", 2)) return bmp(b, out, why);
+    why = b.empty() ? "it is empty" : "it is not a PNG, JPEG, GIF or BMP image";
+    return false;
+}
+
+}  // namespace ds::render

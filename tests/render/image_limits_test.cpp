@@ -1,0 +1,206 @@
+// Images a map names, however hostile (issue 35): each file's header is read
+// before anything is decoded, a declared size past the bounds is refused
+// naming the file and the size, and nothing is allocated for it; truncated,
+// corrupt and non-image files and directories are refused naming the file;
+// an image whose real size is not the declared one is drawn at its real
+// size with a warning naming both.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+
+#include "constants.hpp"
+#include "image_header.hpp"
+#include "render_error.hpp"
+#include "scene_draw.hpp"
+#include "test_sheet.hpp"
+
+using namespace ds;
+using namespace ds::render;
+using namespace ds::render::test;
+
+namespace {
+
+std::vector<uint8_t> bytes(std::initializer_list<int> v) {
+    std::vector<uint8_t> out;
+    for (int b : v) out.push_back(uint8_t(b));
+    return out;
+}
+
+void be32(std::vector<uint8_t>& v, uint32_t x) {
+    for (int s = 24; s >= 0; s -= 8) v.push_back(uint8_t(x >> s));
+}
+
+// A PNG signature and IHDR declaring w × h, then `tail` bytes of junk: what
+// an image bomb's first bytes look like.
+std::vector<uint8_t> png_head(uint32_t w, uint32_t h, size_t tail = 0) {
+    std::vector<uint8_t> v = bytes({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'});
+    be32(v, w);
+    be32(v, h);
+    v.insert(v.end(), {8, 6, 0, 0, 0});
+    v.resize(v.size() + tail, 0x55);
+    return v;
+}
+
+std::string write_file(const std::string& name, const std::vector<uint8_t>& data) {
+    const std::string path = (temp_dir() / name).string();
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+    return path;
+}
+
+// A one-cell map whose tileset's image is `image` (in the test's folder),
+// declared image_w × image_h.
+Tilemap map_on(const std::string& image, int image_w = 8, int image_h = 8) {
+    Tilemap m = map_with(1, 1, {1});
+    m.tilesets[0].image = image;
+    m.tilesets[0].image_width = image_w, m.tilesets[0].image_height = image_h;
+    return m;
+}
+
+std::string draw_error(const Tilemap& m) {
+    Canvas c(4, 4);
+    TileArt art;
+    art.bind(&m);
+    try {
+        draw_map(c, art, m, 0, 0);
+    } catch (const RenderError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// The peak resident memory, in kB, of a child that resets its peak and then
+// runs fn: what fn allocated at most, give or take a few pages.
+long child_peak_kb(void (*fn)()) {
+    int fds[2];
+    REQUIRE(pipe(fds) == 0);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        std::ofstream("/proc/self/clear_refs") << "5";  // resets VmHWM to the current RSS
+        auto rss = [](const char* key) {
+            std::ifstream in("/proc/self/status");
+            std::string line;
+            while (std::getline(in, line))
+                if (line.rfind(key, 0) == 0) return std::stol(line.substr(std::strlen(key)));
+            return -1L;
+        };
+        const long before = rss("VmRSS:");
+        fn();
+        const long grew = rss("VmHWM:") - before;
+        (void)!write(fds[1], &grew, sizeof grew);
+        _exit(0);
+    }
+    close(fds[1]);
+    long grew = -1;
+    (void)!read(fds[0], &grew, sizeof grew);
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return grew;
+}
+
+}  // namespace
+
+TEST_SUITE("image-limits") {
+
+TEST_CASE("read_image_header reads each format's declared size") {
+    ImageHeader h;
+    std::string why;
+    REQUIRE(read_image_header(png_head(30000, 20000), h, why));
+    CHECK(std::string(h.format) == "PNG");
+    CHECK(h.width == 30000);
+    CHECK(h.height == 20000);
+    REQUIRE(read_image_header(bytes({'G', 'I', 'F', '8', '9', 'a', 0x34, 0x12, 0x02, 0x01}), h, why));
+    CHECK(h.width == 0x1234);
+    CHECK(h.height == 0x0102);
+    // BMP with a 40-byte header and a negative (top-down) height.
+    std::vector<uint8_t> bmp = bytes({'B', 'M', 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 40, 0, 0, 0, 0x20, 0, 0, 0,
+                                      0xF0, 0xFF, 0xFF, 0xFF});
+    REQUIRE(read_image_header(bmp, h, why));
+    CHECK(h.width == 32);
+    CHECK(h.height == 16);
+    // JPEG: SOI, an APP0 segment of 16 bytes, then SOF0 (precision 8, height 300, width 400).
+    std::vector<uint8_t> jpg = bytes({0xFF, 0xD8, 0xFF, 0xE0, 0, 16});
+    jpg.resize(jpg.size() + 14, 0);
+    for (int b : {0xFF, 0xC0, 0, 17, 8, 0x01, 0x2C, 0x01, 0x90}) jpg.push_back(uint8_t(b));
+    REQUIRE(read_image_header(jpg, h, why));
+    CHECK(std::string(h.format) == "JPEG");
+    CHECK(h.width == 400);
+    CHECK(h.height == 300);
+}
+
+TEST_CASE("read_image_header says what is wrong with anything else") {
+    ImageHeader h;
+    std::string why;
+    CHECK_FALSE(read_image_header({}, h, why));
+    CHECK(why == "it is empty");
+    CHECK_FALSE(read_image_header(bytes({'h', 'e', 'l', 'l', 'o'}), h, why));
+    CHECK(why == "it is not a PNG, JPEG, GIF or BMP image");
+    std::vector<uint8_t> cut = png_head(16, 16);
+    cut.resize(20);
+    CHECK_FALSE(read_image_header(cut, h, why));
+    CHECK(why == "its PNG header is cut short or has no IHDR chunk first");
+    CHECK_FALSE(read_image_header(png_head(0, 16), h, why));
+    CHECK(why == "its PNG header declares a size of 0x16 px");
+    CHECK_FALSE(read_image_header(png_head(0x80000000u, 1), h, why));
+    CHECK(why == "its PNG header declares a size beyond the format's (2147483648x1)");
+    CHECK_FALSE(read_image_header(bytes({0xFF, 0xD8, 0xFF, 0xE0, 0, 40}), h, why));
+    CHECK(why == "its JPEG header is cut short before the frame's size");
+}
+
+TEST_CASE("an image bomb is refused from its header, naming the file and the size, without decoding it") {
+    const std::string bomb = write_file("bomb.png", png_head(30000, 30000, 4096));
+    CHECK(draw_error(map_on("bomb.png", 32, 32)) ==
+          "refusing tileset image '" + bomb + "': its PNG header declares 30000x30000 px, more than the limit of "
+          "16384 px a side");
+    const std::string big = write_file("big.png", png_head(16384, 16384, 4096));
+    CHECK(draw_error(map_on("big.png", 32, 32)) ==
+          "refusing tileset image '" + big + "': its PNG header declares 16384x16384 px, 1024 MiB decoded, more "
+          "than the limit of 256 MiB");
+    // In a child, drawing the bomb's map costs next to nothing: it is never decoded.
+    const long kb = child_peak_kb([] {
+        const Tilemap m = map_on("bomb.png", 32, 32);
+        (void)draw_error(m);
+    });
+    CAPTURE(kb);
+    CHECK(kb >= 0);
+    CHECK(kb < 16 * 1024);  // well under one decoded row band of the bomb (30000 × 4 × 140 B)
+}
+
+TEST_CASE("truncated, corrupt and non-image files and folders are refused naming the file") {
+    std::vector<uint8_t> truncated = png_head(8, 8);
+    const std::string cut = write_file("cut.png", truncated);  // a header and no image data
+    CHECK(draw_error(map_on("cut.png")).rfind("cannot read tileset image '" + cut + "': ", 0) == 0);
+    const std::string text = write_file("text.png", bytes({'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g', 'e'}));
+    CHECK(draw_error(map_on("text.png")) ==
+          "cannot read tileset image '" + text + "': it is not a PNG, JPEG, GIF or BMP image");
+    const std::string empty = write_file("empty.png", {});
+    CHECK(draw_error(map_on("empty.png")) == "cannot read tileset image '" + empty + "': it is empty");
+    std::filesystem::create_directories(temp_dir() / "folder.png");
+    CHECK(draw_error(map_on("folder.png")) ==
+          "cannot read tileset image '" + (temp_dir() / "folder.png").string() + "': not a regular file");
+}
+
+TEST_CASE("an image not of its declared size is drawn at its real size, with a warning naming both") {
+    write_sheet("sheet.png");  // 8 × 8: 2 × 2 tiles of 4 px
+    Tilemap m = map_on("sheet.png", 16, 8);  // declared 16 × 8: 4 columns, if it were so
+    m.tilesets[0].columns = 4;
+    m.layers[0].cells = std::vector<uint32_t>{3};  // tile 2: row 1, column 0 of the real 2-column image
+    Canvas c(4, 4);
+    TileArt art;
+    art.bind(&m);
+    draw_map(c, art, m, 0, 0);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) CHECK(c.pixel(x, y) == sheet_color(2, x, y));
+    const std::vector<std::string> w = art.take_warnings();
+    REQUIRE(w.size() == 1);
+    CHECK(w[0] == "tileset image '" + (temp_dir() / "sheet.png").string() +
+                      "' is 8x8 px, but the map declares 16x8; drawn at its real size, as Tiled does");
+    draw_map(c, art, m, 0, 0);
+    CHECK(art.take_warnings().empty());  // once per image
+}
+
+}  // TEST_SUITE
