@@ -611,9 +611,18 @@ How frames are shown is the host's choice: headless by default (input from
 input-script:, nothing drawn, as deterministic as the physics); in a window
 with `downstroke --window' (real time, keyboard and controllers, sound;
 closing the window quits); or drawn off-screen into PNG files with
-`downstroke --capture DIR'."
+`downstroke --capture DIR'.
+
+Games run one after another: game-run! while a game is running (from its
+hooks, or from a REPL served into it) is an error."
   (check-game "game-run!" game)
   (check-frames frames)
+  ;; One frame loop at a time: game-run! from a hook or a REPL evaluation of
+  ;; a running game would nest a loop in its frame, and again in that one's.
+  (when (current-game)
+    (scm-error 'misc-error "game-run!"
+               "a game is already running (~A): game-run! cannot start a game from inside a running game's hooks or REPL; run games one after another"
+               (list (if (eq? (current-game) game) "this one" (game-title (current-game)))) #f))
   (parameterize ((current-game game)
                  (current-display (game-display game)))
     (case (display-mode)

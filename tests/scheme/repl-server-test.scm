@@ -174,6 +174,11 @@
   (unnumbered (string-drop-right (read-until reader prompt) (string-length prompt))))
 (close-port reader)
 
+;;; A game started from the REPL of a served game is refused (issue 35).
+(test-assert "game-run! from a served game's REPL is refused, naming game-run!"
+  (mentions? (answer m "(game-run! (make-game) frames: 1)")
+             "game-run!" "a game is already running" "run games one after another"))
+
 ;;; A runaway evaluation is interrupted; the game and other clients go on.
 (define looper (open-client served-path))
 (define other (open-client served-path))
