@@ -2,6 +2,7 @@
 (define-module (downstroke engine)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
+  #:use-module ((system vm vm) #:select (call-with-stack-overflow-handler))
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke physics)
@@ -48,7 +49,7 @@
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
               input input-script frame sounds history-size history
-              display debug-draw input-log)
+              display debug-draw input-log stack-limit)
   game?
   (title game-title)
   (width game-width)
@@ -69,7 +70,8 @@
   (history game-history-log game-history-log-set!)  ; a bounded log of (frame . scene)
   (display game-display)            ; the renderer's, or #f in a build without it
   (debug-draw game-debug-draw? %game-debug-draw-set!)
-  (input-log %game-input-log %game-input-log-set!))  ; a bounded log of (frame . held) at each change
+  (input-log %game-input-log %game-input-log-set!)  ; a bounded log of (frame . held) at each change
+  (stack-limit game-stack-limit))   ; bytes of Scheme stack each hook may use
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -141,7 +143,8 @@ collision mode, substeps and resting contacts."
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
-                    (input-script '()) (history 0) (input-map #f) (background #f))
+                    (input-script '()) (history 0) (input-map #f) (background #f)
+                    (stack-limit default-stack-limit))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
@@ -151,7 +154,9 @@ pixels (a window shows it scaled up). INPUT-MAP binds keys and controller
 inputs to actions in a window, as ((action name …) …) — see
 default-input-map, which is used when it is #f. BACKGROUND, (r g b), is the
 colour a frame is cleared to; #f uses the map's backgroundcolor, else the
-engine's (24 28 40)."
+engine's (24 28 40). STACK-LIMIT is the Scheme stack, in bytes, each hook
+(engine-update, update, render, a frame hook) may use: past it the hook
+raises stack-overflow naming itself (64 MiB by default)."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
@@ -161,6 +166,10 @@ engine's (24 28 40)."
                            (list name v) #f)))
             '(width height) (list width height))
   (check-substeps "make-game" substeps)
+  (unless (and (exact-integer? stack-limit) (<= min-stack-limit stack-limit max-stack-limit))
+    (scm-error 'wrong-type-arg "make-game"
+               "stack-limit: expected an exact integer of bytes from ~a (1 MiB) to ~a (4 GiB), got ~S"
+               (list min-stack-limit max-stack-limit stack-limit) #f))
   ;; dt is frame-delay ms, and the window's clock divides by it: a frame
   ;; takes some time, and time runs forwards.
   (unless (and (real? frame-delay) (> frame-delay 0) (not (inf? frame-delay)))
@@ -177,7 +186,7 @@ engine's (24 28 40)."
     (let ((game (%make-game title width height frame-delay scene update render engine-update
                             collision-mode substeps (and resting-contacts? #t)
                             (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)
-                            display #f (make-bounded-log))))
+                            display #f (make-bounded-log) stack-limit)))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       game)))
 
@@ -447,6 +456,25 @@ game-capture, a capture run or a window)."
 
 ;;; ---------------------------------------------------------------- the loop
 
+;; A hook's Scheme stack, in bytes. Guile grows its stack on demand without
+;; bound, so a recursion that never ends used to take about a minute and
+;; 8 GB before it failed; 64 MiB is over a million frames of ordinary
+;; recursion, and is reached in about a second.
+(define default-stack-limit (* 64 1024 1024))
+(define min-stack-limit (* 1024 1024))        ; below this the engine's own calls may not fit
+(define max-stack-limit (* 4 1024 1024 1024)) ; past this the bound no longer bounds memory
+
+(define (call-bounded game what thunk)
+  ;; (THUNK) with at most the game's stack-limit of stack: past it, a
+  ;; stack-overflow error naming WHAT (the hook) instead of growing on.
+  (call-with-stack-overflow-handler
+   (quotient (game-stack-limit game) 8)  ; in words of 8 bytes
+   thunk
+   (lambda ()
+     (scm-error 'stack-overflow what
+                "the hook used up its ~a MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?"
+                (list (quotient (game-stack-limit game) (* 1024 1024))) #f))))
+
 (define (check-frames frames)
   (unless (or (not frames) (and (real? frames) (not (nan? frames))))
     (scm-error 'wrong-type-arg "game-run!"
@@ -454,12 +482,17 @@ game-capture, a capture run or a window)."
 
 (define (run-frame-hooks! game)
   (for-each (lambda (hook)
-              (if (hook-error-reporter)
-                  (call-reporting (lambda ()
-                                    (format #f "a frame hook (now removed) raised an error in frame ~a"
-                                            (game-frame game)))
-                                  hook (lambda () (remove-frame-hook! hook)))
-                  (hook)))
+              ;; A hook that bounds its own calls (the REPL server's poll) is
+              ;; left to do so.
+              (let ((bounded (if (procedure-property hook 'own-stack-limit)
+                                 hook
+                                 (lambda () (call-bounded game "frame hook" hook)))))
+                (if (hook-error-reporter)
+                    (call-reporting (lambda ()
+                                      (format #f "a frame hook (now removed) raised an error in frame ~a"
+                                              (game-frame game)))
+                                    bounded (lambda () (remove-frame-hook! hook)))
+                    (bounded))))
             frame-hooks))
 
 ;;; ---------------------------------------------------------------- hook errors
@@ -500,7 +533,9 @@ game-capture, a capture run or a window)."
       (lambda (key . args)
         ;; The frames from the hook on, as Guile's REPL narrows them: the
         ;; game loop's around it are always the same.
-        (unless (eq? key 'quit)
+        ;; A stack overflow's frames are the runaway recursion, a million
+        ;; of the same: its report is the error alone.
+        (unless (memq key '(quit stack-overflow))
           (let ((tag (cdr (fluid-ref %stacks))))
             (set! frames ((@ (system repl debug) narrow-stack->vector) (make-stack #t) 3 tag 0 1))))))))
 
@@ -532,14 +567,14 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
     (record-input! game frame held)
     (game-input-set! game (make-input held (input-held-list (game-input game))))
     (let ((engine (game-engine-update game)))
-      (when engine (engine game dt)))
+      (when engine (call-bounded game "engine-update:" (lambda () (engine game dt)))))
     (let ((update (game-update game)))
-      (when update (update game dt)))
+      (when update (call-bounded game "update:" (lambda () (update game dt)))))
     (camera-follow! game)
     (let ((render (game-render game))
           (display (game-display game)))
       (when display (%display-clear-commands! display))
-      (when render (render game)))
+      (when render (call-bounded game "render:" (lambda () (render game)))))
     ;; unless the frame rewound the game, the next frame is frame + 1
     (when (= (game-frame game) frame) (game-frame-set! game (+ frame 1)))))
 

@@ -29,19 +29,24 @@
 (define (user-file? file dir)
   (string-prefix? dir file))
 
+(define max-reported-frames 20)  ; a runaway recursion has a million, all alike
+
 (define (stack-user-frames stack dir)
-  ;; (file line call) of STACK's frames in files under DIR, innermost first.
-  (let loop ((i 0) (acc '()))
-    (if (= i (stack-length stack))
-        (reverse acc)
-        (let* ((frame (stack-ref stack i))
-               (where (frame-file-line frame)))
-          (loop (+ i 1)
-                (if (and where (user-file? (car where) dir))
-                    (cons (list (car where) (cdr where)
-                                ((@ (system vm frame) frame-call-representation) frame))
-                          acc)
-                    acc))))))
+  ;; (file line call) of STACK's frames in files under DIR, innermost first,
+  ;; at most max-reported-frames of them and then #t if more were left
+  ;; out. Walked frame to frame (stack-ref from the top each time would be
+  ;; quadratic in a deep stack).
+  (let loop ((frame (and (> (stack-length stack) 0) (stack-ref stack 0))) (n 0) (acc '()))
+    (cond ((not frame) (reverse acc))
+          ((= n max-reported-frames) (reverse (cons #t acc)))
+          (else
+           (let ((where (frame-file-line frame)))
+             (if (and where (user-file? (car where) dir))
+                 (loop (frame-previous frame) (+ n 1)
+                       (cons (list (car where) (cdr where)
+                                   ((@ (system vm frame) frame-call-representation) frame))
+                             acc))
+                 (loop (frame-previous frame) n acc)))))))
 
 (define (report-error key args script)
   (let ((port (current-error-port))
@@ -52,8 +57,10 @@
         (display-backtrace stack port)
         (begin
           (for-each (lambda (f)
-                      (format port "  at ~a:~a~a~%" (car f) (cadr f)
-                              (call-text (caddr f))))
+                      (if (eq? f #t)
+                          (format port "  ... (more frames left out)~%")
+                          (format port "  at ~a:~a~a~%" (car f) (cadr f)
+                                  (call-text (caddr f)))))
                     (stack-user-frames stack (string-append (dirname script) "/")))
           (display "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n" port)))))
 
@@ -156,7 +163,11 @@
 
 (define (serve-repl! socket timeout)
   (let ((server ((@ (downstroke repl-server) make-repl-server) socket #:timeout timeout)))
-    (add-frame-hook! (lambda () ((@ (downstroke repl-server) repl-server-poll!) server)))
+    (add-frame-hook! (let ((poll (lambda () ((@ (downstroke repl-server) repl-server-poll!) server))))
+                       ;; Each evaluation has its own stack bound (repl-server.scm);
+                       ;; a frame hook's around them would be reached first.
+                       (set-procedure-property! poll 'own-stack-limit #t)
+                       poll))
     ;; A hook's error pauses the game instead of ending the session.
     (hook-error-reporter
      (lambda (text)

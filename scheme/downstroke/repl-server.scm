@@ -18,6 +18,7 @@
   #:use-module (rnrs bytevectors)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
+  #:use-module ((system vm vm) #:select (call-with-stack-overflow-handler))
   #:export (default-repl-timeout open-unix-repl-socket open-tcp-repl-socket
             remove-unix-repl-socket!
             make-repl-server repl-server-poll! repl-server-broadcast!))
@@ -314,6 +315,11 @@ arbitrary code execution."
 (define *timeout* default-repl-timeout)
 (define *strikes* 0)                 ; timer expiries in this slice's evaluation
 
+;; An evaluation's Scheme stack, in bytes: as a game's hooks have by default
+;; (make-game stack-limit:), so a recursion that never ends fails in about a
+;; second instead of growing Guile's stack to gigabytes.
+(define repl-stack-limit (* 64 1024 1024))
+
 (define (seconds->timer s)
   (let ((us (inexact->exact (round (* s 1000000)))))
     (values (quotient us 1000000) (remainder us 1000000))))
@@ -458,12 +464,27 @@ Meta-command used by Geiser to evaluate and compile code."))))
 
 (define (report-error key . args)
   ;; As Guile's 'backtrace: the failed evaluation's frames, then the error.
-  ;; A timeout's frames are the signal's, and Guile cannot print them.
-  (let ((port (current-error-port)))
-    (when (zero? *strikes*)
-      (let ((tag (and (pair? (fluid-ref %stacks)) (cdr (fluid-ref %stacks)))))
-        (print-frames (narrow-stack->vector (make-stack #t) 3 tag 0 (and tag 1)) port)))
-    (print-exception port #f key args)))
+  ;; A timeout's frames are the signal's, and Guile cannot print them. A
+  ;; stack overflow Guile's REPL reports itself (its report-keys), without
+  ;; the frames (a million of the same recursion); and it hands the error
+  ;; here more than once as it unwinds: left to Guile.
+  (unless (eq? key 'stack-overflow)
+    (let ((port (current-error-port)))
+      (when (zero? *strikes*)
+        (let ((tag (and (pair? (fluid-ref %stacks)) (cdr (fluid-ref %stacks)))))
+          (print-frames (narrow-stack->vector (make-stack #t) 3 tag 0 (and tag 1)) port)))
+      (print-exception port #f key args))))
+
+(define (call-with-bounded-stack thunk)
+  ;; (THUNK) with at most repl-stack-limit of stack; past it a
+  ;; stack-overflow error, which the REPL reports as any other.
+  (call-with-stack-overflow-handler
+   (quotient repl-stack-limit 8)  ; in words of 8 bytes
+   thunk
+   (lambda ()
+     (scm-error 'stack-overflow "repl"
+                "the evaluation used up its ~a MiB of Scheme stack: a recursion that never ends?"
+                (list (quotient repl-stack-limit (* 1024 1024))) #f))))
 
 (define (run-slice! c thunk)
   ;; Runs THUNK (a REPL start or resume) until it suspends or ends.
@@ -474,12 +495,14 @@ Meta-command used by Geiser to evaluate and compile code."))))
                       (lambda ()
                         (with-continuation-barrier
                          (lambda ()
-                           (call-with-prompt repl-tag thunk
-                             (lambda (k why)
-                               (if (eq? why 'read)
-                                   (set-client-cont! c k)
-                                   (drop! c (format #f "evaluation still running ~a s after its interrupt" *timeout*)))
-                               #f)))))
+                           (call-with-bounded-stack
+                            (lambda ()
+                              (call-with-prompt repl-tag thunk
+                                (lambda (k why)
+                                  (if (eq? why 'read)
+                                      (set-client-cont! c k)
+                                      (drop! c (format #f "evaluation still running ~a s after its interrupt" *timeout*)))
+                                  #f)))))))
                       (lambda (key . args)
                         (drop! c (format #f "REPL failed: ~a ~s" key args))
                         #f))))

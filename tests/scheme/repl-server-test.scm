@@ -179,6 +179,13 @@
   (mentions? (answer m "(game-run! (make-game) frames: 1)")
              "game-run!" "a game is already running" "run games one after another"))
 
+;;; A recursion that never ends, typed at the REPL, ends in stack-overflow
+;;; (64 MiB of stack) and the REPL goes on (issue 35).
+(test-equal "a runaway recursion at the REPL ends in stack-overflow, with no flood of frames"
+  "In procedure repl: the evaluation used up its 64 MiB of Scheme stack: a recursion that never ends?\n"
+  (answer m "(let down ((n 0)) (+ 1 (down n)))"))
+(test-equal "… and the REPL goes on" "3\n" (answer m "(+ 1 2)"))
+
 ;;; A runaway evaluation is interrupted; the game and other clients go on.
 (define looper (open-client served-path))
 (define other (open-client served-path))

@@ -1,7 +1,7 @@
 ;;; What a script can do to a running game (issue 35): re-entering game-run!,
 ;;; runaway recursion in a hook, and sizes past the bounds. Each case asserts
 ;;; the exact error text.
-(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (ice-9 popen) (ice-9 textual-ports) (ice-9 rdelim))
 
 (load "support.scm")
 
@@ -38,5 +38,67 @@
 (game-run! first-game frames: 8)
 (test-equal "two games run one after the other, and the first again after"
   '(8 7) (list (game-frame first-game) (game-frame second-game)))
+
+;;; ---------------------------------------------------------------- the stack
+(define host (readlink "/proc/self/exe"))
+(define runaway (string-append (getenv "DS_TEST_DATA") "/scripts/runaway.scm"))
+(define (run-host . argv)
+  ;; (exit status . everything printed, error port included).
+  (let* ((cmd (string-append (string-join (map (lambda (a) (string-append "'" a "'")) (cons host argv)) " ")
+                             " 2>&1"))
+         (p (open-pipe* OPEN_READ "/bin/sh" "-c" cmd))
+         (text (get-string-all p)))
+    (cons (status:exit-val (close-pipe p)) text)))
+
+;; In a child process (the host on runaway.scm): the recursion in update:
+;; ends in a stack-overflow error naming the hook; the child reports how
+;; long it took and its peak memory.
+(define caught (string-split (cdr (run-host runaway "caught")) #\newline))
+(test-equal "a runaway recursion in update: ends in stack-overflow" "stack-overflow" (car caught))
+(test-equal "… naming the hook and the limit"
+  "In procedure update:: the hook used up its 64 MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?"
+  (cadr caught))
+(define took-ms (string->number (caddr caught)))
+(test-assert (format #f "… within a few seconds (took ~a ms)" took-ms) (< took-ms 5000))
+(define peak-and-start (map string->number (string-split (cadddr caught) #\space)))
+(define grew-mb (quotient (- (car peak-and-start) (cadr peak-and-start)) 1024))
+(test-assert (format #f "… with the process's peak memory less than 300 MB above the game's own (grew ~a MB)" grew-mb)
+  (< grew-mb 300))
+
+(define uncaught (run-host runaway))
+(test-equal "unserved and uncaught, it ends the script with status 1" 1 (car uncaught))
+(test-assert "… and a short message, not the million frames (at most 30 lines)"
+  (<= (length (string-split (cdr uncaught) #\newline)) 30))
+(test-assert "… that names the hook and says what happened"
+  (mentions? (cdr uncaught) "update:" "used up its 64 MiB of Scheme stack" "more frames left out"))
+
+(define small-limit-error
+  (error-text (lambda ()
+                (game-run! (make-game stack-limit: (* 2 1024 1024)
+                                      update: (lambda (game dt) (let down ((n 0)) (+ 1 (down n)))))
+                           frames: 1))))
+(test-equal "stack-limit: sets the bound, in bytes"
+  "In procedure update:: the hook used up its 2 MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?\n"
+  small-limit-error)
+(define hook-error #f)
+(define (deep-hook) (let down ((n 0)) (+ 1 (down n))))
+(add-frame-hook! deep-hook)
+(set! hook-error (error-text (lambda () (game-run! (make-game stack-limit: (* 2 1024 1024)) frames: 1))))
+(remove-frame-hook! deep-hook)
+(test-equal "a frame hook is bounded and named too"
+  "In procedure frame hook: the hook used up its 2 MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?\n"
+  hook-error)
+(test-equal "a recursion deep but finite within the limit runs"
+  100000
+  (let ((depth #f))
+    (game-run! (make-game update: (lambda (game dt) (set! depth (let down ((n 100000)) (if (= n 0) 0 (+ 1 (down (- n 1))))))))
+               frames: 1)
+    depth))
+(test-equal "make-game refuses a stack-limit below 1 MiB, naming it and the value"
+  "In procedure make-game: stack-limit: expected an exact integer of bytes from 1048576 (1 MiB) to 4294967296 (4 GiB), got 1000\n"
+  (error-text (lambda () (make-game stack-limit: 1000))))
+(test-equal "… and one that is not an integer"
+  "In procedure make-game: stack-limit: expected an exact integer of bytes from 1048576 (1 MiB) to 4294967296 (4 GiB), got +nan.0\n"
+  (error-text (lambda () (make-game stack-limit: +nan.0))))
 
 (test-end "run-limits")
