@@ -5,10 +5,14 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <system_error>
+#include <vector>
 
+#include "constants.hpp"
 #include "render_error.hpp"
+#include "sound_header.hpp"
 
 namespace ds::render {
 
@@ -61,6 +65,32 @@ std::string not_a_sound_file(const std::string& path) {
     return "";
 }
 
+// What SDL_mixer would allocate for the sound at `path`, from its header
+// (read before anything is decoded); "" when it is within
+// kMaxSoundDecodedBytes, else why not.
+std::string too_big_or_lying(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(path, ec);
+    if (!in || ec) return "cannot be read";
+    std::vector<uint8_t> head(std::min<uint64_t>(size, kSoundHeaderBytes));
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    std::vector<uint8_t> tail(std::min<uint64_t>(size, kSoundTailBytes));
+    in.seekg(std::streamoff(size - tail.size()));
+    in.read(reinterpret_cast<char*>(tail.data()), std::streamsize(tail.size()));
+    if (!in) return "reading it failed";
+    SoundHeader h;
+    std::string why;
+    if (!read_sound_header(head, tail, size, h, why)) return why;
+    // Resampled to kFrequency, kOutputChannels of 16 bits: the decoded size.
+    const double decoded = double(h.frames) * kFrequency / double(h.rate) * kOutputChannels * 2;
+    if (decoded > double(kMaxSoundDecodedBytes))
+        return std::string("its ") + h.format + " header declares " + std::to_string(h.frames) + " samples at " +
+               std::to_string(h.rate) + " Hz, " + std::to_string(int64_t(decoded) >> 20) +
+               " MiB decoded, more than the limit of " + std::to_string(kMaxSoundDecodedBytes >> 20) + " MiB";
+    return "";
+}
+
 }  // namespace
 
 SoundBank::SoundBank(bool audible) {
@@ -89,8 +119,13 @@ SoundBank::~SoundBank() {
 void SoundBank::load(const std::string& name, const std::string& path) {
     if (const std::string why = not_a_sound_file(path); !why.empty())
         throw RenderError("sound " + path + ": " + why);
+    if (const std::string why = too_big_or_lying(path); !why.empty())
+        throw RenderError("sound " + path + ": " + why);
     ChunkPtr chunk(Mix_LoadWAV(path.c_str()));
     if (!chunk) throw RenderError("sound " + path + ": " + Mix_GetError());
+    if (int64_t(chunk->alen) > kMaxSoundDecodedBytes)  // a decoder that outgrew the header's claim
+        throw RenderError("sound " + path + ": it decoded to " + std::to_string(chunk->alen >> 20) +
+                          " MiB, more than the limit of " + std::to_string(kMaxSoundDecodedBytes >> 20) + " MiB");
     // Only now, with the new sound decoded, may the old one go.
     auto [it, added] = sounds_.try_emplace(name, chunk.get());
     if (!added) {

@@ -20,6 +20,12 @@ constexpr Rgba kBackground{24, 28, 40, 255};
 constexpr int64_t kMaxImageSidePx = 16384;
 constexpr int64_t kMaxImageDecodedBytes = int64_t(256) << 20;
 
+// The most a sound may take decoded, at the mixer's 44.1 kHz, stereo, 16
+// bits: 64 MiB is about six minutes, where a sound effect lasts seconds; a
+// WAV or OGG header can claim any length, and SDL_mixer decodes a sound
+// whole, so the claim is checked (sound_header.hpp) before it is believed.
+constexpr int64_t kMaxSoundDecodedBytes = int64_t(64) << 20;
+
 // The largest window scale tried when fitting the screen: beyond this a
 // pixel-art game is already huge, and a 64× surface blit would be wasteful.
 constexpr int kMaxScale = 16;

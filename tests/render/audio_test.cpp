@@ -149,6 +149,68 @@ TEST_CASE("what is not a sound file is refused, naming the path") {
     CHECK_FALSE(bank.has("s"));
 }
 
+// A WAV header with the given fields and `payload` bytes of samples after
+// it, whatever the header claims (issue 35's lying headers).
+void write_lying_wav(const std::string& path, uint32_t data_bytes, uint32_t channels, uint32_t rate,
+                     uint32_t payload) {
+    std::string w = "RIFF";
+    put_le(w, 36 + payload, 4);
+    w += "WAVEfmt ";
+    put_le(w, 16, 4);
+    put_le(w, 1, 2);
+    put_le(w, channels, 2);
+    put_le(w, rate, 4);
+    put_le(w, rate * 2 * channels, 4);
+    put_le(w, 2 * channels, 2);
+    put_le(w, 16, 2);
+    w += "data";
+    put_le(w, data_bytes, 4);
+    w.append(payload, '\0');
+    std::ofstream(path, std::ios::binary) << w;
+}
+
+TEST_CASE("a sound whose header lies is refused from the header, naming the file, before SDL_mixer decodes it") {
+    TempDir tmp;
+    SoundBank bank(false);
+    const std::string huge = tmp.file("huge.wav");  // 2 GB of data claimed in a 100-byte file
+    write_lying_wav(huge, 0x80000000u, 1, 22050, 56);
+    CHECK(load_error(bank, "s", huge) ==
+          "sound " + huge + ": its WAV data chunk declares 2147483648 bytes, but the file holds 56 after it");
+    const std::string choir = tmp.file("choir.wav");
+    write_lying_wav(choir, 64, 60000, 22050, 64);
+    CHECK(load_error(bank, "s", choir) == "sound " + choir + ": its WAV header declares 60000 channels (at most 8)");
+    const std::string shrill = tmp.file("shrill.wav");
+    write_lying_wav(shrill, 64, 1, 4000000000u, 64);
+    CHECK(load_error(bank, "s", shrill) ==
+          "sound " + shrill + ": its WAV header declares a rate of 4000000000 Hz (at most 384000)");
+    // Honest but long: 20 minutes of 8 kHz mono is 19 MB of file, and 201 MiB
+    // once the mixer has it at 44.1 kHz stereo.
+    const std::string epic = tmp.file("epic.wav");
+    write_lying_wav(epic, 8000 * 2 * 1200, 1, 8000, 8000 * 2 * 1200);
+    CHECK(load_error(bank, "s", epic) ==
+          "sound " + epic + ": its WAV header declares 9600000 samples at 8000 Hz, 201 MiB decoded, more than the "
+                            "limit of 64 MiB");
+    CHECK_FALSE(bank.has("s"));
+}
+
+TEST_CASE("a truncated or corrupt OGG is refused naming the file") {
+    TempDir tmp;
+    SoundBank bank(false);
+    std::ifstream in(std::string(DS_TEST_DATA) + "/sounds/tone.ogg", std::ios::binary);
+    const std::string ogg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    REQUIRE(ogg.size() > 200);
+    const std::string cut = tmp.file("cut.ogg");  // the headers and half the audio
+    std::ofstream(cut, std::ios::binary) << ogg.substr(0, ogg.size() / 2);
+    CHECK(contains(load_error(bank, "s", cut), "sound " + cut + ": "));
+    const std::string stub = tmp.file("stub.ogg");  // a page header and nothing more
+    std::ofstream(stub, std::ios::binary) << ogg.substr(0, 20);
+    CHECK(load_error(bank, "s", stub) == "sound " + stub + ": its Ogg page header is cut short");
+    const std::string text = tmp.file("notes.ogg");
+    std::ofstream(text) << "these are not the samples you are looking for\n";
+    CHECK(load_error(bank, "s", text) == "sound " + text + ": it is not a WAV or Ogg Vorbis file");
+    CHECK_FALSE(bank.has("s"));
+}
+
 TEST_CASE("a failed load leaves the earlier sound of that name; a good one replaces it") {
     TempDir tmp;
     write_wav(tmp.file("a.wav"), 1000);
