@@ -19,6 +19,7 @@
 #include "tilemap_type.hpp"
 
 #include "audio.hpp"
+#include "render/constants.hpp"
 #include "canvas.hpp"
 #include "draw_list.hpp"
 #include "input.hpp"
@@ -117,7 +118,11 @@ SCM make_display(SCM width, SCM height) {
     Failure f{"make-display"};
     int w = 0, h = 0;
     Display* d = nullptr;
-    if (from_scm(width, w, "width", f, 1, kMaxCanvasSide) && from_scm(height, h, "height", f, 1, kMaxCanvasSide))
+    if (from_scm(width, w, "width", f, 1, kMaxCanvasSide) && from_scm(height, h, "height", f, 1, kMaxCanvasSide) &&
+        int64_t(w) * h > kMaxCanvasPixels)
+        fail(f, "wrong-type-arg", scm_list_3(width, height, scm_from_int64(kMaxCanvasPixels)),
+             "width × height: ~S × ~S is more than ~S pixels (256 MiB a frame)");
+    if (!f)
         guarded(f, nullptr, [&] {
             d = new Display;
             d->width = w;
@@ -341,7 +346,10 @@ SCM push_command(const char* proc, SCM display, SCM color, SCM space, Fill fill)
     Failure f;
     Display* d = display_of(display, proc, f);
     DrawCommand c;
-    if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f))
+    if (d && d->commands.commands.size() >= size_t(kMaxDrawCommands))
+        fail(f, "misc-error", scm_list_1(scm_from_int64(kMaxDrawCommands)),
+             "more than ~S drawings queued in one frame: a render: loop that never ends?");
+    else if (d && (scm_is_false(color) || color_arg(color, c.color, f)) && space_arg(space, c.space, f))
         guarded(f, nullptr, [&] {  // fill may copy a string
             if (fill(c, f)) d->commands.commands.push_back(std::move(c));
         });

@@ -10,13 +10,14 @@ dir=build-asan
 jobs=${JOBS:-$(nproc)}
 
 # The Scheme suites worth their time under ASan: the native steps (physics),
-# scenes and frames (world), maps (tilemap), tweens and entities.
-scheme_suites="physics|world|tilemap|tween|entity"
+# scenes and frames (world), maps (tilemap), tweens and entities, and what a
+# script can do to a running game (run-limits: stack, re-entry, sizes).
+scheme_suites="physics|world|tilemap|tween|entity|run-limits"
 tests="^(core|bindings|render)\.|^fuzz\.replay\.|^scheme\.($scheme_suites)-test$"
 
 cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDOWNSTROKE_SANITIZE=ON >/dev/null
 targets=(downstroke downstroke-core-tests downstroke-bindings-tests
-         downstroke-replay-tmx downstroke-replay-tsx downstroke-replay-plist)
+         downstroke-replay-tmx downstroke-replay-tsx downstroke-replay-plist downstroke-replay-image)
 # (grep reads all of make's list: -q would end the pipe early, and pipefail fail it)
 cmake --build "$dir" --target help | grep downstroke-render-tests >/dev/null && targets+=(downstroke-render-tests)
 cmake --build "$dir" -j"$jobs" --target "${targets[@]}"

@@ -165,6 +165,12 @@ raises stack-overflow naming itself (64 MiB by default)."
                 (scm-error 'wrong-type-arg "make-game" "~A: expected an exact integer from 1 to 16384 (pixels), got ~S"
                            (list name v) #f)))
             '(width height) (list width height))
+  ;; A frame is width × height × 4 bytes, drawn and captured whole: bounded
+  ;; as the renderer's canvas is (kMaxCanvasPixels, 256 MiB).
+  (unless (<= (* width height) max-game-pixels)
+    (scm-error 'wrong-type-arg "make-game"
+               "width × height: expected at most ~a pixels (256 MiB a frame), got ~a × ~a"
+               (list max-game-pixels width height) #f))
   (check-substeps "make-game" substeps)
   (unless (and (exact-integer? stack-limit) (<= min-stack-limit stack-limit max-stack-limit))
     (scm-error 'wrong-type-arg "make-game"
@@ -461,6 +467,7 @@ game-capture, a capture run or a window)."
 ;; 8 GB before it failed; 64 MiB is over a million frames of ordinary
 ;; recursion, and is reached in about a second.
 (define default-stack-limit (* 64 1024 1024))
+(define max-game-pixels (expt 2 26))          ; the renderer's kMaxCanvasPixels
 (define min-stack-limit (* 1024 1024))        ; below this the engine's own calls may not fit
 (define max-stack-limit (* 4 1024 1024 1024)) ; past this the bound no longer bounds memory
 

@@ -82,6 +82,9 @@ Canvas::Canvas(int width, int height) {
     if (width <= 0 || height <= 0 || width > kMaxCanvasSide || height > kMaxCanvasSide)
         throw RenderError("canvas size " + std::to_string(width) + "x" + std::to_string(height) +
                           " is not between 1 and " + std::to_string(kMaxCanvasSide));
+    if (int64_t(width) * height > kMaxCanvasPixels)
+        throw RenderError("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is more than " +
+                          std::to_string(kMaxCanvasPixels) + " pixels");
     surface_ = SDL_CreateRGBSurfaceWithFormat(0, width, height, 32, SDL_PIXELFORMAT_ARGB8888);
     if (!surface_) throw RenderError(std::string("cannot make a canvas: ") + SDL_GetError());
     SDL_SetSurfaceBlendMode(surface_, SDL_BLENDMODE_NONE);

@@ -4,6 +4,8 @@
 #pragma once
 #include <SDL.h>
 
+#include <cstdint>
+
 #include <string>
 #include <string_view>
 
@@ -67,5 +69,9 @@ private:
 // The largest canvas side accepted: beyond any display, and small enough
 // that width × height × 4 bytes cannot overflow an int.
 constexpr int kMaxCanvasSide = 16384;
+// The most pixels a canvas holds: 2^26 (256 MiB at 4 bytes a pixel, 8192 ×
+// 8192 or 16384 × 4096), so the largest game a script may make is drawn and
+// captured within a bounded allocation, not 1 GiB for 16384 × 16384.
+constexpr int64_t kMaxCanvasPixels = int64_t(1) << 26;
 
 }  // namespace ds::render

@@ -26,6 +26,12 @@ constexpr int64_t kMaxImageDecodedBytes = int64_t(256) << 20;
 // whole, so the claim is checked (sound_header.hpp) before it is believed.
 constexpr int64_t kMaxSoundDecodedBytes = int64_t(64) << 20;
 
+// The most draw-* calls one frame may queue: 262 144 is hundreds of times
+// what a 640 × 360 picture can show (a 16 px sprite on every cell is 900),
+// and at about 80 bytes a call it keeps a runaway render: loop to about
+// 20 MB instead of growing until the machine runs out.
+constexpr int64_t kMaxDrawCommands = int64_t(1) << 18;
+
 // The largest window scale tried when fitting the screen: beyond this a
 // pixel-art game is already huge, and a 64× surface blit would be wasteful.
 constexpr int kMaxScale = 16;

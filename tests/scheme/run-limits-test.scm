@@ -101,4 +101,56 @@
   "In procedure make-game: stack-limit: expected an exact integer of bytes from 1048576 (1 MiB) to 4294967296 (4 GiB), got +nan.0\n"
   (error-text (lambda () (make-game stack-limit: +nan.0))))
 
+;;; ---------------------------------------------------------------- sizes from scripts
+;; A render: that queues drawings without end is stopped at the frame's bound.
+(define queued 0)
+(define draw-flood
+  (error-text (lambda ()
+                (game-run! (make-game width: 64 height: 64
+                                      render: (lambda (game)
+                                                (let loop ((i 0))
+                                                  (when (< i 10000000)
+                                                    (draw-rect 0 0 1 1 '(255 0 0))
+                                                    (set! queued (+ i 1))
+                                                    (loop (+ i 1))))))
+                           frames: 1))))
+(test-equal "a render: queuing 10^7 drawings is stopped at 262144, naming the procedure"
+  "In procedure draw-rect: more than 262144 drawings queued in one frame: a render: loop that never ends?\n"
+  draw-flood)
+(test-equal "… after queuing exactly the bound" 262144 queued)
+
+;; history: 10^9 is allowed: the ring grows only as frames are recorded.
+(define long-memory (make-game history: 1000000000))
+(game-run! long-memory frames: 12)
+(test-equal "history: 10^9 keeps only the frames run (12 scenes after 12 frames)"
+  12 (length (game-history long-memory)))
+
+;; 10^6 entities: allowed, and stepped natively in one frame.
+(define million
+  (make-scene entities: (map (lambda (i) (list #:x (* 2 i) #:y 0 #:width 1 #:height 1 #:vx 1)) (iota 1000000))))
+(define stepped (step-scene million 16))
+(test-equal "10^6 entities step (allowed): all of them, each moved"
+  '(1000000 1 1999999)
+  (let ((es (scene-entities stepped)))
+    (list (length es) (entity-ref (car es) #:x) (entity-ref (last es) #:x))))
+
+;; An entity plist of 10^5 keys: allowed; the steps read past the unknown keys.
+(define wide (append (append-map (lambda (i) (list (symbol->keyword (string->symbol (format #f "k~a" i))) i))
+                                 (iota 100000))
+                     '(#:x 5 #:y 0 #:width 1 #:height 1 #:vx 2)))
+(test-equal "an entity of 10^5 keys (allowed): entity-ref finds the last, a step moves it"
+  '(99999 7)
+  (list (entity-ref wide #:k99999) (entity-ref (car (scene-entities (step-scene (make-scene entities: (list wide)) 16))) #:x)))
+
+;; The largest game: 2^26 pixels (256 MiB a frame); its capture works.
+(test-equal "make-game refuses more than 2^26 pixels, naming both sizes"
+  "In procedure make-game: width × height: expected at most 67108864 pixels (256 MiB a frame), got 16384 × 16384\n"
+  (error-text (lambda () (make-game width: 16384 height: 16384))))
+(when (renderer-available?)
+  (let ((file (string-append (or (getenv "TMPDIR") "/tmp") "/ds-largest-" (number->string (getpid)) ".png"))
+        (largest (make-game width: 16384 height: 4096)))
+    (game-capture largest file)
+    (test-equal "the largest game, 16384 × 4096, is captured whole" '(24 28 40 255) (game-pixel largest 16383 4095))
+    (delete-file file)))
+
 (test-end "run-limits")
