@@ -263,6 +263,20 @@
 (reply m "(game-update-set! game (lambda (g dt) #t))")
 (usleep 100000)
 (test-assert "a fixed hook lets the game continue" (< failed-frame (value m "(game-frame game)")))
+;; A runaway recursion in the served game's update: pauses it the same way,
+;; reported without its million frames (issue 35).
+(define overflow-report
+  (begin (send! m "(game-update-set! game (lambda (g dt) (let down ((n 0)) (+ 1 (down n)))))")
+         (read-until m "a recursion that never ends?\n")))
+(test-assert "a stack overflow in update: is reported, naming the hook, and pauses the game"
+  (and (string-contains overflow-report "downstroke: a hook raised an error in frame ")
+       (string-contains overflow-report
+                        "In procedure update:: the hook used up its 64 MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?")))
+(test-assert "… in a few lines, not the recursion's frames"
+  (<= (length (string-split overflow-report #\newline)) 6))
+(reply m "(game-update-set! game (lambda (g dt) #t))")
+(usleep 100000)
+
 (send! m "(add-frame-hook! (lambda () (error \"frame hook failed\")))")
 (define frame-hook-report (read-until m "frame hook failed\n"))
 (test-assert "a failing frame hook is reported and removed"
