@@ -193,7 +193,21 @@ def maps():
         ' </group>\n'))
 
 
+def json_twins():
+    import shutil
+    import subprocess
+    if not shutil.which("tiled"):
+        print("tiled is not installed: the .tmj twins are left as they are")
+        return
+    env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
+    for name in sorted(os.listdir(OUT)):
+        if name.endswith(".tmx"):
+            subprocess.run(["tiled", "--export-map", "json", name, name[:-4] + ".tmj"], cwd=OUT, env=env,
+                           check=True, stderr=subprocess.DEVNULL)
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     sheet()
     maps()
+    json_twins()

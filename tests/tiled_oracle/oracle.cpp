@@ -3,7 +3,9 @@
 //
 //   downstroke-tiled-oracle [--keep DIR] [--doc DIR] MAP.tmx|DIR ...
 //
-// A directory stands for every *.tmx in it (not below). Tiled's picture
+// A directory stands for every *.tmx and *.tmj in it (not below): Tiled's
+// JSON twins of the TMX maps (tiled --export-map json) check the JSON reader
+// reads every drawing attribute the TMX reader does. Tiled's picture
 // covers what reaches past the map's edges, so only the map's own area is
 // compared; it is clear where nothing is drawn and half-clear under a
 // layer's opacity, so it is laid over the engine's background colour (the
@@ -198,6 +200,24 @@ void write_doc_picture(const std::string& file, const Canvas& ours, SDL_Surface*
     doc.save_png(file);
 }
 
+bool repeats_an_image(const std::vector<LayerInfo>& tree) {
+    for (const LayerInfo& l : tree)
+        if ((l.kind == LayerKind::Image && (l.repeat_x || l.repeat_y)) || repeats_an_image(l.children)) return true;
+    return false;
+}
+
+// What tmxrasterizer is given for `path`: the map itself, except that Tiled
+// 1.8's JSON reader drops an image layer's repeatx/repeaty (later Tiled reads
+// them): a .tmj twin with a repeated image layer is checked against Tiled's
+// picture of its .tmx.
+std::string oracle_input(const std::string& path, const Tilemap& map) {
+    fs::path twin = fs::path(path).replace_extension(".tmx");
+    std::error_code ec;
+    if (fs::path(path).extension() == ".tmj" && repeats_an_image(map.layer_tree) && fs::exists(twin, ec))
+        return twin.string();
+    return path;
+}
+
 int compare(const std::string& path, const std::string& keep, const std::string& doc_dir) {
     Tilemap map;
     try {
@@ -206,12 +226,13 @@ int compare(const std::string& path, const std::string& keep, const std::string&
         std::printf("ERROR %s: %s\n", path.c_str(), e.what());
         return 2;
     }
-    const std::string base = fs::path(path).stem().string();
+    const std::string base = fs::path(path).stem().string() + (fs::path(path).extension() == ".tmj" ? "-json" : "");
     const std::string tiled_png = (fs::path(keep) / (base + ".tiled.png")).string();
     const std::string ours_png = (fs::path(keep) / (base + ".engine.png")).string();
     std::vector<const MapObject*> shapes;
     const std::string hide = hidden_layers(map, shapes);
-    const std::string cmd = "QT_QPA_PLATFORM=offscreen tmxrasterizer --no-smoothing" + hide + " " + quoted(path) + " " +
+    const std::string cmd = "QT_QPA_PLATFORM=offscreen tmxrasterizer --no-smoothing" + hide + " " +
+                            quoted(oracle_input(path, map)) + " " +
                             quoted(tiled_png) + " >/dev/null 2>&1";
     if (std::system(cmd.c_str()) != 0) {
         std::printf("ERROR %s: tmxrasterizer failed\n", path.c_str());
@@ -309,7 +330,7 @@ int main(int argc, char** argv) {
         if (fs::is_directory(a, ec)) {
             std::vector<std::string> found;
             for (const auto& e : fs::directory_iterator(a))
-                if (e.path().extension() == ".tmx") found.push_back(e.path().string());
+                if (e.path().extension() == ".tmx" || e.path().extension() == ".tmj") found.push_back(e.path().string());
             std::sort(found.begin(), found.end());
             maps.insert(maps.end(), found.begin(), found.end());
         } else {
