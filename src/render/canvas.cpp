@@ -239,9 +239,6 @@ void Canvas::blit(SDL_Surface* picture, int x, int y, uint8_t alpha) {
 
 namespace {
 
-// a·b/255, rounded to the nearest.
-uint32_t times(uint32_t a, uint32_t b) { return (a * b + 127) / 255; }
-
 // Where a picture pixel edge falls exactly on a canvas pixel centre (a
 // scale of 3/4 puts every fourth there), the source image's pixel before it
 // is taken, as Qt's fixed-point sampling does: Tiled's pictures match ours
@@ -298,17 +295,14 @@ AxisMap qt_axis(double a0, double len, int n, bool reversed, int canvas) {
     return m;
 }
 
-}  // namespace
-
-void Canvas::blend_sample(uint32_t* row, int x, uint32_t s, bool opaque, uint8_t alpha, Rgba tint) {
-    uint32_t a = opaque ? 255 : s >> 24;
-    a = times(times(a, tint.a), alpha);
-    if (a == 0) return;
-    const uint32_t r = times(s >> 16 & 0xff, tint.r), g = times(s >> 8 & 0xff, tint.g), bl = times(s & 0xff, tint.b);
-    const uint32_t d = row[x];
-    const auto over = [&](uint32_t src, uint32_t dst) { return (src * a + dst * (255 - a) + 127) / 255; };
-    row[x] = 0xff000000u | over(r, d >> 16 & 0xff) << 16 | over(g, d >> 8 & 0xff) << 8 | over(bl, d & 0xff);
+// Picture pixel `s` (ARGB; its alpha ignored when the picture is opaque)
+// tinted (each channel × tint / 255) and faded by `alpha`.
+Rgba tinted(uint32_t s, bool opaque, uint8_t alpha, Rgba tint) {
+    return {mul255(s >> 16 & 0xff, tint.r), mul255(s >> 8 & 0xff, tint.g), mul255(s & 0xff, tint.b),
+            mul255(mul255(opaque ? 255 : s >> 24, tint.a), alpha)};
 }
+
+}  // namespace
 
 void Canvas::draw_picture(SDL_Surface* pic, const PictureBox& b, uint8_t alpha, Rgba tint) {
     if (!pic || pic->w <= 0 || pic->h <= 0 || !(b.w > 0) || !(b.h > 0) || alpha == 0) return;
@@ -327,10 +321,9 @@ void Canvas::draw_picture(SDL_Surface* pic, const PictureBox& b, uint8_t alpha, 
         for (int64_t y = ys.first; y < ys.last; ++y) {
             const int v = ys.source[size_t(y - ys.first)];
             if (v < 0) continue;
-            auto* row = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(surface_->pixels) + y * surface_->pitch);
             for (int64_t x = xs.first; x < xs.last; ++x)
                 if (const int u = xs.source[size_t(x - xs.first)]; u >= 0)
-                    blend_sample(row, int(x), sample(u, v), opaque, alpha, tint);
+                    if (const Rgba c = tinted(sample(u, v), opaque, alpha, tint); c.a) blend(int(x), int(y), c);
         }
         return;
     }
@@ -340,14 +333,13 @@ void Canvas::draw_picture(SDL_Surface* pic, const PictureBox& b, uint8_t alpha, 
     const double to_u = pic->w / b.w, to_v = pic->h / b.h;
     const double tie_x = b.reversed_x ? kTie : -kTie, tie_y = b.reversed_y ? kTie : -kTie;
     for (int y = span.y0; y < span.y1; ++y) {
-        auto* row = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(surface_->pixels) + y * surface_->pitch);
         for (int x = span.x0; x < span.x1; ++x) {
             // The pixel's centre, turned back about the pivot into the box.
             const double px = x + 0.5 - b.pivot_x, py = y + 0.5 - b.pivot_y;
             const double bx = b.pivot_x + px * cos_t + py * sin_t, by = b.pivot_y - px * sin_t + py * cos_t;
             const double u = std::floor((bx - left) * to_u + tie_x), v = std::floor((by - top) * to_v + tie_y);
             if (!(u >= 0 && u < pic->w && v >= 0 && v < pic->h)) continue;
-            blend_sample(row, x, sample(int(u), int(v)), opaque, alpha, tint);
+            if (const Rgba c = tinted(sample(int(u), int(v)), opaque, alpha, tint); c.a) blend(x, y, c);
         }
     }
 }

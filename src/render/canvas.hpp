@@ -61,8 +61,6 @@ public:
 
 private:
     void blend(int x, int y, Rgba c);  // no clipping: callers clip
-    // One picture pixel `s` over row[x], tinted and faded (draw_picture).
-    static void blend_sample(uint32_t* row, int x, uint32_t s, bool opaque, uint8_t alpha, Rgba tint);
     SDL_Surface* surface_ = nullptr;
 };
 

@@ -9,4 +9,8 @@ struct Rgba {
     friend bool operator==(const Rgba&, const Rgba&) = default;
 };
 
+// a · b / 255, rounded to the nearest: a channel scaled by another (a tint,
+// an alpha).
+constexpr uint8_t mul255(unsigned a, unsigned b) { return static_cast<uint8_t>((a * b + 127) / 255); }
+
 }  // namespace ds::render

@@ -13,7 +13,7 @@ namespace ds::render {
 
 namespace {
 
-int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+using cell_math::floor_div;  // every divisor here is a positive size
 
 uint8_t opacity_alpha(double opacity) {
     return static_cast<uint8_t>(std::lround(std::clamp(opacity, 0.0, 1.0) * 255));
@@ -28,8 +28,6 @@ int64_t floor_px(double v) {
     if (!(v == v)) return 0;
     return int64_t(std::floor(std::clamp(v, -kExact, kExact)));
 }
-
-uint8_t times(uint8_t a, uint8_t b) { return uint8_t((unsigned(a) * b + 127) / 255); }
 
 bool untinted(Rgba t) { return t.r == 255 && t.g == 255 && t.b == 255 && t.a == 255; }
 
@@ -148,11 +146,7 @@ size_t draw_object_layer(Canvas& c, TileArt& art, const Tilemap& map, const Obje
                         double(p.cam.y) + c.height(), ranks);
     } else {
         static thread_local std::vector<uint32_t> all;
-        all.resize(layer.objects.size());
-        std::iota(all.begin(), all.end(), 0u);
-        if (layer.top_down)
-            std::stable_sort(all.begin(), all.end(),
-                             [&](uint32_t a, uint32_t b) { return layer.objects[a].y < layer.objects[b].y; });
+        all = object_draw_order(layer);
         order = &all;
         ranks.resize(all.size());
         std::iota(ranks.begin(), ranks.end(), 0u);
@@ -215,8 +209,8 @@ void flatten(const std::vector<LayerInfo>& tree, const DrawnLayer& parent, std::
         d.offset_x = parent.offset_x + info.offset_x, d.offset_y = parent.offset_y + info.offset_y;
         d.parallax_x = parent.parallax_x * info.parallax_x, d.parallax_y = parent.parallax_y * info.parallax_y;
         if (info.tint)
-            d.tint = {times(d.tint.r, info.tint->r), times(d.tint.g, info.tint->g), times(d.tint.b, info.tint->b),
-                      times(d.tint.a, info.tint->a)};
+            d.tint = {mul255(d.tint.r, info.tint->r), mul255(d.tint.g, info.tint->g), mul255(d.tint.b, info.tint->b),
+                      mul255(d.tint.a, info.tint->a)};
         if (info.kind == LayerKind::Group) flatten(info.children, d, out);
         else out.push_back(d);
     }

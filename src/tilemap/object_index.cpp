@@ -49,14 +49,19 @@ bool finite(const Bounds& b) { return std::isfinite(b.x0) && std::isfinite(b.y0)
 
 }  // namespace
 
+std::vector<uint32_t> object_draw_order(const ObjectLayer& layer) {
+    std::vector<uint32_t> order(layer.objects.size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (layer.top_down)
+        std::stable_sort(order.begin(), order.end(),
+                         [&](uint32_t a, uint32_t b) { return layer.objects[a].y < layer.objects[b].y; });
+    return order;
+}
+
 ObjectIndex index_objects(const Tilemap& map, const ObjectLayer& layer) {
     ObjectIndex ix;
     ix.built = true;
-    ix.order.resize(layer.objects.size());
-    std::iota(ix.order.begin(), ix.order.end(), 0u);
-    if (layer.top_down)
-        std::stable_sort(ix.order.begin(), ix.order.end(),
-                         [&](uint32_t a, uint32_t b) { return layer.objects[a].y < layer.objects[b].y; });
+    ix.order = object_draw_order(layer);
     std::vector<Bounds> bounds(ix.order.size());
     Bounds all{1e300, 1e300, -1e300, -1e300};
     for (size_t rank = 0; rank < ix.order.size(); ++rank) {

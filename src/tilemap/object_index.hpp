@@ -24,6 +24,10 @@ struct ObjectIndex {
     bool built = false;
 };
 
+// The layer's objects in the order they are drawn: its file's, or by y
+// (stable) for draworder="topdown"; as indexes into layer.objects.
+std::vector<uint32_t> object_draw_order(const ObjectLayer& layer);
+
 // The index of `layer` of `map`: its tile objects (hidden ones too: an
 // object's visible can change, the index need not), in its draw order
 // (file order, or by y for topdown).

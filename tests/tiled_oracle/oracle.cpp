@@ -181,6 +181,15 @@ void without_parallax(std::vector<LayerInfo>& tree) {
 }
 
 // One map: 0 when the pictures match, 1 when not, 2 when it could not be compared.
+// Tiled's pixel (tx, ty) laid over the background `bg` (clear beyond its
+// picture): its picture is clear where nothing is drawn.
+Rgba tiled_at(SDL_Surface* tiled, int tx, int ty, Rgba bg) {
+    const uint32_t p = tx < tiled->w && ty < tiled->h ? at(tiled, tx, ty) : 0;
+    const unsigned a = p >> 24;
+    const auto over = [&](unsigned src, unsigned dst) { return uint8_t((src * a + dst * (255 - a) + 127) / 255); };
+    return {over(p >> 16 & 0xff, bg.r), over(p >> 8 & 0xff, bg.g), over(p & 0xff, bg.b), 255};
+}
+
 // The engine's picture (left) and Tiled's laid over the same background
 // (right), side by side and scaled up, for render.org.
 void write_doc_picture(const std::string& file, const Canvas& ours, SDL_Surface* tiled, int left, int top, Rgba bg) {
@@ -189,11 +198,7 @@ void write_doc_picture(const std::string& file, const Canvas& ours, SDL_Surface*
     doc.clear({255, 255, 255, 255});
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const int tx = x + left, ty = y + top;
-            const uint32_t p = tx < tiled->w && ty < tiled->h ? at(tiled, tx, ty) : 0;
-            const unsigned a = p >> 24;
-            const auto over = [&](unsigned src, unsigned dst) { return uint8_t((src * a + dst * (255 - a) + 127) / 255); };
-            const Rgba theirs{over(p >> 16 & 0xff, bg.r), over(p >> 8 & 0xff, bg.g), over(p & 0xff, bg.b), 255};
+            const Rgba theirs = tiled_at(tiled, x + left, y + top, bg);
             doc.fill_rect(x * kDocScale, y * kDocScale, kDocScale, kDocScale, ours.pixel(x, y));
             doc.fill_rect((w + kDocGap + x) * kDocScale, y * kDocScale, kDocScale, kDocScale, theirs);
         }
@@ -261,11 +266,9 @@ int compare(const std::string& path, const std::string& keep, const std::string&
         return 2;
     }
     canvas.save_png(ours_png);
-    if (!doc_dir.empty()) {
-        const Rgba doc_bg = map.background ? Rgba{map.background->r, map.background->g, map.background->b, 255} : kBackground;
-        write_doc_picture((fs::path(doc_dir) / ("render-" + base + ".png")).string(), canvas, tiled, left, top, doc_bg);
-    }
     const Rgba bg = map.background ? Rgba{map.background->r, map.background->g, map.background->b, 255} : kBackground;
+    if (!doc_dir.empty())
+        write_doc_picture((fs::path(doc_dir) / ("render-" + base + ".png")).string(), canvas, tiled, left, top, bg);
     std::vector<uint8_t> mask = edge_mask(map, w, h);
     mask_shapes(map, shapes, w, h, mask);
     // The differences, for a person to look at: the engine's picture dimmed,
@@ -283,13 +286,8 @@ int compare(const std::string& path, const std::string& keep, const std::string&
                 ++skipped;
                 continue;
             }
-            const int tx = x + left, ty = y + top;
-            const uint32_t p = tx < tiled->w && ty < tiled->h ? at(tiled, tx, ty) : 0;
-            const unsigned a = p >> 24;
-            const auto over = [&](unsigned src, unsigned dst) { return int((src * a + dst * (255 - a) + 127) / 255); };
-            const Rgba theirs{uint8_t(over(p >> 16 & 0xff, bg.r)), uint8_t(over(p >> 8 & 0xff, bg.g)),
-                              uint8_t(over(p & 0xff, bg.b)), 255};
-            const Rgba ours = canvas.pixel(x, y);
+            const Rgba theirs = tiled_at(tiled, x + left, y + top, bg);
+            const Rgba& ours = mine;
             if (std::abs(ours.r - theirs.r) > kTolerance || std::abs(ours.g - theirs.g) > kTolerance ||
                 std::abs(ours.b - theirs.b) > kTolerance) {
                 if (differ++ == 0) fx = x, fy = y, first_ours = ours, first_theirs = theirs;
