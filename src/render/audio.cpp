@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <span>
 #include <system_error>
 #include <vector>
 
@@ -67,21 +68,28 @@ std::string not_a_sound_file(const std::string& path) {
 
 // What SDL_mixer would allocate for the sound at `path`, from its header
 // (read before anything is decoded); "" when it is within
-// kMaxSoundDecodedBytes, else why not.
-std::string too_big_or_lying(const std::string& path) {
+// kMaxSoundDecodedBytes, else why not. `head` keeps the first bytes read:
+// the whole file when it is at most kSoundHeaderBytes long.
+std::string too_big_or_lying(const std::string& path, std::vector<uint8_t>& head, uint64_t& size) {
     std::ifstream in(path, std::ios::binary);
     std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(path, ec);
+    size = std::filesystem::file_size(path, ec);
     if (!in || ec) return "cannot be read";
-    std::vector<uint8_t> head(std::min<uint64_t>(size, kSoundHeaderBytes));
+    head.resize(std::min<uint64_t>(size, kSoundHeaderBytes));
     in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
-    std::vector<uint8_t> tail(std::min<uint64_t>(size, kSoundTailBytes));
-    in.seekg(std::streamoff(size - tail.size()));
-    in.read(reinterpret_cast<char*>(tail.data()), std::streamsize(tail.size()));
+    // The last bytes: already read when the head is the whole file.
+    std::vector<uint8_t> tail;
+    if (head.size() < size) {
+        tail.resize(std::min<uint64_t>(size, kSoundTailBytes));
+        in.seekg(std::streamoff(size - tail.size()));
+        in.read(reinterpret_cast<char*>(tail.data()), std::streamsize(tail.size()));
+    }
     if (!in) return "reading it failed";
+    const std::span<const uint8_t> last = head.size() < size ? std::span<const uint8_t>(tail)
+                                                             : std::span<const uint8_t>(head).last(std::min(head.size(), kSoundTailBytes));
     SoundHeader h;
     std::string why;
-    if (!read_sound_header(head, tail, size, h, why)) return why;
+    if (!read_sound_header(head, last, size, h, why)) return why;
     // Resampled to kFrequency, kOutputChannels of 16 bits: the decoded size.
     const double decoded = double(h.frames) * kFrequency / double(h.rate) * kOutputChannels * 2;
     if (decoded > double(kMaxSoundDecodedBytes))
@@ -119,9 +127,13 @@ SoundBank::~SoundBank() {
 void SoundBank::load(const std::string& name, const std::string& path) {
     if (const std::string why = not_a_sound_file(path); !why.empty())
         throw RenderError("sound " + path + ": " + why);
-    if (const std::string why = too_big_or_lying(path); !why.empty())
+    std::vector<uint8_t> head;
+    uint64_t size = 0;
+    if (const std::string why = too_big_or_lying(path, head, size); !why.empty())
         throw RenderError("sound " + path + ": " + why);
-    ChunkPtr chunk(Mix_LoadWAV(path.c_str()));
+    // The file is read once when the header read took all of it.
+    ChunkPtr chunk(head.size() == size ? Mix_LoadWAV_RW(SDL_RWFromConstMem(head.data(), int(head.size())), 1)
+                                       : Mix_LoadWAV(path.c_str()));
     if (!chunk) throw RenderError("sound " + path + ": " + Mix_GetError());
     if (int64_t(chunk->alen) > kMaxSoundDecodedBytes)  // a decoder that outgrew the header's claim
         throw RenderError("sound " + path + ": it decoded to " + std::to_string(chunk->alen >> 20) +

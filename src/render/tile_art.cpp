@@ -70,14 +70,16 @@ void clear_key(SDL_Surface* img, const MapColor& c) {
 // The file's header, read before anything is decoded, within the bounds:
 // a RenderError naming the file otherwise (not a file, unreadable, not an
 // image, cut short, or larger than kMaxImageSidePx / kMaxImageDecodedBytes).
-ImageHeader checked_header(const std::string& path, const char* what) {
+// `head` keeps the bytes read: the whole file when it is shorter than
+// kImageHeaderBytes, as most tilesets are.
+ImageHeader checked_header(const std::string& path, const char* what, std::vector<uint8_t>& head) {
     const std::string named = std::string(what) + " '" + path + "'";
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
     if (ec || !std::filesystem::exists(status)) throw RenderError("cannot read " + named + ": no such file");
     if (!std::filesystem::is_regular_file(status)) throw RenderError("cannot read " + named + ": not a regular file");
     std::ifstream in(path, std::ios::binary);
-    std::vector<uint8_t> head(kImageHeaderBytes);
+    head.resize(kImageHeaderBytes);
     in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
     if (in.bad()) throw RenderError("cannot read " + named + ": reading it failed");
     head.resize(size_t(in.gcount()));
@@ -123,8 +125,12 @@ TileArt::~TileArt() {
 SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColor>& trans, const char* what) {
     const std::string key = trans ? path + '\x1f' + key_text(*trans) : path;
     if (auto it = images_.find(key); it != images_.end()) return it->second;
-    const ImageHeader header = checked_header(path, what);
-    SDL_Surface* raw = IMG_Load(path.c_str());
+    std::vector<uint8_t> head;
+    const ImageHeader header = checked_header(path, what, head);
+    // The file is read once when the header read took all of it.
+    SDL_Surface* raw = head.size() < kImageHeaderBytes
+                           ? IMG_Load_RW(SDL_RWFromConstMem(head.data(), int(head.size())), 1)
+                           : IMG_Load(path.c_str());
     if (!raw) throw RenderError(std::string("cannot read ") + what + " '" + path + "': " + IMG_GetError());
     if (raw->w != header.width || raw->h != header.height) {  // a decoder that disagrees with the header
         const std::string got = std::to_string(raw->w) + "x" + std::to_string(raw->h);
