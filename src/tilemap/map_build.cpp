@@ -234,6 +234,9 @@ std::vector<uint32_t> start_chunked_layer(const ChunkSpan& span, TileLayer& l) {
 
 void paste_chunk(const ChunkSpan& span, const ChunkHead& head, const std::vector<uint32_t>& cells,
                  const TileLayer& l, std::vector<uint32_t>& block) {
+    // An empty chunk adds nothing to the span: it may lie anywhere, even
+    // where an offset into the block would not (the fuzzer's x="2000000000").
+    if (head.w <= 0 || head.h <= 0) return;
     for (int r = 0; r < head.h; ++r)
         std::copy_n(cells.begin() + static_cast<ptrdiff_t>(r) * head.w, head.w,
                     block.begin() + (head.y - span.r0 + r) * l.width + (head.x - span.c0));
