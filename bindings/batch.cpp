@@ -71,7 +71,9 @@ void name_failed_entity(Failure& f, size_t index, SCM entity) {
 
 }  // namespace
 
-bool decode_batch(SCM entities, Batch& batch, Failure& f) {
+bool decode_batch(SCM entities, Batch& batch, Failure& f, CategoryTable* table) {
+    CategoryTable own;
+    CategoryTable& categories = table ? *table : own;
     batch.has_tween.clear();
     batch.writes.clear();
     batch.hit.clear();
@@ -91,14 +93,20 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f) {
         const bool hit = scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.cache, i), e);
         if (!hit) {
             Decoded d;
-            if (!decode_entity(e, d, f)) {
+            if (!decode_entity(e, d, f) || !categories.assign(d.category, d.collides_with, d.body, f)) {
                 name_failed_entity(f, i, e);
                 return false;
             }
-            c = {d.places, watched_fields(d), scm_is_true(d.tween), d.body.contacts};
+            c = {d.places, watched_fields(d), scm_is_true(d.tween), d.body.reports_pairs(), d.categorized()};
             batch.known[i] = d.body;
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
             batch.settling.forget(i);  // the mark was another entity's
+        } else if (c.categorized &&
+                   !categories.assign(plist_get(e, keys->key[kCategory], SCM_UNDEFINED),
+                                      plist_get(e, keys->key[kCollidesWith], SCM_UNDEFINED), batch.known[i], f)) {
+            // Bits are this call's: a cached body is given them again.
+            name_failed_entity(f, i, e);
+            return false;
         }
         batch.hit.push_back(hit);
         batch.contact_bodies += c.contacts;

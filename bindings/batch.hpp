@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "categories.hpp"
 #include "contact_report.hpp"
 #include "failure.hpp"
 #include "frame.hpp"
@@ -24,7 +25,8 @@ struct CachedEntity {
     FieldPlaces places;
     uint16_t watched = 0;
     bool has_tween = false;
-    bool contacts = false;  // known[i].contacts, kept here so a cache hit need not read its body
+    bool contacts = false;  // known[i].reports_pairs(), kept here so a cache hit need not read its body
+    bool categorized = false;  // has #:category or #:collides-with: bits are set per call
 };
 
 struct Batch {
@@ -53,7 +55,7 @@ struct Batch {
     // The contact report (semantics §10): which keys this call writes on
     // contact entities (ReportKeys; decode_batch resets it) and the pairs.
     uint8_t reports = 0;
-    size_t contact_bodies = 0;  // decoded with #:contacts? (decode_batch counts them)
+    size_t contact_bodies = 0;  // decoded with #:contacts? or #:sensor? (decode_batch counts them)
     ContactIndex contacts;
     // The list the last whole frame returned (slot 0 of a protected vector,
     // so it cannot be recycled into a look-alike at the same address), and
@@ -71,7 +73,9 @@ struct Batch {
 
 // Decodes a proper list of entity plists. No SCM is kept: the list itself
 // (the caller's argument) is walked again to encode.
-bool decode_batch(SCM entities, Batch& batch, Failure& f);
+// Categories (semantics §13) become bits through `table`, which a call that
+// decodes several lists shares among them; without one, a table of its own.
+bool decode_batch(SCM entities, Batch& batch, Failure& f, CategoryTable* table = nullptr);
 
 // The entity list after the steps: entities whose bodies did not change are
 // the same objects, the spine after the last changed entity is shared, and

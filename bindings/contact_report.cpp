@@ -9,7 +9,9 @@ namespace ds::guile {
 
 void ContactIndex::gather(std::span<const IndexPair> log, std::span<const Body> bodies) {
     clear();
-    auto reported = [&](const IndexPair& p) { return bodies[p.first].contacts || bodies[p.second].contacts; };
+    auto reported = [&](const IndexPair& p) {
+        return bodies[p.first].reports_pairs() || bodies[p.second].reports_pairs();
+    };
     seen.clear();
     std::copy_if(log.begin(), log.end(), std::back_inserter(seen), reported);
     std::sort(seen.begin(), seen.end());

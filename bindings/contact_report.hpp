@@ -27,7 +27,7 @@ enum ReportKeys : uint8_t {
 // What a frame's (or a bulk push-apart's) pair log says, by index.
 struct ContactIndex {
     std::vector<IndexPair> touching;  // (contact body, other), sorted, each once
-    std::vector<IndexPair> pairs;     // (earlier, later) with a contact body, each once, in order resolved
+    std::vector<IndexPair> pairs;     // (earlier, later) with a contact body or a sensor, each once, in order resolved
     std::vector<IndexPair> seen;      // scratch: the pairs sorted, each once
     std::vector<uint8_t> used;        // scratch: by seen, taken already
 

@@ -31,13 +31,17 @@ struct NoStanding {
 
 // Decodes one entity, runs step on its body, encodes what changed; a
 // contact entity's #:standing-on is named by `standing` (semantics §10).
+// With `categories`, the entity's categories become bits in that table
+// (a scene's it is compared with).
 template <typename Step, typename Standing = NoStanding>
-SCM step_entity(const char* proc, SCM entity, Step step, Standing standing = {}) {
+SCM step_entity(const char* proc, SCM entity, Step step, Standing standing = {},
+                CategoryTable* categories = nullptr) {
     Failure f{proc};
     SCM result = entity;
     {
         Decoded d;
-        if (decode_entity(entity, d, f)) {
+        if (decode_entity(entity, d, f) &&
+            (!categories || categories->assign(d.category, d.collides_with, d.body, f))) {
             const Body before = d.body;
             guarded(f, nullptr, [&] { step(d.body); });
             Edit edits[kFieldCount + 2];
@@ -84,7 +88,8 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
     guarded(f, nullptr, [&] {
         const TileGrid* grid = nullptr;
         Batch& scene = lease_batch();
-        if (grid_from_scm(tilemap, grid, f) && decode_batch(entities, scene, f)) {
+        CategoryTable categories;
+        if (grid_from_scm(tilemap, grid, f) && decode_batch(entities, scene, f, &categories)) {
             size_t index = 0;
             for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++index)
                 if (scm_is_eq(SCM_CAR(p), e)) scene.bodies[index].solid = false;
@@ -98,7 +103,7 @@ SCM detect_on_solid_1(SCM e, SCM tilemap, SCM entities) {
                 const auto k = static_cast<size_t>(b.standing_on - 1);
                 return entity_name(scm_list_ref(entities, scm_from_size_t(k)), k);
             };
-            result = step_entity("detect-on-solid", e, detect, standing);
+            result = step_entity("detect-on-solid", e, detect, standing, &categories);
         }
     });
     scm_dynwind_end();
@@ -176,8 +181,9 @@ SCM carry_riders_n(SCM entities, SCM tilemap, SCM start, SCM mode) {
         CollisionMode m{};
         Batch& now = lease_batch();
         Batch& then = lease_batch();
+        CategoryTable categories;
         if (!grid_from_scm(tilemap, grid, f) || !mode_from_scm(mode, m, f) ||
-            !decode_batch(entities, now, f) || !decode_batch(start, then, f))
+            !decode_batch(entities, now, f, &categories) || !decode_batch(start, then, f, &categories))
             return;
         if (then.size() != now.size()) {
             fail(f, "wrong-type-arg", scm_list_2(scm_from_size_t(now.size()), scm_from_size_t(then.size())),

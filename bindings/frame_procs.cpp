@@ -99,10 +99,11 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
         LastFrame stats;
         const GcReading gc0 = gc_reading();
         PhaseTimer timer;
+        CategoryTable categories;  // one for both decodings: the same name, the same bit
         // The tween stage calls Scheme (custom easings, on-complete): an error
         // or escape there longjmps over this frame, these locals included.
         static_assert(survives_longjmp<decltype(opts), decltype(grid), decltype(batch), decltype(stats),
-                                       decltype(gc0), decltype(timer)>);
+                                       decltype(gc0), decltype(timer), decltype(categories)>);
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) &&
             frame_is_noop(batch, entities, grid, opts)) {
@@ -112,7 +113,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             for (StepStats& s : stats.core.step) s.skipped = batch.last_count;
             stats.collect = gc_reading() - gc0;
             last_frame = stats;
-        } else if (!f && decode_batch(entities, batch, f)) {
+        } else if (!f && decode_batch(entities, batch, f, &categories)) {
             stats.decode.ms = timer.lap();
             SCM list = step_list_tweens(entities, batch, opts.dt, f);
             const bool tweened = !scm_is_eq(list, entities);
@@ -121,7 +122,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
             stats.core.step[kStepTweens] = {tweens, batch.size() - tweens, timer.lap()};
             // The scene before the tweens, which ground detection reads.
             if (tweened) batch.frame_start.assign(batch.before().begin(), batch.before().end());
-            if (!f && (!tweened || decode_batch(list, batch, f))) {
+            if (!f && (!tweened || decode_batch(list, batch, f, &categories))) {
                 stats.decode.ms += timer.lap();
                 plan_sleep(batch, grid, opts);
                 batch.frame.note_pairs(pushed_pairs());

@@ -37,8 +37,10 @@ bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
     return false;
 }
 
-bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
-    mask = 0;
+// Walks a proper, finite list of symbols, calling each(symbol); fails
+// naming the key and the list otherwise.
+template <class Each>
+bool walk_symbols(SCM key, SCM list, Failure& f, Each&& each) {
     SCM p = list;
     size_t walked = 0;
     for (; scm_is_pair(p); p = SCM_CDR(p)) {
@@ -51,14 +53,21 @@ bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
             fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
             return false;
         }
-        for (int bit = 0; bit < kSkipCount; ++bit)
-            if (scm_is_eq(sym, keys->skip_symbol[bit])) mask |= static_cast<uint16_t>(1u << bit);
+        each(sym);
     }
     if (!scm_is_null(p)) {
         fail(f, "wrong-type-arg", scm_list_2(key, list), "entity key ~S: expected a list of symbols, got ~S");
         return false;
     }
     return true;
+}
+
+bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
+    mask = 0;
+    return walk_symbols(key, list, f, [&](SCM sym) {
+        for (int bit = 0; bit < kSkipCount; ++bit)
+            if (scm_is_eq(sym, keys->skip_symbol[bit])) mask |= static_cast<uint16_t>(1u << bit);
+    });
 }
 
 // The rules of src/body_fields.def: how a value is read (decode) and
@@ -70,6 +79,9 @@ struct Tag {};
 struct Id {};
 struct Sides {};
 struct Report {};
+struct Unit {};
+struct Category {};
+struct CategoryList {};
 
 // A bignum the decoded double holds exactly, such as 2^64, is not lossy: it
 // is written back as itself (num_to_scm), so a frame that writes it and
@@ -98,6 +110,27 @@ bool decode(Flag, SCM, SCM v, bool& out, uint32_t field, Decoded& d, Failure&) {
 }
 bool decode(Skips, SCM key, SCM v, uint16_t& out, uint32_t, Decoded&, Failure& f) {
     return decode_skips(key, v, out, f);
+}
+// #:bounce (semantics §13): a finite real from 0 to 1.
+bool decode(Unit, SCM key, SCM v, Num& out, uint32_t, Decoded&, Failure& f) {
+    if (!decode_number(key, v, out, f)) return false;
+    if (out.v >= 0 && out.v <= 1) return true;
+    fail(f, "out-of-range", scm_list_2(key, v), "entity key ~S: expected a number from 0 to 1, got ~S");
+    return false;
+}
+// Categories are checked here and turned into bits by a CategoryTable.
+bool decode(Category, SCM key, SCM v, CategoryBit&, uint32_t, Decoded& d, Failure& f) {
+    if (!scm_is_symbol(v)) {
+        fail(f, "wrong-type-arg", scm_list_2(key, v), "entity key ~S: expected a category symbol, got ~S");
+        return false;
+    }
+    d.category = v;
+    return true;
+}
+bool decode(CategoryList, SCM key, SCM v, CategoryMask&, uint32_t, Decoded& d, Failure& f) {
+    if (!walk_symbols(key, v, f, [](SCM) {})) return false;
+    d.collides_with = v;
+    return true;
 }
 // The pairs and vector slots an #:id or #:group-id may hold. identity_tag
 // compares ids with equal?, which never ends on two circular lists and

@@ -31,6 +31,11 @@ struct Decoded {
     uint16_t lossy = 0;    // Field bits whose value is not a fixnum or flonum (1/3, 2^70)
     SCM tween = SCM_BOOL_F;
     SCM id = SCM_BOOL_F;   // the raw #:id, for equal? comparisons
+    // The raw #:category and #:collides-with (checked), SCM_UNDEFINED when
+    // absent: a CategoryTable turns them into the body's bits.
+    SCM category = SCM_UNDEFINED;
+    SCM collides_with = SCM_UNDEFINED;
+    bool categorized() const { return !SCM_UNBNDP(category) || !SCM_UNBNDP(collides_with); }
     bool has(PhysKey k) const { return (present >> k) & 1u; }
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "convert.hpp"
+#include "keys.hpp"
 #include "list_walk.hpp"
 #include "plist.hpp"
 #include "query.hpp"
@@ -131,6 +132,53 @@ SCM select(SCM entities, SCM key, SCM value) {
         if (!f) return pick(entities, found);
     }
     raise(f);
+}
+
+// ---- the category filter (semantics §13): the query as a body of category
+// `category` that collides with the categories `collides-with` names; an
+// entity is kept when the two would meet, as far as each is given.
+
+bool symbol_list(SCM list) {
+    if (scm_ilength(list) < 0) return false;  // circular or dotted
+    for (; scm_is_pair(list); list = SCM_CDR(list))
+        if (!scm_is_symbol(SCM_CAR(list))) return false;
+    return true;
+}
+
+bool member_q(SCM x, SCM list) { return scm_is_true(scm_memq(x, list)); }
+
+// Whether an entity with these (decoded, checked) keys passes the filter.
+bool passes(const Decoded& d, SCM category, SCM collides_with) {
+    const SCM own = SCM_UNBNDP(d.category) ? keys->default_category : d.category;
+    if (scm_is_true(category) && !SCM_UNBNDP(d.collides_with) && !member_q(category, d.collides_with)) return false;
+    return scm_is_false(collides_with) || member_q(own, collides_with);
+}
+
+SCM category_filter(SCM who, SCM entities, SCM category, SCM collides_with) {
+    // The query the filter serves names the errors.
+    static constexpr const char* kQueries[] = {"scene-query-rect", "scene-query-point", "scene-pairs",
+                                               "scene-raycast"};
+    Failure f{"scene-query"};
+    for (const char* q : kQueries)
+        if (scm_is_eq(who, scm_from_utf8_symbol(q))) f.proc = q;
+    SCM result = entities;
+    if (scm_is_true(category) && !scm_is_symbol(category)) {
+        fail_arg(f, Arg("category"), category, "a category symbol or #f");
+    } else if (scm_is_true(collides_with) && !symbol_list(collides_with)) {
+        fail_arg(f, Arg("collides-with"), collides_with, "a list of category symbols or #f");
+    } else if (proper_list(entities, "entities", f) && (scm_is_true(category) || scm_is_true(collides_with))) {
+        std::vector<uint32_t>& found = scratch().found;
+        found.clear();
+        uint32_t k = 0;
+        for (SCM l = entities; scm_is_pair(l); l = SCM_CDR(l), ++k) {
+            Decoded d;
+            if (!decode_entity(SCM_CAR(l), d, f)) break;
+            if (passes(d, category, collides_with)) found.push_back(k);
+        }
+        if (!f && found.size() != k) result = pick(entities, found);
+    }
+    if (f) raise(f);
+    return result;
 }
 
 // position in `within` of each element of `of` (eq?), or -1; all -1 when the
@@ -327,6 +375,8 @@ void register_query_procedures() {
     define_procedure<5, 0, 0, query_rect>("%query-rect", WrapperDoc{"(entities x y w h)", "scene-query-rect", query});
     define_procedure<3, 0, 0, query_point>("%query-point", WrapperDoc{"(entities x y)", "scene-query-point", query});
     define_procedure<3, 0, 0, select>("%select", WrapperDoc{"(entities key value)", "scene-select", query});
+    define_procedure<4, 0, 0, category_filter>("%category-filter",
+        WrapperDoc{"(who entities category collides-with)", "scene-query-rect", query});
     define_procedure<2, 0, 0, pairs>("%pairs", WrapperDoc{"(as bs)", "scene-pairs", query});
     define_procedure<5, 0, 0, pairs_by_key>("%pairs-by-key",
         WrapperDoc{"(entities key-a value-a key-b value-b)", "scene-pairs", query});

@@ -65,6 +65,18 @@ constexpr uint8_t kReportUnwritten = 1;
 constexpr int32_t kStandingAbsent = -1;
 constexpr int32_t kStandingUnknown = -2;
 
+// Categories (semantics §13) as bits of the table a caller builds for one
+// frame: bit 0 is 'default, the category of a body that names none. A body
+// that names no #:collides-with collides with every category.
+struct CategoryBit {
+    uint64_t bits = 1;
+    bool operator==(const CategoryBit&) const = default;
+};
+struct CategoryMask {
+    uint64_t bits = ~uint64_t{0};
+    bool operator==(const CategoryMask&) const = default;
+};
+
 struct Body {
     // One member per row of body_fields.def, in its order: x y w h (Num: the
     // box is [x, x+w) × [y, y+h)), vx vy ay, local_x local_y, the flags
@@ -75,11 +87,25 @@ struct Body {
 #include "body_fields.def"
 
     bool skips(uint16_t bit) const { return (skip & bit) != 0; }
-    // Solid and not a ghost: takes part in push-apart and can hold others up.
-    bool collides() const { return solid && !skips(kSkipEntityCollisions); }
+    // Solid, not a sensor and not a ghost: takes part in push-apart and can
+    // hold others up.
+    bool collides() const { return solid && !sensor && !skips(kSkipEntityCollisions); }
+    // A sensor that is not a ghost: reports the bodies it overlaps (§13).
+    bool senses() const { return sensor && !skips(kSkipEntityCollisions); }
+    // Its pairs are kept in the scene's contacts (§10, §13).
+    bool reports_pairs() const { return contacts || sensor; }
     // What detect-on-solid looks at: it applies to this body.
     bool detects_ground() const { return gravity && !skips(kSkipOnSolid); }
 };
+
+// Whether two bodies' categories let them meet (semantics §13): each one's
+// #:collides-with names the other's category (Box2D's rule, as bits).
+inline bool categories_meet(uint64_t a_category, uint64_t a_mask, uint64_t b_category, uint64_t b_mask) {
+    return (a_mask & b_category) != 0 && (b_mask & a_category) != 0;
+}
+inline bool categories_meet(const Body& a, const Body& b) {
+    return categories_meet(a.category.bits, a.collides_with.bits, b.category.bits, b.collides_with.bits);
+}
 
 // Whether two values of one field are the same (the comparison
 // changed_fields makes, per member type): Num by value and exactness.

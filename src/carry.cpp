@@ -27,6 +27,7 @@ using TileStep = bool (*)(Body&, const TileGrid*, CollisionMode, SubStep);
 bool carry_along(Body& b, Num d, AxisOf axis, TileStep resolve, const TileGrid* grid, CollisionMode mode) {
     if (d.v == 0) return false;
     Body moved = b;
+    moved.bounce = Num::integer(0);  // a stop is read from the velocity it zeroes
     BodyAxis m = axis(moved);
     m.pos = axis(b).pos + d;
     m.vel = d;
@@ -50,7 +51,7 @@ void carry_one(Body& b, Displacement d, const TileGrid* grid, CollisionMode mode
 // zeroes a rider's vy every frame, whatever the carrier's.
 bool rides(const Body& r, const Body& c) {
     return r.x.v < c.x.v + c.w.v && c.x.v < r.x.v + r.w.v &&
-           std::fabs((r.y.v + r.h.v) - c.y.v) <= kOnSolidTolerance &&
+           categories_meet(r, c) && std::fabs((r.y.v + r.h.v) - c.y.v) <= kOnSolidTolerance &&
            (!c.one_way || (r.vy.v >= 0 && !r.drop_through));
 }
 
@@ -85,7 +86,8 @@ void note_in_way(std::span<const Body> bodies, std::span<const Body> start,
     for (const size_t m : members) {
         if (!is_crushable(bodies[m])) continue;
         for (const size_t c : carriers)
-            if (!bodies[c].one_way && displacement(bodies[c], start[c]).moved() &&
+            if (!bodies[c].one_way && categories_meet(bodies[m], bodies[c]) &&
+                displacement(bodies[c], start[c]).moved() &&
                 aabb_overlap(bodies[m], bodies[c])) {
                 scratch.in_way.push_back(m);
                 break;

@@ -16,6 +16,15 @@ constexpr double kOnSolidTolerance = 4.0;  // *on-solid-tolerance*, px and px/fr
 // through a platform is 1 px or more into it after its first frame of
 // falling (gravity makes vy at least 1), and must not stand there again.
 constexpr double kOneWayFooting = 1.0;
+// A stop rebounds (#:bounce, semantics §13) only faster than this, in px/frame:
+// one frame of gravity. A body at rest on a floor hits it at exactly 1 every
+// frame (gravity, then the snap back); it must stay at rest whatever its
+// bounce, and a bouncing body whose rebounds decay comes to rest when they
+// fall below it (Box2D's restitution threshold, for the same reason).
+constexpr double kBounceRestSpeed = 1.0;
+// Categories in one frame (#:category and every #:collides-with name,
+// 'default included): a body's category and mask are one 64-bit word each.
+constexpr int kMaxCategories = 64;
 
 // ---- storage
 // Tile-layer gids and solid-grid cells live in chunks of this many cells

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "bounce.hpp"
 #include "detail/body_axis.hpp"
 #include "constants.hpp"
 #include "detail/contact_scratch.hpp"
@@ -19,36 +20,62 @@ double overlap(Num p1, Num s1, Num p2, Num s2) {
 // A movable body against an immovable one. Landing wins while the mover's
 // centre is still above the solid's, so a narrow side overlap on a platform
 // edge does not shove it sideways; otherwise the shallower axis.
+// The velocity a push off a fixed body leaves: 0 (the seed), or with bounce
+// (§13) the rebound of a velocity that ran into it (`into`: its sign
+// pointed at the fixed body); one moving away keeps 0 too.
+Num stopped_by(Num v, bool into, Num bounce) { return into ? rebound(v, bounce) : Num::integer(0); }
+
 void push_off_immovable(Body& m, const Body& s, double ox, double oy) {
+    const Num bounce = pair_bounce(m, s);
     if (2 * m.y.v + m.h.v < 2 * s.y.v + s.h.v) {
         m.y = s.y - m.h;
-        m.vy = Num::integer(0);
+        m.vy = stopped_by(m.vy, m.vy.v > 0, bounce);
     } else if (ox < oy) {
-        m.x = (2 * m.x.v + m.w.v < 2 * s.x.v + s.w.v) ? s.x - m.w : s.x + s.w;
-        m.vx = Num::integer(0);
+        const bool left = 2 * m.x.v + m.w.v < 2 * s.x.v + s.w.v;
+        m.x = left ? s.x - m.w : s.x + s.w;
+        m.vx = stopped_by(m.vx, left ? m.vx.v > 0 : m.vx.v < 0, bounce);
     } else {
         m.y = s.y + s.h;
-        m.vy = Num::integer(0);
+        m.vy = stopped_by(m.vy, m.vy.v < 0, bounce);
+    }
+}
+
+// Two movable bodies' velocities along the axis they were pushed apart on,
+// `neg` the one moved the negative way. The seed's −1 and +1; with bounce
+// (§13) and the two closing faster than kBounceRestSpeed, a collision of
+// equal masses: they keep their mean and part at `bounce` times the speed
+// they closed at (bounce 1: they swap velocities, exactly).
+void part(Num& neg, Num& pos, Num bounce) {
+    const double closing = neg.v - pos.v;
+    if (bounce.v == 0 || !(closing > kBounceRestSpeed)) {
+        neg = Num::integer(-1);
+        pos = Num::integer(1);
+    } else if (bounce.exact) {
+        std::swap(neg, pos);
+    } else {
+        const double mean = (neg.v + pos.v) / 2, half = bounce.v * closing / 2;
+        neg = Num::flonum(mean - half);
+        pos = Num::flonum(mean + half);
     }
 }
 
 // Two movable bodies share the overlap along one axis. `a` is the earlier in
 // list order: it moves negative on a tie and takes the larger integer half.
-void push_apart(BodyAxis a, BodyAxis b, double o) {
+void push_apart(BodyAxis a, BodyAxis b, double o, Num bounce) {
     const bool exact = a.pos.exact && a.size.exact && b.pos.exact && b.size.exact;
     const double a_share = exact ? std::ceil(o / 2) : o / 2;
     const double b_share = exact ? o - a_share : o / 2;
     const bool a_negative = !(b.centre2() < a.centre2());
     a.pos = a.pos + Num{a_negative ? -a_share : a_share, exact};
     b.pos = b.pos + Num{a_negative ? b_share : -b_share, exact};
-    a.vel = Num::integer(a_negative ? -1 : 1);
-    b.vel = Num::integer(a_negative ? 1 : -1);
+    if (a_negative) part(a.vel, b.vel, bounce);
+    else part(b.vel, a.vel, bounce);
 }
 
 }  // namespace
 
 bool collision_eligible(const Body& a, const Body& b) {
-    return a.collides() && b.collides() && aabb_overlap(a, b);
+    return a.collides() && b.collides() && categories_meet(a, b) && aabb_overlap(a, b);
 }
 
 namespace {
@@ -78,7 +105,7 @@ void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
         const Body& o = a.one_way ? a : b;
         if (!m.immovable && lands_from_above(m, o)) {
             m.y = o.y - m.h;
-            m.vy = Num::integer(0);
+            m.vy = rebound(m.vy, pair_bounce(a, b));
         }
         return;
     }
@@ -92,9 +119,9 @@ void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     } else if (b_rests && lands_on(a, b)) {
         push_off_immovable(a, b, ox, oy);
     } else if (ox < oy) {
-        push_apart(along_x(a), along_x(b), ox);
+        push_apart(along_x(a), along_x(b), ox, pair_bounce(a, b));
     } else {
-        push_apart(along_y(a), along_y(b), oy);
+        push_apart(along_y(a), along_y(b), oy, pair_bounce(a, b));
     }
 }
 
@@ -107,10 +134,8 @@ void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
-            if (aabb_overlap(first, second)) {
-                resolve_pair(first, second, rests(members[a]), rests(members[b]));
+            if (aabb_overlap(first, second) && meet(first, second, rests(members[a]), rests(members[b])))
                 note_pushed(log, members[a], members[b]);
-            }
         }
 }
 
@@ -134,7 +159,7 @@ void resolve_entity_collisions(ContactScratch& scratch, std::span<Body> bodies, 
     members.clear();
     bool reports = false;
     for (size_t i = 0; i < bodies.size(); ++i) {
-        if (bodies[i].collides()) members.push_back(i);
+        if (bodies[i].collides() || bodies[i].senses()) members.push_back(i);
         reports |= bodies[i].contacts;
     }
     run_pairs(scratch, bodies, members, method, resting);

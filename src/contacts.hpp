@@ -19,8 +19,9 @@ inline bool aabb_overlap(const Body& a, const Body& b) {
     return aabb_overlap(a.x.v, a.y.v, a.w.v, a.h.v, b.x.v, b.y.v, b.w.v, b.h.v);
 }
 
-// Whether a pair takes part in push-apart: both solid, neither skips
-// 'entity-collisions, and the boxes overlap strictly.
+// Whether a pair takes part in push-apart: both solid, neither a sensor nor
+// skipping 'entity-collisions, their categories meet, and the boxes overlap
+// strictly.
 bool collision_eligible(const Body& a, const Body& b);
 
 // Pushes one eligible pair apart (a is the earlier in list order). With
@@ -28,6 +29,17 @@ bool collision_eligible(const Body& a, const Body& b);
 // up one whose centre is above its own, as an immovable body would: the
 // other lands on it (semantics §4's immovable rule, first case).
 void resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
+
+// An overlapping pair of the pass (a the earlier): whether it meets, and if
+// so what happens — categories that do not meet leave it alone; a sensor
+// and a body it senses only meet (the pair is noted), two sensors do not;
+// otherwise resolve_pair. Returns whether the pair met (§10, §13).
+inline bool meet(Body& a, Body& b, bool a_rests, bool b_rests) {
+    if (!categories_meet(a, b)) return false;
+    if (a.sensor | b.sensor) return !(a.sensor & b.sensor);
+    resolve_pair(a, b, a_rests, b_rests);
+    return true;
+}
 
 // The pairs push-apart resolved, as body indices (the earlier first), in the
 // order resolved: what the debug overlay draws. Nothing is noted unless the

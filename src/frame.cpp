@@ -1,6 +1,7 @@
 #include "frame.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include "constants.hpp"
 #include "detail/frame_impl.hpp"
@@ -216,6 +217,7 @@ void Frame::Impl::census(std::span<const Body> bodies, std::span<const uint8_t> 
 
 void Frame::Impl::begin_census(size_t n, bool take) {
     members_.clear();
+    sensors_.clear();
     carriers_.clear();
     crushed_ = false;
     grouped_ = 0;
@@ -233,12 +235,17 @@ void Frame::Impl::enlist(const Body& b, size_t i) {
             crushed_ |= b.crushed;
         }
     }
+    if (b.senses()) sensors_.push_back(i);
     grouped_ += b.group != 0;
-    contact_bodies_ += b.contacts;
+    contact_bodies_ += b.reports_pairs();
 }
 
 void Frame::Impl::end_census() {
     colliders_ = !members_.empty();
+    pair_members_.clear();
+    if (!sensors_.empty())
+        std::merge(members_.begin(), members_.end(), sensors_.begin(), sensors_.end(),
+                   std::back_inserter(pair_members_));
     if (supporters_taken_) slotted_.assign(members_.begin(), members_.end());
 }
 
@@ -291,10 +298,11 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         auto t0 = Clock::now();
         if (carrying) carry(bodies, grid, opts, writes);
         const bool reports = contact_bodies_ != 0;
-        if (members_.size() >= 2 || reports)
+        const std::span<const size_t> pass = pass_members();
+        if (pass.size() >= 2 || reports)
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy | (reports ? kFieldTouching : 0u),
                         [&](std::span<Body> bs) {
-                            if (members_.size() >= 2) resolve_entity_collisions_among(contacts_, bs, members_, resting_);
+                            if (pass.size() >= 2) resolve_entity_collisions_among(contacts_, bs, pass, resting_);
                             if (reports) mark_touching(bs);
                         });
         if (carrying) crush(bodies, grid, writes);

@@ -63,11 +63,11 @@ bool may_stand_on(const Body& b, const Supporter& o) {
 }
 
 bool rests_on(const Body& b, const Supporter& o) {
-    return o.vy == 0 && o.y == b.y.v + b.h.v && spans_meet(b, o) && may_stand_on(b, o);
+    return o.vy == 0 && o.y == b.y.v + b.h.v && spans_meet(b, o) && may_stand_on(b, o) && o.meets(b);
 }
 
 bool entity_supports(const Body& b, const Supporter& o) {
-    if (!spans_meet(b, o) || !may_stand_on(b, o)) return false;
+    if (!spans_meet(b, o) || !may_stand_on(b, o) || !o.meets(b)) return false;
     return std::fabs((b.y.v + b.h.v) - o.y) <= kOnSolidTolerance &&
            std::fabs(b.vy.v - o.vy) <= kOnSolidTolerance;
 }

@@ -36,8 +36,9 @@ namespace ds {
 // (solid, not a ghost), follows a group, or — when any supporters exist —
 // looks for one under its feet.
 inline bool depends_on_others(const Body& b, bool supporters_exist) {
-    // A contact body's report names other bodies: it never sleeps.
-    return b.collides() || b.group != 0 || b.contacts ||
+    // A contact body's report names other bodies, and a sensor's pairs do:
+    // neither ever sleeps.
+    return b.collides() || b.group != 0 || b.contacts || b.sensor ||
            (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
 }
 // Whether any body collides (Body::collides): then ground detection has

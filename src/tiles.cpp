@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bounce.hpp"
 #include "detail/body_axis.hpp"
 #include "detail/placed_shape.hpp"
 #include "steps.hpp"
@@ -81,6 +82,13 @@ void note_blocked(Body& b, uint8_t axis, uint8_t sides, SubStep s) {
     if (!b.contacts) return;
     const uint8_t kept = s.gather ? b.blocked : static_cast<uint8_t>(b.blocked & ~axis);
     b.blocked = static_cast<uint8_t>((kept & kSidesAll) | sides);
+}
+
+// The velocity a stop leaves on its axis (the steps zero it first): the
+// rebound of the velocity the body hit with (§13). A carried move leaves
+// the rider's velocities alone, so it never rebounds.
+Num stop_velocity(Num hit, const Body& b, SubStep s) {
+    return s.carried ? Num::integer(0) : rebound(hit, b.bounce);
 }
 
 uint8_t side(bool stopped, Num vel, uint8_t forward, uint8_t backward) {
@@ -364,11 +372,14 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
             const uint8_t k = grid->cell(c, r);
             return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
         })) {
-        note_blocked(b, kSidesX, side(shaped_x(b, *grid, mode, s), vx, kSideRight, kSideLeft), s);
+        const bool stopped = shaped_x(b, *grid, mode, s);
+        if (stopped) b.vx = stop_velocity(vx, b, s);
+        note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
         return true;
     }
     const bool stopped = resolve_axis(a, cols, rows,
                                       [&](int64_t c, int64_t r) { return grid->solid(c, r); });
+    if (stopped) b.vx = stop_velocity(vx, b, s);
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
     return true;
 }
@@ -411,7 +422,8 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     } else {
         stopped = resolve_axis(a, rows, cols, stops);
     }
-    // Not stopped: a walker may follow a ramp down (§12).
+    if (stopped) b.vy = stop_velocity(vy, b, s);
+    // Not stopped: a walker may follow a ramp down (§12), which is no hit.
     if (!stopped && grid->has_shapes() && vy.v > 0) stopped = snap_down(b, *grid, s);
     note_blocked(b, kSidesY, side(stopped, vy, kSideDown, kSideUp), s);
     return true;

@@ -1,4 +1,4 @@
-;;; (downstroke reference) — the physics rules of semantics §1–§6 and §9–§12 in plain Scheme.
+;;; (downstroke reference) — the physics rules of semantics §1–§6 and §9–§13 in plain Scheme.
 ;;;
 ;;; An executable specification: the same procedures as (downstroke physics),
 ;;; written for reading, not for speed, and sharing nothing with the native
@@ -28,6 +28,9 @@
 ;; How far into a one-way cell a body's feet may be for it to stand there
 ;; (semantics §9): less than the 1 px a first frame of falling takes it.
 (define *one-way-footing* 1)
+;; A stop rebounds (#:bounce, §13) only from a hit faster than this, in
+;; px/frame: a body at rest on a floor hits it at exactly 1 every frame.
+(define *bounce-rest-speed* 1)
 
 ;;; ---------------------------------------------------------------- numbers (§1)
 ;;; The core computes in double. A number is read as the nearest double,
@@ -64,9 +67,17 @@
   (cond ((memq key number-keys)
          (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
          (when (or (nan? v) (inf? v)) (fail who "entity key ~S: expected a finite number, got ~S" key v)))
-        ((eq? key #:skip-pipelines)
+        ((memq key '(#:skip-pipelines #:collides-with))
          (unless (and (list? v) (every symbol? v))
-           (fail who "entity key ~S: expected a list of symbols, got ~S" key v)))))
+           (fail who "entity key ~S: expected a list of symbols, got ~S" key v)))
+        ((eq? key #:category)
+         (unless (symbol? v) (fail who "entity key ~S: expected a category symbol, got ~S" key v)))
+        ((eq? key #:bounce)
+         (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
+         (when (or (nan? v) (inf? v)) (fail who "entity key ~S: expected a finite number, got ~S" key v))
+         (unless (<= 0 v 1)
+           (scm-error 'out-of-range (symbol->string who)
+                      "entity key ~S: expected a number from 0 to 1, got ~S" (list key v) #f)))))
 
 (define (check who e)
   (let loop ((p e) (seen '()))
@@ -164,6 +175,44 @@ sub-frame, GATHER?, adds FOUND to what the frame found already)."
 (define (name-of e index)
   "An entity's name in a report: its #:id, or its position in the list."
   (or (entity-ref e #:id #f) index))
+
+;;; ---------------------------------------------------------------- categories, sensors, bounce (§13)
+
+(define (category-of e) (entity-ref e #:category 'default))
+
+(define (accepts? e category)
+  "E's #:collides-with names CATEGORY; without the key it names every one."
+  (let ((names (entity-ref e #:collides-with #f)))
+    (or (not names) (and (memq category names) #t))))
+
+(define (meets? a b)
+  "Each one's #:collides-with names the other's category."
+  (and (accepts? a (category-of b)) (accepts? b (category-of a))))
+
+(define (sensor? e) (flag e #:sensor?))
+(define (senses? e) (and (sensor? e) (not (skips? e 'entity-collisions))))
+(define (reports-pairs? e) (or (contacts? e) (sensor? e)))
+
+(define (bounce-of e) (as-double (entity-ref e #:bounce 0)))
+
+(define (pair-bounce a b)
+  "The larger of two entities' bounces (on a tie, A's)."
+  (let ((ba (bounce-of a)) (bb (bounce-of b)))
+    (if (> bb ba) bb ba)))
+
+(define (rebound v bounce)
+  "The velocity a stop leaves: 0, or −v·bounce for a hit faster than
+*bounce-rest-speed*; exact when both are."
+  (cond ((or (zero? bounce) (not (> (abs (fl v)) *bounce-rest-speed*))) 0)
+        ((and (exact? v) (exact? bounce)) (- (* v bounce)))
+        (else (- (* (fl v) (fl bounce))))))
+
+(define (stop-velocity e moved vel-key stopped? carried?)
+  "MOVED (E after a tile step that zeroed VEL-KEY when STOPPED?) with the
+stop's rebound; a carried move never rebounds."
+  (if (and stopped? (not carried?))
+      (put moved vel-key (num moved vel-key) (rebound (num e vel-key) (bounce-of e)))
+      moved))
 
 ;;; ---------------------------------------------------------------- motion (§4)
 ;;; Each motion step has a sub-frame form taking H: #f for the seed's whole
@@ -575,7 +624,7 @@ against the first one, vx = 0."
           ((or (not tm) (zero? (num e #:vx))) (put-blocked e '(left right) '() gather?))
           (else
            (let-values (((moved stopped?) (shaped-x e tm h)))
-             (put-blocked moved '(left right)
+             (put-blocked (stop-velocity e moved #:vx stopped? carried?) '(left right)
                           (if stopped? (list (if (> (num e #:vx) 0) 'right 'left)) '())
                           gather?))))))
 
@@ -590,6 +639,7 @@ against the first one, vx = 0."
      ((or (not tm) (zero? (num e #:vy))) (put-blocked e '(up down) '() gather?))
      (else
       (let*-values (((moved stopped?) (shaped-y e tm h))
+                    ((moved) (stop-velocity e moved #:vy stopped? carried?))
                     ((moved stopped?) (if (or stopped? (not (> (num e #:vy) 0)) carried?)
                                           (values moved stopped?)
                                           (snap-down moved tm h))))
@@ -643,15 +693,16 @@ surface, for a body not rising nor dropping through (§12)."
   (and tm (or (whole-cell-supports? e tm) (shape-supports? e tm))))
 
 (define (entity-supports? e o)
-  "O holds E up: solid, not a ghost, overlapping horizontally, its top
-within the tolerance of E's feet, moving at nearly E's vertical speed."
-  (and (flag o #:solid?)
-       (not (skips? o 'entity-collisions))
+  "O holds E up: solid, not a sensor nor a ghost, overlapping horizontally,
+its top within the tolerance of E's feet, moving at nearly E's vertical
+speed, and their categories meet (§13)."
+  (and (collides? o)
        (< (num e #:x) (num+ (num o #:x) (num o #:width)))
        (< (num o #:x) (num+ (num e #:x) (num e #:width)))
        (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num o #:y))) *on-solid-tolerance*)
        (<= (abs (num- (num e #:vy) (num o #:vy))) *on-solid-tolerance*)
-       (may-stand-on? e o)))
+       (may-stand-on? e o)
+       (meets? e o)))
 
 (define (may-stand-on? e o)
   "A one-way O (§9) holds up only an E that is not rising nor dropping through."
@@ -670,8 +721,8 @@ within the tolerance of E's feet, moving at nearly E's vertical speed."
          (whole-cell-supports? e tm))))   ; whole cells only (§12)
 
 (define (rests-on? e o)
-  (and (flag o #:solid?)
-       (not (skips? o 'entity-collisions))
+  (and (collides? o)
+       (meets? e o)
        (zero? (num o #:vy))
        (= (num o #:y) (num+ (num e #:y) (num e #:height)))
        (< (num e #:x) (num+ (num o #:x) (num o #:width)))
@@ -696,8 +747,7 @@ HOLDERS ((index . entity) …) other than its own SLOT and its #:id."
 (define (holders entities)
   "The entities that can hold another up (solid, not ghosts), each as
 (index . entity) with its index in ENTITIES."
-  (filter (lambda (slot) (and (flag (cdr slot) #:solid?)
-                              (not (skips? (cdr slot) 'entity-collisions))))
+  (filter (lambda (slot) (collides? (cdr slot)))
           (map cons (iota (length entities)) entities)))
 
 (define* (on-solid e tm holders itself? #:optional (name-at name-of))
@@ -753,21 +803,38 @@ itself: not eq?, no equal #:id)."
 
 (define (centre2 p s) (+ (* 2 (fl p)) (fl s)))   ; twice the centre, in double
 
-(define (push-off-immovable! m s ox oy)
+(define (stopped-by v into? bounce)
+  "A velocity pushed off a fixed body: its rebound when it ran INTO? it."
+  (if into? (rebound v bounce) 0))
+
+(define (push-off-immovable! m s ox oy bounce)
   "Landing wins while M's centre is above S's; else the shallower axis."
   (cond ((< (centre2 (y m) (h m)) (centre2 (y s) (h s)))
          (vector-set! m 1 (num- (y s) (h m)))
-         (vector-set! m 5 0))
+         (vector-set! m 5 (stopped-by (vector-ref m 5) (> (vector-ref m 5) 0) bounce)))
         ((< ox oy)
-         (vector-set! m 0 (if (< (centre2 (x m) (w m)) (centre2 (x s) (w s)))
-                              (num- (x s) (w m))
-                              (num+ (x s) (w s))))
-         (vector-set! m 4 0))
+         (let ((left? (< (centre2 (x m) (w m)) (centre2 (x s) (w s)))))
+           (vector-set! m 0 (if left? (num- (x s) (w m)) (num+ (x s) (w s))))
+           (vector-set! m 4 (stopped-by (vector-ref m 4)
+                                        (if left? (> (vector-ref m 4) 0) (< (vector-ref m 4) 0))
+                                        bounce))))
         (else
          (vector-set! m 1 (num+ (y s) (h s)))
-         (vector-set! m 5 0))))
+         (vector-set! m 5 (stopped-by (vector-ref m 5) (< (vector-ref m 5) 0) bounce)))))
 
-(define (push-apart! a b pos size vel o)
+(define (part neg pos bounce)
+  "Two movable bodies' velocities after they were pushed apart, NEG the one
+moved the negative way: the seed's −1 and +1; with bounce and closing
+faster than *bounce-rest-speed*, equal masses parting at BOUNCE times their
+closing speed about their mean (bounce 1: swapped)."
+  (let ((closing (- (fl neg) (fl pos))))
+    (cond ((or (zero? bounce) (not (> closing *bounce-rest-speed*))) (values -1 1))
+          ((exact? bounce) (values pos neg))
+          (else (let ((mean (/ (+ (fl neg) (fl pos)) 2))
+                      (half (/ (* (fl bounce) closing) 2)))
+                  (values (- mean half) (+ mean half)))))))
+
+(define (push-apart! a b pos size vel o bounce)
   "Share the overlap O along one axis (POS SIZE VEL: vector slots). A, the
 earlier in the list, moves negative unless B's centre is smaller, and takes
 the larger half when everything is an exact integer."
@@ -779,8 +846,11 @@ the larger half when everything is an exact integer."
                              (centre2 (vector-ref a pos) (vector-ref a size))))))
     (vector-set! a pos (num+ (vector-ref a pos) (if a-negative (- a-share) a-share)))
     (vector-set! b pos (num+ (vector-ref b pos) (if a-negative b-share (- b-share))))
-    (vector-set! a vel (if a-negative -1 1))
-    (vector-set! b vel (if a-negative 1 -1))))
+    (let-values (((neg pos) (if a-negative
+                                (part (vector-ref a vel) (vector-ref b vel) bounce)
+                                (part (vector-ref b vel) (vector-ref a vel) bounce))))
+      (vector-set! a vel (if a-negative neg pos))
+      (vector-set! b vel (if a-negative pos neg)))))
 
 (define (above? upper lower)
   (< (centre2 (y upper) (h upper)) (centre2 (y lower) (h lower))))
@@ -797,21 +867,22 @@ before its own."
 own, as an immovable body would."
   (let ((a-fixed (flag ea #:immovable?)) (b-fixed (flag eb #:immovable?))
         (ox (overlap (x a) (w a) (x b) (w b)))
-        (oy (overlap (y a) (h a) (y b) (h b))))
+        (oy (overlap (y a) (h a) (y b) (h b)))
+        (bounce (pair-bounce ea eb)))
     (cond ((or (flag ea #:one-way?) (flag eb #:one-way?))   ; §9: it lands, or they pass
            (unless (and (flag ea #:one-way?) (flag eb #:one-way?))
              (let* ((a-one-way (flag ea #:one-way?))
                     (em (if a-one-way eb ea)) (m (if a-one-way b a)) (o (if a-one-way a b)))
                (when (and (not (flag em #:immovable?)) (lands-from-above? em m o))
                  (vector-set! m 1 (num- (y o) (h m)))
-                 (vector-set! m 5 0)))))
+                 (vector-set! m 5 (rebound (vector-ref m 5) bounce))))))
           ((and a-fixed b-fixed) #t)
-          (a-fixed (push-off-immovable! b a ox oy))
-          (b-fixed (push-off-immovable! a b ox oy))
-          ((and a-rests (above? b a)) (push-off-immovable! b a ox oy))
-          ((and b-rests (above? a b)) (push-off-immovable! a b ox oy))
-          ((< ox oy) (push-apart! a b 0 2 4 ox))
-          (else (push-apart! a b 1 3 5 oy)))))
+          (a-fixed (push-off-immovable! b a ox oy bounce))
+          (b-fixed (push-off-immovable! a b ox oy bounce))
+          ((and a-rests (above? b a)) (push-off-immovable! b a ox oy bounce))
+          ((and b-rests (above? a b)) (push-off-immovable! a b ox oy bounce))
+          ((< ox oy) (push-apart! a b 0 2 4 ox bounce))
+          (else (push-apart! a b 1 3 5 oy bounce)))))
 
 (define (resolve-entity-collisions entities)
   "One pass over the pairs (i, j), i < j, in list order, each seeing what
@@ -827,9 +898,7 @@ entities and the pairs (i . j) it resolved with a contact entity (§10),
 after EARLIER (the frame's earlier sub-frames), each pair once."
   (let* ((before (map box entities))
          (after (map vector-copy before))
-         (takes-part (map (lambda (e) (and (flag e #:solid?)
-                                           (not (skips? e 'entity-collisions))))
-                          entities))
+         (takes-part (map (lambda (e) (or (collides? e) (senses? e))) entities))
          ;; (entity box rests? index)
          (members (filter-map (lambda (e b part r i) (and part (list e b r i)))
                               entities after takes-part resting (iota (length entities))))
@@ -838,10 +907,14 @@ after EARLIER (the frame's earlier sub-frames), each pair once."
       (unless (null? rest)
         (let ((m (car rest)))
           (for-each (lambda (o)
-                      (when (overlaps? (cadr m) (cadr o))
-                        (resolve-pair! (car m) (cadr m) (caddr m) (car o) (cadr o) (caddr o))
+                      ;; §13: categories that do not meet pass; a sensor and
+                      ;; a body only meet (two sensors do not)
+                      (when (and (overlaps? (cadr m) (cadr o)) (meets? (car m) (car o))
+                                 (not (and (sensor? (car m)) (sensor? (car o)))))
+                        (unless (or (sensor? (car m)) (sensor? (car o)))
+                          (resolve-pair! (car m) (cadr m) (caddr m) (car o) (cadr o) (caddr o)))
                         (let ((pair (cons (cadddr m) (cadddr o))))
-                          (when (and (or (contacts? (car m)) (contacts? (car o)))
+                          (when (and (or (reports-pairs? (car m)) (reports-pairs? (car o)))
                                      (not (member pair pairs)))
                             (set! pairs (cons pair pairs))))))
                     (cdr rest)))
@@ -901,7 +974,8 @@ likewise y."
 ;;; began; the bodies it pushes into solid cells, and the riders it lifts
 ;;; into them, are crushed.
 
-(define (collides? e) (and (flag e #:solid?) (not (skips? e 'entity-collisions))))
+(define (collides? e)
+  (and (flag e #:solid?) (not (sensor? e)) (not (skips? e 'entity-collisions))))
 (define (carrier? e) (and (flag e #:carries?) (flag e #:immovable?) (collides? e)))
 (define (crushable? e) (and (not (flag e #:immovable?)) (collides? e)))
 (define (may-ride? e) (and (crushable? e) (not (skips? e 'carry))))
@@ -916,6 +990,7 @@ the tolerance of C's top; on a one-way C, not rising nor dropping through.
 Not their speeds: push-apart zeroes a rider's vy each frame, whatever C's."
   (and (< (num e #:x) (num+ (num c #:x) (num c #:width)))
        (< (num c #:x) (num+ (num e #:x) (num e #:width)))
+       (meets? e c)
        (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num c #:y))) *on-solid-tolerance*)
        (may-stand-on? e c)))
 
@@ -967,9 +1042,11 @@ no earlier carrier."
   "The slots of the crushable entities a moving carrier (not one-way)
 overlaps: the bodies push-apart is about to push out of its way."
   (let ((pushers (filter-map (lambda (e s) (and (carrier? e) (not (flag e #:one-way?))
-                                                (moved? (displacement e s)) (box e)))
+                                                (moved? (displacement e s)) e))
                              entities start)))
-    (filter-map (lambda (e i) (and (crushable? e) (any (lambda (p) (overlaps? (box e) p)) pushers) i))
+    (filter-map (lambda (e i) (and (crushable? e)
+                                   (any (lambda (p) (and (meets? e p) (overlaps? (box e) (box p)))) pushers)
+                                   i))
                 entities (iota (length entities)))))
 
 (define (crush-in-way entities slots tm)

@@ -108,7 +108,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             Body& second = bodies[members[b]];
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
-            resolve_pair(first, second, rests(a), rests(b));
+            if (!meet(first, second, rests(a), rests(b))) continue;
             note_pushed(log, members[a], members[b]);
             // Re-file b only when it changed cells (sizes never change, so
             // a small body stays small).

@@ -71,6 +71,14 @@ struct Frame::Impl {
     std::vector<uint32_t> active_;
     std::vector<size_t> members_;
     std::vector<size_t> slotted_;  // the bodies support_slot_ gave a slot to
+    // The sensors (Body::senses), and with them the bodies of the push-apart
+    // pass: members_ and the sensors merged in list order (§13). Empty, and
+    // the pass takes members_, in a frame without sensors.
+    std::vector<size_t> sensors_;
+    std::vector<size_t> pair_members_;
+    std::span<const size_t> pass_members() const {
+        return sensors_.empty() ? std::span<const size_t>(members_) : std::span<const size_t>(pair_members_);
+    }
     uint64_t grouped_ = 0;
     std::vector<size_t> carriers_;        // the members that are carriers, in list order
     bool crushed_ = false;                // some crushable member enters the frame crushed
@@ -87,7 +95,7 @@ struct Frame::Impl {
     SettleTracker settling_;  // which bodies step() may leave asleep (World path)
     bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
     // The contact report (semantics §10): this frame's bodies with
-    // #:contacts?, and where push-apart logs its pairs meanwhile (the
+    // #:contacts? or sensors (whose pairs the scene keeps, §13), and where push-apart logs its pairs meanwhile (the
     // overlay's log when it has one, else the frame's own) from which offset.
     size_t contact_bodies_ = 0;
     PairLog* overlay_log_ = nullptr;

@@ -52,6 +52,8 @@
 ;;;   4 px ledge, a small triangle, a one-way ramp), each with random flip bits
 ;;;   (horizontal, vertical: a ceiling ramp, diagonal); tile edits on such maps
 ;;;   may put ramps too.
+;;; - Categories, sensors and bounce (semantics §13) in about 2 scenes in 3
+;;;   (collision-roles: its own stream).
 ;;; - dt: 16, 16.666 or 20 for the whole scene, or varying by frame (10%).
 ;;;
 ;;; Set `scene-gen-invalid?' to #t to put a wrongly typed value (a string
@@ -442,6 +444,31 @@
         (append e (list #:contacts? #t))
         e)))
 
+;;; Categories, sensors and bounce (semantics §13), in about 2 scenes in 3,
+;;; drawn from a stream of their own (salt 104729), so every seed keeps the
+;;; scene it had before they existed, bar these keys: an entity gets a
+;;; #:category (1 in 3), a #:collides-with list (1 in 4, '() included), is
+;;; a sensor (1 in 10) and bounces (1 in 5: 1, 1.0, 1/2, 0.5, 0.25 or 0.75).
+(define category-pool '(default player enemy bullet wall))
+
+(define (collision-roles seed entities)
+  (let ((r (make-rng seed 104729)))
+    (define (role e)
+      (let* ((e (if (chance r 1 3) (append e (list #:category (pick r category-pool))) e))
+             (e (if (chance r 1 4)
+                    (append e (list #:collides-with
+                                    (let loop ((cs category-pool) (acc '()))   ; drawn in order
+                                      (cond ((null? cs) (reverse acc))
+                                            ((chance r 1 2) (loop (cdr cs) (cons (car cs) acc)))
+                                            (else (loop (cdr cs) acc))))))
+                    e))
+             (e (if (chance r 1 10) (append e (list #:sensor? #t)) e)))
+        (if (chance r 1 5) (append e (list #:bounce (pick r '(1 1.0 1/2 0.5 0.25 0.75)))) e)))
+    (if (chance r 1 3)
+        entities
+        (let loop ((es entities) (acc '()))        ; one entity after the other
+          (if (null? es) (reverse acc) (loop (cdr es) (cons (role (car es)) acc)))))))
+
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
@@ -454,7 +481,8 @@
          (slots (shuffle r (append group-slots (make-list (- n (length group-slots)) #f)))))
     (let loop ((slots slots) (boxes '()) (ids '()) (acc '()))
       (if (null? slots)
-          (let ((entities (map (contact-reporter seed) (map (compose carrier-platform one-way-ledge) (reverse acc))
+          (let ((entities (map (contact-reporter seed)
+                               (collision-roles seed (map (compose carrier-platform one-way-ledge) (reverse acc)))
                                (iota (length acc)))))
             (values (if (and scene-gen-invalid? (chance r 1 30))
                         (let* ((i (ri r (length entities))) (p (invalid-pair r)))
