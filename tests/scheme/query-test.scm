@@ -144,4 +144,39 @@
   'wrong-type-arg
   (car (error-of (lambda () (scene-query-point (make-scene entities: (list (box "a" 0 1 1))) 0 0)))))
 
+;;; ---------------------------------------------------------------- the category filter (semantics §13)
+(define hero (box 0 0 10 10 #:id 'hero #:category 'player))
+(define imp (box 2 2 10 10 #:id 'imp #:category 'enemy #:collides-with '(player wall bullet)))
+(define shot (box 4 4 10 10 #:id 'shot #:category 'bullet #:collides-with '(enemy)))
+(define crate (box 6 6 10 10 #:id 'crate))
+(define crowd (make-scene entities: (list hero imp shot crate) tilemap: grid))
+(define (ids es) (map (lambda (e) (if (pair? e) (entity-ref e #:id) e)) es))
+(test-equal "collides-with: keeps the entities in those categories" '(imp crate)
+  (ids (scene-query-rect crowd 0 0 20 20 collides-with: '(enemy default))))
+(test-equal "category: keeps those whose #:collides-with names it (or that name none)" '(hero imp crate)
+  (ids (scene-query-rect crowd 0 0 20 20 category: 'player)))
+(test-equal "both: what a body of that category and mask would meet" '(imp)
+  (ids (scene-query-point crowd 7 7 category: 'bullet collides-with: '(enemy))))
+(test-equal "… alongside where" '(hero)
+  (ids (scene-query-point crowd 7 7 '(#:id . hero) collides-with: '(player enemy))))
+(test-equal "scene-pairs: the filter chooses on both sides" '((hero . imp))
+  (map (lambda (p) (cons (entity-ref (car p) #:id) (entity-ref (cdr p) #:id)))
+       (scene-pairs crowd '(#:id . hero) #f collides-with: '(player enemy))))
+(test-equal "scene-raycast: a ray that hits only enemies passes the player and the crate" 'imp
+  (entity-ref (entity-ref (scene-raycast crowd -5 8 50 8 collides-with: '(enemy)) #:entity) #:id))
+(test-equal "without the filter, the first entity on the ray" 'hero
+  (entity-ref (entity-ref (scene-raycast crowd -5 8 50 8) #:entity) #:id))
+(test-eq "no filter asked: the query sees every entity" 4 (length (scene-query-rect crowd 0 0 20 20)))
+(test-equal "a category that is not a symbol"
+  '(wrong-type-arg "scene-query-rect" "category: expected a category symbol or #f, got 3")
+  (error-of (lambda () (scene-query-rect crowd 0 0 1 1 category: 3))))
+(test-equal "a collides-with that is not a list of symbols"
+  '(wrong-type-arg "scene-raycast" "collides-with: expected a list of category symbols or #f, got (enemy \"x\")")
+  (error-of (lambda () (scene-raycast crowd 0 0 1 1 collides-with: '(enemy "x")))))
+(test-equal "… nor circular" 'wrong-type-arg
+  (car (error-of (lambda () (scene-query-point crowd 0 0 collides-with: (let ((l (list 'a))) (set-cdr! l l) l))))))
+(test-equal "an entity's bad #:category is named" 'wrong-type-arg
+  (car (error-of (lambda () (scene-query-point (make-scene entities: (list (box 0 0 1 1 #:category 5))) 0 0
+                                               category: 'player)))))
+
 (test-end "query")
