@@ -5,7 +5,10 @@
 ;;; #:on-ground? — the jump is game logic: #:ay set to (- *jump-force*), which
 ;;; the next frame's apply-acceleration consumes. Physics is the default
 ;;; engine-update; the camera follows the player (camera-target: 'player).
-;;; Reaching the goal object of the map plays 'goal.
+;;; Reaching the goal object of the map plays 'goal, and coins on the way
+;;; are picked up: the goal and the coins are sensors that collide only with
+;;; the player (category player), so the frame itself reports when the
+;;; player enters them (scene-contacts) and they never push it.
 ;;;
 ;;; Beyond the first pit: a one-way plank (tiles with the tileset property
 ;;; one-way) that the player jumps up through and lands on, and drops down
@@ -42,10 +45,11 @@
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
 (define goal-flag (sprite 11))
+(define coin-picture (sprite 10))
 (define lift-piece (sprite 12))         ; a 16×8 piece, in the bottom half of its 16×16 frame
 (define breakable-gid 22)               ; level-tiles.tsx's tile 1 (make_maps.py)
 
-(load-demo-sounds! 'jump 'goal 'boom)
+(load-demo-sounds! 'jump 'goal 'boom 'coin)
 
 (define (map-object name)
   (or (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects level))
@@ -59,9 +63,24 @@
     (list #:id 'player #:x (entity-ref spawn #:x) #:y (entity-ref spawn #:y)
           #:width (entity-ref spawn #:width) #:height (entity-ref spawn #:height)
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f
-          ;; Solid so that the lift's push-apart and carrying take it along;
-          ;; the contact report tells the game what it hit and stands on.
-          #:solid? #t #:contacts? #t)))
+          ;; Solid so that the lift's push-apart and carrying take it along,
+          ;; and the sensors notice it; the contact report tells the game
+          ;; what it hit and stands on.
+          #:solid? #t #:contacts? #t #:category 'player)))
+
+;;; The goal and the coins notice the player and nothing else.
+(define goal0
+  (list #:id 'goal #:x (entity-ref goal #:x) #:y (entity-ref goal #:y)
+        #:width (entity-ref goal #:width) #:height (entity-ref goal #:height)
+        #:sensor? #t #:collides-with '(player)))
+
+(define (coin k x y)
+  (list #:id (string->symbol (format #f "coin-~a" k)) #:kind 'coin #:x x #:y y #:width 8 #:height 8
+        #:sensor? #t #:collides-with '(player) #:sprite coin-picture))
+
+;;; On the ground, the two platforms and the hill's top; the last hangs over
+;;; the lift's run, out of the scripted run's reach.
+(define coins0 (list (coin 1 100 164) (coin 2 200 116) (coin 3 300 68) (coin 4 750 132) (coin 5 1300 100)))
 
 (define lift0
   (let ((spawn (map-object "lift")))
@@ -94,6 +113,7 @@ the last 1000."
 (define last-wanted 0)                  ; the #:vx asked for last frame
 (define was-standing-on #f)             ; the #:id of what it stood on last frame
 (define reached-goal? #f)
+(define coins 0)                        ; picked up since the run (re)started
 (define start-frame 0)                  ; the frame the run (re)started at
 (define goal-frame #f)                  ; the frame the goal was reached at
 
@@ -117,14 +137,22 @@ running on the ground."
   (set! last-wanted 0)
   (set! was-standing-on #f)
   (set! reached-goal? #f)
+  (set! coins 0)
   (set! start-frame (+ (game-frame game) 1))
   (set! goal-frame #f)
-  (game-scene-set! game (update-scene (game-scene game) entities: (list (dress player0 0 #f 0) lift0)
-                                      tilemap: level)))
+  (game-scene-set! game (update-scene (game-scene game) entities: (start-entities) tilemap: level)))
 
-(define (overlaps? a b)
-  (aabb-overlap? (entity-ref a #:x 0) (entity-ref a #:y 0) (entity-ref a #:width 0) (entity-ref a #:height 0)
-                 (entity-ref b #:x 0) (entity-ref b #:y 0) (entity-ref b #:width 0) (entity-ref b #:height 0)))
+(define (start-entities) (cons* (dress player0 0 #f 0) lift0 goal0 coins0))
+
+(define (entered scene)
+  "The names of the sensors the player entered this frame: the scene's
+contacts name it with each sensor it overlaps, the sensor first or last
+as they stand in the list."
+  (filter-map (lambda (pair)
+                (cond ((eq? (car pair) 'player) (cdr pair))
+                      ((eq? (cdr pair) 'player) (car pair))
+                      (else #f)))
+              (scene-contacts scene)))
 
 (define (steer-lift lift)
   ;; Back and forth between the ends of its run: physics moved it this frame,
@@ -169,12 +197,17 @@ removed, and how many there were."
 (define (entity-find entities id)
   (find (lambda (e) (eq? (entity-ref e #:id) id)) entities))
 
+(define (coin-name? name) (string-prefix? "coin-" (symbol->string name)))
+
 (define (play! game dt)
-  ;; Physics has already run this frame: #:on-ground? and #:x are resolved.
+  ;; Physics has already run this frame: #:on-ground? and #:x are resolved,
+  ;; and the sensors the player overlaps are in the scene's contacts.
   (let* ((input (game-input game))
          (scene (game-scene game))
          (player (car (scene-entities scene)))
          (lift (entity-find (scene-entities scene) 'lift))
+         (touched (entered scene))
+         (picked (filter coin-name? touched))
          (on-ground? (entity-ref player #:on-ground? #f))
          (wanted (cond ((input-held? input 'left) (- *run-speed*))
                        ((input-held? input 'right) *run-speed*)
@@ -196,7 +229,12 @@ removed, and how many there were."
     (when (and on-ground? (not was-on-ground?)) (note! game 'landed))
     (when (and blocked? (not was-blocked?)) (note! game 'bumped))
     (when (and (eq? standing-on 'lift) (not (eq? was-standing-on 'lift))) (note! game 'boarded))
-    (when (and (not reached-goal?) (overlaps? player goal))
+    (for-each (lambda (name)
+                (set! coins (+ coins 1))
+                (play-sound 'coin)
+                (note! game (list 'coin name)))
+              picked)
+    (when (and (not reached-goal?) (memq 'goal touched))
       (set! reached-goal? #t)
       (set! goal-frame (game-frame game))
       (play-sound 'goal)
@@ -214,7 +252,10 @@ removed, and how many there were."
                        (entity-set player #:drop-through? (input-held? input 'down))
                        player))
            (player (dress player wanted on-ground? (game-frame game))))
-      (game-scene-set! game (update-scene scene entities: (list player (steer-lift lift))
+      (game-scene-set! game (update-scene scene entities:
+                                          (cons* player (steer-lift lift)
+                                                 (remove (lambda (e) (memq (entity-ref e #:id) picked))
+                                                         (cddr (scene-entities scene))))
                                           tilemap: (car broken))))))
 
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
@@ -230,6 +271,8 @@ removed, and how many there were."
       (for-each (lambda (k) (draw-sprite lift-piece (+ (entity-ref lift #:x) (* 16 k)) (- (entity-ref lift #:y) 8)))
                 (iota (quotient (entity-ref lift #:width) 16))))
     (draw-label (format #f "TIME ~,1f" seconds) 4 4 'white)
+    (let ((text (format #f "COINS ~a" coins)))
+      (draw-label text (- (game-width game) 4 (* 6 (string-length text))) 4 'yellow))
     (cond (reached-goal?
            (draw-label "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow #:scale 3)
            (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
@@ -284,7 +327,7 @@ removed, and how many there were."
 
 (define game
   (make-game title: "Downstroke — platformer" width: 320 height: 240 frame-delay: 16
-             scene: (make-scene entities: (list player0 lift0) tilemap: level camera-target: 'player)
+             scene: (make-scene entities: (start-entities) tilemap: level camera-target: 'player)
              update: update render: render
              input-script: input-script))
 

@@ -8,7 +8,12 @@
 ;;;   their #:group-local-x / #:group-local-y (sync-groups); the update hook
 ;;;   turns the raft round at the ends of its run;
 ;;; - bots with their own logic: they walk the floor and turn round when a
-;;;   wall stopped them, i.e. when the tile collision left their #:vx at 0.
+;;;   wall stopped them, i.e. when the tile collision left their #:vx at 0;
+;;; - two balls with #:bounce: one (bounce 1) bounces between the floor and
+;;;   the walls for ever, to the same height every time; the other (0.6)
+;;;   bounces lower and lower and comes to rest. They collide with no
+;;;   category (#:collides-with '()), only with the map: they pass the
+;;;   crates, the bots and each other.
 ;;; update: only runs that per-entity logic, through scene-map-entities.
 ;;;
 ;;; Keys (in a window): Left/Right or A/D move the dropper along the top,
@@ -36,6 +41,7 @@
 (define crate-picture (sprite 9))
 (define flag-picture (sprite 11))
 (define platform-picture (sprite 12))   ; a 16×8 piece, in the bottom half of its 16×16 frame
+(define ball-picture (sprite 13))
 
 ;;; ------------------------------------------------------------ entities
 (define (platform id x y w)
@@ -57,6 +63,11 @@
 it walks left."
   (entity-set (entity-set e #:flip-x? (negative? (entity-ref e #:vx 0)))
               #:sprite (if (even? (quotient (entity-ref e #:x) 6)) walker-picture walker-step-picture)))
+
+(define (ball id x y vx bounce)
+  (list #:id id #:kind 'ball #:x x #:y y #:width 8 #:height 8 #:vx vx #:vy 0
+        #:gravity? #t #:solid? #t #:bounce bounce #:category 'ball #:collides-with '()
+        #:sprite ball-picture))
 
 (define raft-speed 1)
 (define raft-min-x 256)
@@ -94,7 +105,13 @@ it walks left."
          (box 'box-4 400 16)                 ; → rests on the map's ledge (row 7)
          (bot 'bot-1 100 -2)                 ; patrols between the west wall and the stub
          (bot 'bot-2 300 2))                 ; patrols between the stub and the east wall
-   raft0))
+   raft0
+   ;; ball-1 falls 153 px (1 + 2 + … + 17) to the floor (its top y 208),
+   ;; hits it at 18 px a frame and rises back to y 47, for ever, off the
+   ;; west wall and the stub too; ball-2 lands on the map's ledge, rolls off
+   ;; it, and bounces lower and lower to rest on the floor.
+   (list (ball 'ball-1 40 47 2 1)
+         (ball 'ball-2 420 40 -1 0.6))))
 
 ;;; ------------------------------------------------------------ bookkeeping
 (define demo-script "sandbox.scm")

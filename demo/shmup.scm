@@ -1,11 +1,14 @@
-;;; Shmup: engine-update: #f — the update hook moves everything itself.
+;;; Shmup: who hits whom is decided by categories (physics.org, "Who
+;;; collides with whom").
 ;;;
-;;; No map, no physics pass: the ship moves by plain arithmetic ('left /
-;;; 'right held), bullets and the enemy formation move with apply-velocity.
-;;; Pressing 'a fires a bullet; a bullet overlapping an enemy (scene-pairs)
-;;; removes both and scores the enemy's #:points. Bullets are not solid:
-;;; they pass through nothing and are checked by hand, as the physics doc
-;;; advises.
+;;; The ship moves by plain arithmetic ('left / 'right held); bullets and
+;;; the enemy formation move by their velocities in the engine's frame.
+;;; Pressing 'a fires a bullet. A bullet is a sensor in the category bullet
+;;; that collides only with enemies; an enemy, in the category enemy,
+;;; collides only with bullets. So the frame itself finds each bullet that
+;;; overlaps an enemy (the scene's contacts), nothing is pushed, and bullets
+;;; pass through the ship and each other. The update hook removes both and
+;;; scores the enemy's #:points.
 ;;;
 ;;; The scene's map, demo/maps/shmup.tmx, has no tiles at all: it is there
 ;;; for its tilesets, which the entities' #:sprite gids refer to. The stars
@@ -45,12 +48,15 @@
 
 (define ship0
   (list #:id 'ship #:kind 'ship #:x 154 #:y 216 #:width 12 #:height 12 #:score 0
-        #:sprite ship-picture))
+        #:category 'ship #:sprite ship-picture))
 
+;;; Enemies are solid, so bullets sense them, and immovable, so nothing a
+;;; bullet does moves them; they collide only with bullets.
 (define (enemy row col)
   (list #:id (string->symbol (format #f "enemy-~a-~a" row col)) #:kind 'enemy
         #:x (+ 40 (* 48 col)) #:y (+ 40 (* 24 row)) #:width 16 #:height 12
-        #:vx 1 #:vy 0 #:points (if (= row 0) 200 100) #:sprite enemy-picture))
+        #:vx 1 #:vy 0 #:points (if (= row 0) 200 100) #:sprite enemy-picture
+        #:solid? #t #:immovable? #t #:category 'enemy #:collides-with '(bullet)))
 
 (define enemies0
   (append-map (lambda (row) (map (lambda (col) (enemy row col)) (iota 5))) (iota 2)))
@@ -75,7 +81,8 @@
   (set! shots (+ shots 1))
   (list #:id (string->symbol (format #f "bullet-~a" shots)) #:kind 'bullet
         #:x (+ (entity-ref ship #:x) 5) #:y (- (entity-ref ship #:y) 6) #:width 2 #:height 6
-        #:vx 0 #:vy (- bullet-speed) #:sprite bullet-picture))
+        #:vx 0 #:vy (- bullet-speed) #:sprite bullet-picture
+        #:sensor? #t #:category 'bullet #:collides-with '(enemy)))
 
 (define (turn-formation enemies)
   ;; The formation turns round as one when any of it reaches a screen edge.
@@ -107,24 +114,28 @@
       (restart! game)
       (play! game dt)))
 
+(define (by-id entities)
+  (lambda (id) (find (lambda (e) (eq? (entity-ref e #:id) id)) entities)))
+
 (define (play! game dt)
+  ;; The engine's frame has moved everything by its velocity and found the
+  ;; (enemy . bullet) pairs that overlap: the scene's contacts.
   (let* ((input (game-input game))
          (scene (game-scene game))
          (entities (scene-entities scene))
+         (named (by-id entities))
          (ship (steer-ship input (find (kind-of 'ship) entities)))
          (fire? (input-pressed? input 'a))
          (new-bullets (if fire? (list (bullet-from ship)) '()))
-         (move (lambda (e) (apply-velocity e scene dt)))
-         ;; Old bullets move; a new one starts where it was fired.
-         (bullets (append (map move (filter (kind-of 'bullet) entities)) new-bullets))
-         (enemies (flap (turn-formation (map move (filter (kind-of 'enemy) entities))) (game-frame game))))
+         ;; A new bullet starts where it was fired; the frame moves it next.
+         (bullets (append (filter (kind-of 'bullet) entities) new-bullets))
+         (enemies (flap (turn-formation (filter (kind-of 'enemy) entities)) (game-frame game))))
     (when fire?
       (play-sound 'shot)
       (note! game (list 'fired (entity-ref (car new-bullets) #:id) 'x (entity-ref (car new-bullets) #:x))))
-    ;; Each bullet takes the first enemy it overlaps that no earlier bullet
-    ;; took: the pair query lists (bullet . enemy) by bullet, then by enemy.
-    (let loop ((pairs (scene-pairs (make-scene entities: (append bullets enemies))
-                                   '(#:kind . bullet) '(#:kind . enemy)))
+    ;; Each enemy is taken by the first bullet it met that no other enemy
+    ;; took: the pairs come in list order, enemies before bullets.
+    (let loop ((pairs (map (lambda (p) (cons (named (cdr p)) (named (car p)))) (scene-contacts scene)))
                (spent '()) (hit '()) (score (entity-ref ship #:score)))
       (cond
        ((null? pairs)
@@ -132,8 +143,10 @@
                             bullets)))
           (game-scene-set! game (update-scene scene entities:
                                               (cons (entity-set ship #:score score)
-                                                    (append (remove (lambda (e) (memq e hit)) enemies) kept))))))
-       ((or (memq (caar pairs) spent) (memq (cdar pairs) hit))
+                                                    (append (remove (lambda (e) (memq (entity-ref e #:id) hit))
+                                                                    enemies)
+                                                            kept))))))
+       ((or (memq (caar pairs) spent) (memq (entity-ref (cdar pairs) #:id) hit))
         (loop (cdr pairs) spent hit score))
        (else
         (let ((bullet (caar pairs)) (enemy (cdar pairs)))
@@ -142,7 +155,8 @@
           (set! explosions (cons (list (entity-ref enemy #:x) (entity-ref enemy #:y)
                                        (+ (game-frame game) explosion-frames))
                                  explosions))
-          (loop (cdr pairs) (cons bullet spent) (cons enemy hit) (+ score (entity-ref enemy #:points)))))))))
+          (loop (cdr pairs) (cons bullet spent) (cons (entity-ref enemy #:id) hit)
+                (+ score (entity-ref enemy #:points)))))))))
 
 (define (centred-x text scale) (quotient (- screen-width (* 6 scale (string-length text))) 2))
 
@@ -221,7 +235,6 @@
 
 (define game
   (make-game title: "Downstroke — shmup" width: screen-width height: screen-height frame-delay: 16
-             engine-update: #f
              scene: (make-scene entities: (cons ship0 enemies0) tilemap: backdrop)
              update: update render: render
              input-script: input-script))

@@ -23,7 +23,10 @@ namespace {
 
 constexpr float kPxPerM = 32.0f;
 constexpr float kHz = 60.0f;
-constexpr uint16 kTiles = 0x0001, kSolid = 0x0002, kGhost = 0x0004;
+constexpr uint16 kTiles = 0x0001, kSolid = 0x0002, kGhost = 0x0004, kEnemy = 0x0008, kSensor = 0x0010;
+// What a solid body collides with: tiles and solids, and the enemies and
+// sensors of the scenes that have them (crowd-categories, crowd-sensors).
+constexpr uint16 kSolidMask = kTiles | kSolid | kEnemy | kSensor;
 
 float m(double px) { return static_cast<float>(px / kPxPerM); }
 float mps(double px_per_frame) { return static_cast<float>(px_per_frame * kHz / kPxPerM); }
@@ -75,6 +78,7 @@ void add_box(b2Body* body, double x, double y, double w, double h, uint16 catego
     shape.SetAsBox(m(w / 2), m(h / 2), b2Vec2(m(x + w / 2) - body->GetPosition().x, m(y + h / 2) - body->GetPosition().y), 0);
     b2FixtureDef fd;
     fd.shape = &shape;
+    fd.isSensor = category == kSensor;
     fd.density = density;
     fd.friction = 0;
     fd.restitution = 0;
@@ -131,7 +135,8 @@ PathResult run_box2d(const Scene& scene, const RunConfig& cfg, bool discrete) {
             bd.type = b2_staticBody;
             b2Body* body = world.CreateBody(&bd);
             add_box(body, static_cast<double>(sb.x), static_cast<double>(sb.y), static_cast<double>(sb.w),
-                    static_cast<double>(sb.h), kSolid, kSolid, 0);
+                    static_cast<double>(sb.h), sb.sensor ? kSensor : kSolid,
+                    sb.sensor ? (kSolid | kEnemy) : (kSolid | kEnemy), 0);
             continue;
         }
         bd.type = b2_dynamicBody;
@@ -141,8 +146,8 @@ PathResult run_box2d(const Scene& scene, const RunConfig& cfg, bool discrete) {
         bd.linearVelocity.Set(mps(static_cast<double>(sb.vx)), mps(static_cast<double>(sb.vy)));
         b2Body* body = world.CreateBody(&bd);
         add_box(body, static_cast<double>(sb.x), static_cast<double>(sb.y), static_cast<double>(sb.w),
-                static_cast<double>(sb.h), sb.solid ? kSolid : kGhost,
-                sb.solid ? (kTiles | kSolid) : kTiles, 1.0f);
+                static_cast<double>(sb.h), !sb.solid ? kGhost : sb.enemy ? kEnemy : kSolid,
+                sb.solid ? kSolidMask : kTiles, 1.0f);
         movers.push_back({body, mps(static_cast<double>(sb.rvx)), mps(static_cast<double>(sb.rvy))});
     }
     const float dt = 1.0f / kHz;

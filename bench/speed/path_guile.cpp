@@ -22,6 +22,12 @@ SCM num(int64_t v) { return scm_from_int64(v); }
 SCM entity(const SceneBody& b, bool bounce) {
     SCM tail = SCM_EOL;
     if (bounce) tail = scm_list_4(kw("rvx"), num(b.rvx), kw("rvy"), num(b.rvy));
+    if (b.enemy)
+        tail = scm_cons_star(kw("category"), scm_list_4(scm_from_utf8_symbol("enemy"), kw("collides-with"),
+                                                        scm_list_2(scm_from_utf8_symbol("enemy"),
+                                                                   scm_from_utf8_symbol("default")),
+                                                        tail));
+    if (b.sensor) tail = scm_cons_star(kw("sensor?"), scm_list_2(SCM_BOOL_T, tail));
     SCM head = scm_list_n(kw("type"), scm_from_utf8_symbol(b.immovable ? "pillar" : "box"),
                           kw("x"), num(b.x), kw("y"), num(b.y), kw("width"), num(b.w),
                           kw("height"), num(b.h), kw("vx"), num(b.vx), kw("vy"), num(b.vy),

@@ -28,6 +28,11 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
         b.solid = sb.solid;
         b.immovable = sb.immovable;
         b.on_ground = sb.on_ground;
+        if (sb.enemy) {  // bit 1: enemy; it collides with default (bit 0) and enemy
+            b.category.bits = 2;
+            b.collides_with.bits = 3;
+        }
+        b.sensor = sb.sensor;
         out.push_back(b);
     }
     return out;

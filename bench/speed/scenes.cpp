@@ -137,6 +137,32 @@ Scene crowd(int n) {
     return s;
 }
 
+// crowd-categories: crowd with every other box an enemy (in the category
+// enemy, colliding with enemy and default). Every pair still meets, so the
+// boxes move exactly as in crowd: crowd-categories ÷ crowd, in one run, is
+// what the category test costs when half the bodies use it.
+Scene crowd_categories(int n) {
+    Scene s = crowd(n);
+    for (size_t i = 0; i < s.bodies.size(); i += 2)
+        if (!s.bodies[i].immovable) s.bodies[i].enemy = true;
+    return s;
+}
+
+// crowd-sensors: crowd with one 8×32 sensor per ten boxes, over every tenth
+// box and the ones stacked on it. crowd-sensors ÷ crowd is what n/10
+// sensors cost among n movers (1000 among 10 000).
+Scene crowd_sensors(int n) {
+    Scene s = crowd(n);
+    const size_t movers = static_cast<size_t>(n);
+    for (size_t i = 0; i < movers; i += 10) {
+        SceneBody z = box(s.bodies[i].x, s.bodies[i].y - 20, 8);
+        z.h = 32;
+        z.sensor = z.immovable = true;
+        s.bodies.push_back(z);
+    }
+    return s;
+}
+
 // rest: 8×8 gravity boxes (not solid) standing exactly on shelves of tiles,
 // on-ground, vy 0: a frame changes nothing.
 Scene rest(int n) {
@@ -264,7 +290,7 @@ void check_at_rest(const Scene& s) {
 
 const std::vector<std::string>& scene_names() {
     static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
-                                                   "ramps-flat"};
+                                                   "ramps-flat", "crowd-categories", "crowd-sensors"};
     return names;
 }
 
@@ -283,6 +309,8 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "platformer") s = platformer(n);
     else if (name == "ramps") s = ramps(n, false);
     else if (name == "ramps-flat") s = ramps(n, true);
+    else if (name == "crowd-categories") s = crowd_categories(n);
+    else if (name == "crowd-sensors") s = crowd_sensors(n);
     else throw std::invalid_argument("unknown scene " + name);
     s.name = name;
     s.n = n;

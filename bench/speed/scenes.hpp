@@ -12,6 +12,10 @@ struct SceneBody {
     int64_t x = 0, y = 0, w = 0, h = 0;  // px, exact integers
     int64_t vx = 0, vy = 0;              // px/frame
     bool gravity = false, solid = false, immovable = false, on_ground = false;
+    // Categories (semantics §13): an enemy is in the category enemy and
+    // collides with enemy and default, so it meets every solid as a body
+    // without categories does. A sensor is immovable (it never moves), not solid.
+    bool enemy = false, sensor = false;
     // The velocity the bounce update restores, with its sign flipped, on an
     // axis a collision zeroed (0: that axis does not bounce).
     int64_t rvx = 0, rvy = 0;

@@ -136,14 +136,25 @@ demos' top-level names stay in that module."
   (test-equal "falling: y after frames 0, 4, 9" '(101 115 155) (map (lambda (k) (entity-ref (p-at k) #:y)) '(0 4 9)))
   (test-equal "not on the ground while falling" #f (entity-ref (p-at 9) #:on-ground?))
   (test-equal "landed at frame 10: y 160, vy 0, on-ground" '(160 0 #t) (pick (p-at 10) #:y #:vy #:on-ground?))
-  (test-equal "events" '((10 . landed) (50 . jumped) (76 . landed) (85 . jumped) (111 . landed)
+  (test-equal "events" '((10 . landed) (42 coin coin-1) (50 . jumped) (75 coin coin-2) (76 . landed) (85 . jumped)
+                         (111 . landed) (123 coin coin-3)
                          (147 . landed) (194 . landed) (215 . bumped) (220 . jumped) (247 . landed)
+                         (287 coin coin-4)
                          (372 . jumped) (398 . landed) (420 . landed) (453 . jumped) (455 . broke)
                          (461 . landed) (576 . boarded) (675 . goal) (696 . bumped))
     (events-of platformer))
   (test-equal "sounds: a jump for each press of 'a on the ground (not the one in the air at 60), a boom for the block"
-    '((50 . jump) (85 . jump) (220 . jump) (372 . jump) (453 . jump) (455 . boom) (675 . goal))
+    '((42 . coin) (50 . jump) (75 . coin) (85 . jump) (123 . coin) (220 . jump) (287 . coin) (372 . jump)
+      (453 . jump) (455 . boom) (675 . goal))
     (game-sounds (game-of platformer)))
+  ;; The coins and the goal are sensors: entered when the frame pairs them
+  ;; with the player; coin-1 (8×8 at 100, 164) meets the 12 px player at x 91.
+  (test-equal "coin-1 is there until frame 41, gone at 42; coin-5, out of reach, stays"
+    '(#t #f #t) (list (and (by-id 'coin-1 ((ref platformer 'entities-at) 41)) #t)
+                      (and (by-id 'coin-1 ((ref platformer 'entities-at) 42)) #t)
+                      (and (by-id 'coin-5 ((ref platformer 'entities-at) 700)) #t)))
+  (test-equal "the sensors never moved the player: x 91 at frame 42, as it runs 3 px a frame from 25"
+    91 (entity-ref (p-at 42) #:x))
   ;; Jump pressed at frame 50 (on the ground): the next frame's vy = -15 + 1.
   (test-equal "frame 50: on the ground before the jump" '(160 #t) (pick (p-at 50) #:y #:on-ground?))
   (test-equal "frame 51: y 146, vy -14, in the air" '(146 -14 #f) (pick (p-at 51) #:y #:vy #:on-ground?))
@@ -315,6 +326,14 @@ demos' top-level names stay in that module."
   ;; x 98 - 2k reaches 16 at frame 41; at 42 the wall zeroes vx and the bot turns.
   (test-equal "bot-1: walking left, stopped, walking right" '((18 -2) (16 -2) (16 2) (18 2))
     (map (lambda (k) (pick (s-at k 'bot-1) #:x #:vx)) '(40 41 42 43)))
+  ;; ball-1 (bounce 1) falls 153 px = 1 + … + 17 from y 47 to the floor
+  ;; (rest y 200): it hits at 18 px a frame and rises back to y 47, where it
+  ;; is at frames 34, 70, … ball-2 (bounce 0.6) ends at rest on the floor.
+  (test-equal "ball-1 rises back to y 47 every 36 frames, exactly (until it comes down on the stub's top)"
+    '(47 47 47 47 47 47) (map (lambda (k) (entity-ref (s-at k 'ball-1) #:y)) '(34 70 106 142 178 214)))
+  (test-equal "… and touches the floor (y 200) between" '(200 200) (map (lambda (k) (entity-ref (s-at k 'ball-1) #:y)) '(16 52)))
+  (test-equal "ball-2 has come to rest on the floor" '(200.0 0 #t)
+    (pick (s-at 299 'ball-2) #:y #:vy #:on-ground?))
   (test-assert "bots stay on the floor (y 194, on-ground)"
     (every (lambda (k) (every (lambda (id) (equal? '(194 #t) (pick (s-at k id) #:y #:on-ground?))) '(bot-1 bot-2)))
            (range 0 300))))
@@ -325,7 +344,10 @@ demos' top-level names stay in that module."
 (define (kind k entities) (filter (lambda (e) (eq? (entity-ref e #:kind) k)) entities))
 
 (test-group "shmup"
-  (test-equal "engine-update: #f" #f (game-engine-update (game-of shmup)))
+  (test-equal "bullets are sensors in the category bullet that collide only with enemies"
+    '(#t bullet (enemy)) (pick (by-id 'bullet-1 (sh-at 5)) #:sensor? #:category #:collides-with))
+  (test-equal "enemies collide only with bullets" '(enemy (bullet))
+    (pick (car (kind 'enemy (sh-at 0))) #:category #:collides-with))
   (test-equal "ten enemies at the start" 10 (length (kind 'enemy (sh-at 0))))
   (test-equal "five hit, five left" 5 (length (kind 'enemy (entities-of shmup))))
   (test-equal "hits" '((23 hit enemy-1-2 by bullet-1) (55 hit enemy-1-1 by bullet-3) (63 hit enemy-0-1 by bullet-4)
