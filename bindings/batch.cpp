@@ -40,6 +40,7 @@ void reserve_cache(Batch& batch, size_t n) {
     if (scm_is_true(batch.cache)) scm_gc_unprotect_object(batch.cache);
     batch.cache = grown;
     batch.cached.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
+    batch.category_names.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
     batch.known.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
 }
 
@@ -98,12 +99,11 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f, CategoryTable* table) 
                 return false;
             }
             c = {d.places, watched_fields(d), scm_is_true(d.tween), d.body.reports_pairs(), d.categorized()};
+            if (c.categorized) batch.category_names[i] = CategoryNames::of(d.category, d.collides_with);
             batch.known[i] = d.body;
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
             batch.settling.forget(i);  // the mark was another entity's
-        } else if (c.categorized &&
-                   !categories.assign(plist_get(e, keys->key[kCategory], SCM_UNDEFINED),
-                                      plist_get(e, keys->key[kCollidesWith], SCM_UNDEFINED), batch.known[i], f)) {
+        } else if (c.categorized && !categories.assign(batch.category_names[i], e, batch.known[i], f)) {
             // Bits are this call's: a cached body is given them again.
             name_failed_entity(f, i, e);
             return false;

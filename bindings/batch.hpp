@@ -45,6 +45,7 @@ struct Batch {
     // protected while this Batch holds it, and their decodings.
     SCM cache = SCM_BOOL_F;
     std::vector<CachedEntity> cached;
+    std::vector<CategoryNames> category_names;  // by position: set for the categorized ones
     std::vector<uint8_t> hit;    // by position: taken from the cache this time (as left)
     // By position: which entities settled, under which map and options, and
     // which the frame leaves asleep (settle.hpp).

@@ -36,11 +36,24 @@ SCM entity_name(SCM entity, size_t index) {
 }
 
 SCM entity_names(SCM entities) {
-    const SCM names = scm_c_make_vector(scm_to_size_t(scm_length(entities)), SCM_BOOL_F);
+    // Entities in [0, n), their names in [n, 2n) as they are first asked
+    // for: a report names a few entities of a long list (the ones touching
+    // a sensor), and each name walks its entity's plist.
+    const size_t n = scm_to_size_t(scm_length(entities));
+    const SCM names = scm_c_make_vector(2 * n, SCM_UNDEFINED);
     size_t i = 0;
-    for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++i)
-        SCM_SIMPLE_VECTOR_SET(names, i, entity_name(SCM_CAR(p), i));
+    for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++i) SCM_SIMPLE_VECTOR_SET(names, i, SCM_CAR(p));
     return names;
+}
+
+SCM name_at(SCM names, size_t k) {
+    const size_t n = SCM_SIMPLE_VECTOR_LENGTH(names) / 2;
+    SCM name = SCM_SIMPLE_VECTOR_REF(names, n + k);
+    if (SCM_UNBNDP(name)) {
+        name = entity_name(SCM_SIMPLE_VECTOR_REF(names, k), k);
+        SCM_SIMPLE_VECTOR_SET(names, n + k, name);
+    }
+    return name;
 }
 
 SCM touching_names(const ContactIndex& index, size_t i, SCM names) {
@@ -51,13 +64,13 @@ SCM touching_names(const ContactIndex& index, size_t i, SCM names) {
     SCM list = SCM_EOL;
     while (end != at) {
         --end;
-        list = scm_cons(SCM_SIMPLE_VECTOR_REF(names, end->second), list);
+        list = scm_cons(name_at(names, end->second), list);
     }
     return list;
 }
 
 SCM standing_name(const Body& b, SCM names) {
-    return b.standing_on > 0 ? SCM_SIMPLE_VECTOR_REF(names, static_cast<size_t>(b.standing_on - 1)) : SCM_BOOL_F;
+    return b.standing_on > 0 ? name_at(names, static_cast<size_t>(b.standing_on - 1)) : SCM_BOOL_F;
 }
 
 namespace {
@@ -93,8 +106,7 @@ size_t report_edits(SCM entity, SCM touching, SCM standing, Edit* edits, size_t 
 SCM pair_names(std::span<const IndexPair> pairs, SCM names) {
     SCM list = SCM_EOL;
     for (size_t k = pairs.size(); k-- > 0;)
-        list = scm_cons(scm_cons(SCM_SIMPLE_VECTOR_REF(names, pairs[k].first),
-                                 SCM_SIMPLE_VECTOR_REF(names, pairs[k].second)),
+        list = scm_cons(scm_cons(name_at(names, pairs[k].first), name_at(names, pairs[k].second)),
                         list);
     return list;
 }

@@ -42,8 +42,11 @@ struct ContactIndex {
 // An entity's name in a report: its #:id unless absent or #f, else its
 // 0-based position in the list.
 SCM entity_name(SCM entity, size_t index);
-// The names of a list's entities, as a vector (for many look-ups).
+// The names of a list's entities, for many look-ups: a Scheme vector that
+// holds the entities and each name once it was asked for (name_at).
 SCM entity_names(SCM entities);
+// The name of entity k of entity_names' vector.
+SCM name_at(SCM names, size_t k);
 
 // The #:touching value of body i: the names of its partners, in list order.
 SCM touching_names(const ContactIndex& index, size_t i, SCM names);

@@ -112,9 +112,11 @@ bool decode(Skips, SCM key, SCM v, uint16_t& out, uint32_t, Decoded&, Failure& f
     return decode_skips(key, v, out, f);
 }
 // #:bounce (semantics §13): a finite real from 0 to 1.
-bool decode(Unit, SCM key, SCM v, Num& out, uint32_t, Decoded&, Failure& f) {
-    if (!decode_number(key, v, out, f)) return false;
-    if (out.v >= 0 && out.v <= 1) return true;
+bool decode(Unit, SCM key, SCM v, UnitNum& out, uint32_t, Decoded&, Failure& f) {
+    Num n;
+    if (!decode_number(key, v, n, f)) return false;
+    out = UnitNum::of(n);
+    if (n.v >= 0 && n.v <= 1) return true;
     fail(f, "out-of-range", scm_list_2(key, v), "entity key ~S: expected a number from 0 to 1, got ~S");
     return false;
 }

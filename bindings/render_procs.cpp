@@ -177,7 +177,7 @@ bool entity_view(SCM e, size_t index, EntityView& out, Failure& f) {
     if (!decode_entity(e, dec, f)) return false;
     const Body& b = dec.body;
     out = {b.x.v, b.y.v, b.w.v, b.h.v, b.vx.v, b.vy.v, 0, false,
-           b.solid, b.immovable, b.skips(kSkipEntityCollisions), b.on_ground};
+           b.solid, b.immovable, b.skips(kSkipEntityCollisions), b.on_ground, b.sensor};
     SCM sprite = plist_get(e, key_sprite, SCM_BOOL_F);
     if (scm_is_true(sprite) && !gid_arg(sprite, "#:sprite", out.sprite, f)) return false;
     out.flip_x = scm_is_true(plist_get(e, key_flip_x, SCM_BOOL_F));

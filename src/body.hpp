@@ -1,6 +1,8 @@
 // The physics view of one entity: plain data, decoded once from a plist and
 // compared field by field afterwards to find what a frame changed.
 #pragma once
+#include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "number.hpp"
@@ -69,12 +71,25 @@ constexpr int32_t kStandingUnknown = -2;
 // frame: bit 0 is 'default, the category of a body that names none. A body
 // that names no #:collides-with collides with every category.
 struct CategoryBit {
-    uint64_t bits = 1;
+    uint8_t index = 0;  // the bit's index, 0–63 (kMaxCategories)
+    uint64_t bits() const { return uint64_t{1} << index; }
     bool operator==(const CategoryBit&) const = default;
 };
 struct CategoryMask {
     uint64_t bits = ~uint64_t{0};
     bool operator==(const CategoryMask&) const = default;
+};
+
+// A number from 0 to 1 (#:bounce) in 8 bytes: its exactness is kept in the
+// sign bit, which such a number does not use otherwise (an exact value is
+// stored negated). Zero reads as exact either way.
+struct UnitNum {
+    double code = 0.0;
+    double value() const { return std::fabs(code); }
+    bool exact() const { return std::signbit(code) || code == 0; }
+    Num num() const { return {value(), exact()}; }
+    static UnitNum of(Num n) { return {n.exact ? -n.v : n.v}; }
+    bool operator==(const UnitNum& o) const { return std::bit_cast<uint64_t>(code) == std::bit_cast<uint64_t>(o.code); }
 };
 
 struct Body {
@@ -104,7 +119,7 @@ inline bool categories_meet(uint64_t a_category, uint64_t a_mask, uint64_t b_cat
     return (a_mask & b_category) != 0 && (b_mask & a_category) != 0;
 }
 inline bool categories_meet(const Body& a, const Body& b) {
-    return categories_meet(a.category.bits, a.collides_with.bits, b.category.bits, b.collides_with.bits);
+    return categories_meet(a.category.bits(), a.collides_with.bits, b.category.bits(), b.collides_with.bits);
 }
 
 // Whether two values of one field are the same (the comparison

@@ -16,8 +16,11 @@ inline Num rebound(Num v, Num bounce) {
     if (bounce.v == 0 || !(std::fabs(v.v) > kBounceRestSpeed)) return Num::integer(0);
     return Num{-(v.v * bounce.v), v.exact && bounce.exact};
 }
+inline Num rebound(Num v, UnitNum bounce) { return rebound(v, bounce.num()); }
 
 // A pair's bounce: the larger of the two (on a tie, the first's).
-inline Num pair_bounce(const Body& a, const Body& b) { return b.bounce.v > a.bounce.v ? b.bounce : a.bounce; }
+inline Num pair_bounce(const Body& a, const Body& b) {
+    return b.bounce.value() > a.bounce.value() ? b.bounce.num() : a.bounce.num();
+}
 
 }  // namespace ds

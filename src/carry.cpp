@@ -27,7 +27,7 @@ using TileStep = bool (*)(Body&, const TileGrid*, CollisionMode, SubStep);
 bool carry_along(Body& b, Num d, AxisOf axis, TileStep resolve, const TileGrid* grid, CollisionMode mode) {
     if (d.v == 0) return false;
     Body moved = b;
-    moved.bounce = Num::integer(0);  // a stop is read from the velocity it zeroes
+    moved.bounce = {};  // a stop is read from the velocity it zeroes
     BodyAxis m = axis(moved);
     m.pos = axis(b).pos + d;
     m.vel = d;

@@ -28,8 +28,8 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
         b.solid = sb.solid;
         b.immovable = sb.immovable;
         b.on_ground = sb.on_ground;
-        if (sb.enemy) {  // bit 1: enemy; it collides with default (bit 0) and enemy
-            b.category.bits = 2;
+        if (sb.enemy) {  // index 1: enemy; it collides with default (bit 0) and enemy (bit 1)
+            b.category.index = 1;
             b.collides_with.bits = 3;
         }
         b.sensor = sb.sensor;

@@ -17,10 +17,10 @@ struct Supporter {
 
     // Only for a body that collides (Body::collides): others hold nobody up.
     static Supporter of(const Body& b) {
-        return {b.x.v, b.y.v, b.w.v, b.vy.v, b.id, b.category.bits, b.collides_with.bits, b.one_way};
+        return {b.x.v, b.y.v, b.w.v, b.vy.v, b.id, b.category.bits(), b.collides_with.bits, b.one_way};
     }
     bool meets(const Body& b) const {
-        return categories_meet(category, collides_with, b.category.bits, b.collides_with.bits);
+        return categories_meet(category, collides_with, b.category.bits(), b.collides_with.bits);
     }
 };
 

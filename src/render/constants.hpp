@@ -43,6 +43,7 @@ constexpr Rgba kImmovableColor{80, 150, 255, 255};  // solid and never pushed
 constexpr Rgba kGhostColor{200, 110, 230, 255};     // solid but skips entity collisions
 constexpr Rgba kPlainColor{170, 170, 170, 255};     // not solid: moves through entities
 constexpr Rgba kRestingColor{250, 210, 70, 255};    // on the ground and not moving
+constexpr Rgba kSensorColor{90, 225, 225, 255};     // a sensor: notices overlaps, pushes nothing
 constexpr uint8_t kBoxFillAlpha = 64;               // the fill behind a box's outline
 
 // A cell whose gid no tileset holds: magenta, the colour no tileset uses

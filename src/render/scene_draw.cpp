@@ -11,6 +11,7 @@ namespace ds::render {
 namespace {
 
 Rgba role_color(const EntityView& e) {
+    if (e.sensor) return kSensorColor;
     if (e.immovable && e.solid) return kImmovableColor;
     if (e.solid && e.ghost) return kGhostColor;
     if (e.on_ground && e.vx == 0 && e.vy == 0) return kRestingColor;
@@ -88,7 +89,7 @@ std::pair<int, int> centre(const EntityView& e, int64_t cx, int64_t cy) {
 void draw_legend(Canvas& c) {
     const std::pair<const char*, Rgba> roles[] = {{"solid", kSolidColor},   {"immovable", kImmovableColor},
                                                   {"ghost", kGhostColor},   {"plain", kPlainColor},
-                                                  {"resting", kRestingColor}};
+                                                  {"resting", kRestingColor}, {"sensor", kSensorColor}};
     // Along the bottom edge, where a HUD is least often drawn, on a dark
     // plate so it reads over the ground.
     int x = 2;

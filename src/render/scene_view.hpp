@@ -20,6 +20,7 @@ struct EntityView {
     uint32_t sprite = 0;  // a raw gid of the map's tilesets; 0: draw a box
     bool flip_x = false;
     bool solid = false, immovable = false, ghost = false, on_ground = false;
+    bool sensor = false;
 };
 
 // One entity's centres over the remembered frames, oldest first.

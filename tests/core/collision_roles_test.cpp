@@ -19,10 +19,12 @@ using ds::World;
 
 namespace {
 
-constexpr uint64_t kDefault = 1, kPlayer = 2, kEnemy = 4, kWall = 8;
+// Category indices and their bits.
+constexpr uint8_t kDefault = 0, kPlayer = 1, kEnemy = 2, kWall = 3;
+constexpr uint64_t bit(uint8_t index) { return uint64_t{1} << index; }
 
-Body in(Body b, uint64_t category, uint64_t mask = ~uint64_t{0}) {
-    b.category.bits = category;
+Body in(Body b, uint8_t category, uint64_t mask = ~uint64_t{0}) {
+    b.category.index = category;
     b.collides_with.bits = mask;
     return b;
 }
@@ -44,16 +46,16 @@ TEST_SUITE("collision-roles") {
 
 TEST_CASE("categories meet when each one's mask names the other's category") {
     CHECK(ds::categories_meet(solid_box(0, 0, 1, 1), solid_box(0, 0, 1, 1)));  // default, all
-    CHECK(ds::categories_meet(in(box(0, 0, 1, 1), kPlayer), in(box(0, 0, 1, 1), kEnemy, kPlayer)));
-    CHECK_FALSE(ds::categories_meet(in(box(0, 0, 1, 1), kEnemy, kPlayer), in(box(0, 0, 1, 1), kEnemy, kPlayer)));
+    CHECK(ds::categories_meet(in(box(0, 0, 1, 1), kPlayer), in(box(0, 0, 1, 1), kEnemy, bit(kPlayer))));
+    CHECK_FALSE(ds::categories_meet(in(box(0, 0, 1, 1), kEnemy, bit(kPlayer)), in(box(0, 0, 1, 1), kEnemy, bit(kPlayer))));
     CHECK_FALSE(ds::categories_meet(in(box(0, 0, 1, 1), kPlayer), in(box(0, 0, 1, 1), kDefault, 0)));
-    CHECK_FALSE(ds::collision_eligible(in(solid_box(0, 0, 10, 10), kEnemy, kPlayer),
-                                       in(solid_box(5, 0, 10, 10), kEnemy, kPlayer)));
+    CHECK_FALSE(ds::collision_eligible(in(solid_box(0, 0, 10, 10), kEnemy, bit(kPlayer)),
+                                       in(solid_box(5, 0, 10, 10), kEnemy, bit(kPlayer))));
 }
 
 TEST_CASE("push-apart leaves alone the pairs whose categories do not meet") {
-    std::vector<Body> v = {in(solid_box(0, 0, 10, 10), kEnemy, kPlayer | kWall),
-                           in(solid_box(5, 0, 10, 10), kEnemy, kPlayer | kWall),
+    std::vector<Body> v = {in(solid_box(0, 0, 10, 10), kEnemy, bit(kPlayer) | bit(kWall)),
+                           in(solid_box(5, 0, 10, 10), kEnemy, bit(kPlayer) | bit(kWall)),
                            in(solid_box(12, 0, 10, 10), kPlayer)};
     ds::resolve_entity_collisions(v);
     CHECK_EXACT(v[0].x, 0);   // the two enemies overlap still
@@ -90,10 +92,10 @@ TEST_CASE("the grid pass equals the all-pairs pass with categories, sensors and 
             b.vx = I(pick(9) - 4);
             b.vy = I(pick(9) - 4);
             b.immovable = pick(8) == 0;
-            b.category.bits = uint64_t{1} << pick(4);
+            b.category.index = static_cast<uint8_t>(pick(4));
             if (pick(3) == 0) b.collides_with.bits = static_cast<uint64_t>(pick(16));
             b.sensor = pick(10) == 0;
-            if (pick(4) == 0) b.bounce = pick(2) ? I(1) : F(0.5);
+            if (pick(4) == 0) b.bounce = ds::UnitNum::of(pick(2) ? I(1) : F(0.5));
             a.push_back(b);
         }
         std::vector<Body> b = a;
@@ -110,7 +112,7 @@ TEST_CASE("the grid pass equals the all-pairs pass with categories, sensors and 
 }
 
 TEST_CASE("ground: a supporter holds up only the bodies it meets") {
-    const std::vector<Body> scene = {in(wall_box(0, 20, 40, 10), kWall, kPlayer | kEnemy)};
+    const std::vector<Body> scene = {in(wall_box(0, 20, 40, 10), kWall, bit(kPlayer) | bit(kEnemy))};
     Body player = in(box(5, 10, 10, 10), kPlayer);
     player.gravity = true;
     CHECK(ds::detect_on_solid(player, scene, -1, nullptr));
@@ -125,6 +127,14 @@ TEST_CASE("ground: a supporter holds up only the bodies it meets") {
     const std::vector<Body> pad = {sensor(wall_box(0, 20, 40, 10))};
     ds::detect_on_solid(rider, pad, -1, nullptr);
     CHECK_FALSE(rider.on_ground);
+}
+
+TEST_CASE("UnitNum keeps a bounce's value and exactness in 8 bytes") {
+    static_assert(sizeof(ds::UnitNum) == 8);
+    CHECK_EXACT(ds::UnitNum::of(I(1)).num(), 1);
+    CHECK_FLONUM(ds::UnitNum::of(F(1)).num(), 1);
+    CHECK_FLONUM(ds::UnitNum::of(F(0.25)).num(), 0.25);
+    CHECK_EXACT(ds::UnitNum{}.num(), 0);
 }
 
 TEST_CASE("rebound: −v·bounce, exact when both are, 0 at rest speed or below") {
@@ -142,13 +152,13 @@ TEST_CASE("a tile stop rebounds; a carried move does not") {
     const auto g = grid({"....", "....", "....", "####"});
     Body b = box(0, 44, 8, 8);  // feet at 52: 4 into the floor
     b.vy = I(8);
-    b.bounce = I(1);
+    b.bounce = ds::UnitNum::of(I(1));
     CHECK(ds::resolve_tile_collisions_y(b, &g, ds::CollisionMode::Swept));
     CHECK_EXACT(b.y, 40);
     CHECK_EXACT(b.vy, -8);
     Body carried = box(0, 44, 8, 8);
     carried.vy = I(8);
-    carried.bounce = I(1);
+    carried.bounce = ds::UnitNum::of(I(1));
     ds::SubStep s;
     s.carried = true;
     ds::resolve_tile_collisions_y(carried, &g, ds::CollisionMode::Swept, s);
@@ -162,7 +172,7 @@ TEST_CASE("bounce 1 on a floor: the same 18-frame bounce for ever, in a Frame") 
     w.grid = &g;
     Body ball = box(0, 100, 8, 8);
     ball.gravity = true;
-    ball.bounce = I(1);
+    ball.bounce = ds::UnitNum::of(I(1));
     w.bodies = {ball};
     ds::Frame f;
     std::vector<double> ys;

@@ -50,7 +50,7 @@ inline bool same_body(const Body& a, const Body& b) {
            a.on_ground == b.on_ground && a.solid == b.solid && a.immovable == b.immovable &&
            a.group_origin == b.group_origin && a.skip == b.skip && a.id == b.id &&
            a.group == b.group && a.category == b.category && a.collides_with == b.collides_with &&
-           a.sensor == b.sensor && ds::same(a.bounce, b.bounce);
+           a.sensor == b.sensor && a.bounce == b.bounce;
 }
 
 // A grid drawn as text: one string per row, '#' solid, anything else empty.

@@ -198,19 +198,20 @@ TEST_CASE("a sprite stands bottom-centred in its entity's box, flip-x mirrors it
 }
 
 TEST_CASE("an entity with no sprite is a box coloured by its role") {
-    std::vector<EntityView> es(5);
+    std::vector<EntityView> es(6);
     es[0] = {.x = 0, .y = 0, .w = 4, .h = 4, .vx = 1, .solid = true};
     es[1] = {.x = 5, .y = 0, .w = 4, .h = 4, .solid = true, .immovable = true};
     es[2] = {.x = 10, .y = 0, .w = 4, .h = 4, .solid = true, .ghost = true};
     es[3] = {.x = 15, .y = 0, .w = 4, .h = 4};
     es[4] = {.x = 20, .y = 0, .w = 4, .h = 4, .solid = true, .on_ground = true};
-    Canvas c(25, 4);
+    es[5] = {.x = 25, .y = 0, .w = 4, .h = 4, .solid = true, .immovable = true, .sensor = true};
+    Canvas c(30, 4);
     TileArt art;
     SceneView v;
     v.entities = es;
     draw_scene(c, art, v);
-    const Rgba roles[] = {kSolidColor, kImmovableColor, kGhostColor, kPlainColor, kRestingColor};
-    for (int i = 0; i < 5; ++i) {
+    const Rgba roles[] = {kSolidColor, kImmovableColor, kGhostColor, kPlainColor, kRestingColor, kSensorColor};
+    for (int i = 0; i < 6; ++i) {
         CAPTURE(i);
         CHECK(c.pixel(i * 5, 0) == roles[i]);  // the outline
         CHECK(c.pixel(i * 5 + 3, 3) == roles[i]);

@@ -130,6 +130,42 @@
 (test-equal "a long proper #:skip-pipelines without gravity still falls" 1
   (entity-ref (apply-gravity (list #:gravity? #t #:vy 0 #:skip-pipelines (make-list 100 'jump)) #f 16) #:vy))
 
+;;; ---------------------------------------------------------------- categories, sensors, bounce (§13)
+(test-assert "step-scene, circular #:collides-with"
+  (refused? 'wrong-type-arg
+            (lambda () (step-scene (make-scene entities: (list (list #:x 0 #:solid? #t #:collides-with (circular 'a 'b)))) 16))
+            "step-scene" "#:collides-with" "circular list"))
+(test-assert "detect-on-solid, a scene entity's circular #:collides-with"
+  (refused? 'wrong-type-arg
+            (lambda () (detect-on-solid (list #:gravity? #t)
+                                        (make-scene entities: (list (list #:x 0 #:collides-with (lasso '(a) 'b))))
+                                        16))
+            "detect-on-solid" "#:collides-with"))
+(test-assert "step-scene, #:category a string"
+  (refused? 'wrong-type-arg (lambda () (step-scene (make-scene entities: (list (list #:x 0 #:category "enemy"))) 16))
+            "step-scene" "#:category" "enemy"))
+(test-assert "step-scene, #:bounce NaN"
+  (refused? 'wrong-type-arg (lambda () (step-scene (make-scene entities: (list (list #:x 0 #:bounce +nan.0))) 16))
+            "step-scene" "#:bounce"))
+(test-assert "step-scene, #:bounce +inf.0"
+  (refused? 'wrong-type-arg (lambda () (step-scene (make-scene entities: (list (list #:x 0 #:bounce +inf.0))) 16))
+            "step-scene" "#:bounce"))
+(test-assert "step-scene, #:bounce 1.5"
+  (refused? 'out-of-range (lambda () (step-scene (make-scene entities: (list (list #:x 0 #:bounce 1.5))) 16))
+            "step-scene" "#:bounce" "1.5"))
+(test-assert "resolve-entity-collisions, 65 categories in one call"
+  (refused? 'out-of-range
+            (lambda () (resolve-entity-collisions
+                        (map (lambda (i) (list #:x 0 #:solid? #t #:collides-with (list (string->symbol (format #f "k~a" i)))))
+                             (iota 65))))
+            "resolve-entity-collisions" "#:collides-with" "k63"))
+(let* ((ok (list #:x 0 #:solid? #t #:category 'a))
+       (bad (list #:x 5 #:solid? #t #:bounce 7))
+       (scene (make-scene entities: (list ok bad))))
+  (test-assert "a refused frame leaves the scene as it was" 
+    (and (refusal (lambda () (step-scene scene 16)))
+         (eq? ok (car (scene-entities scene))) (equal? '(#:x 0 #:solid? #t #:category a) ok))))
+
 ;;; ---------------------------------------------------------------- circular ids
 ;; Ids are compared with equal?, which never ends on two circular lists: the
 ;; second of two entities with such ids used to hang the decoder (found by
