@@ -256,7 +256,11 @@ size_t entity_edits(const Batch& batch, size_t i, SCM entity, SCM names, Edit* e
 
 // The names a call's contact report uses, or #f when it writes no report.
 SCM report_names(SCM entities, const Batch& batch) {
-    return batch.reports != 0 && batch.contact_bodies != 0 ? entity_names(entities) : SCM_BOOL_F;
+    if (batch.reports == 0 || batch.contact_bodies == 0) return SCM_BOOL_F;
+    thread_local std::vector<int64_t> ids;
+    ids.clear();
+    for (const Body& b : batch.bodies) ids.push_back(b.id);
+    return entity_names(entities, ids);
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ SCM entity_name(SCM entity, size_t index) {
     return scm_is_true(id) ? id : scm_from_size_t(index);
 }
 
-SCM entity_names(SCM entities) {
+SCM entity_names(SCM entities, std::span<const int64_t> ids) {
     // Entities in [0, n), their names in [n, 2n) as they are first asked
     // for: a report names a few entities of a long list (the ones touching
     // a sensor), and each name walks its entity's plist.
@@ -43,6 +43,11 @@ SCM entity_names(SCM entities) {
     const SCM names = scm_c_make_vector(2 * n, SCM_UNDEFINED);
     size_t i = 0;
     for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++i) SCM_SIMPLE_VECTOR_SET(names, i, SCM_CAR(p));
+    // An even tag is 0 (no id, or #f) or the id's own bits, which its plist
+    // keeps alive; an odd one is an interned value's number (plist.hpp).
+    for (size_t k = 0; k < ids.size() && k < n; ++k)
+        if ((ids[k] & 1) == 0)
+            SCM_SIMPLE_VECTOR_SET(names, n + k, ids[k] == 0 ? scm_from_size_t(k) : SCM_PACK(static_cast<scm_t_bits>(ids[k])));
     return names;
 }
 

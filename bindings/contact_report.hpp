@@ -43,8 +43,11 @@ struct ContactIndex {
 // 0-based position in the list.
 SCM entity_name(SCM entity, size_t index);
 // The names of a list's entities, for many look-ups: a Scheme vector that
-// holds the entities and each name once it was asked for (name_at).
-SCM entity_names(SCM entities);
+// holds the entities and each name once it was asked for (name_at). With
+// `ids` (the bodies' #:id tags, identity_tag), the names of entities without
+// an id or with a symbol or immediate one are known without reading their
+// plists (the tag is 0, or the id's own bits).
+SCM entity_names(SCM entities, std::span<const int64_t> ids = {});
 // The name of entity k of entity_names' vector.
 SCM name_at(SCM names, size_t k);
 

@@ -67,6 +67,7 @@ struct PhaseTimer {
 // (semantics §10), by index into the list it returned: %frame-contacts
 // names them.
 thread_local std::vector<IndexPair> last_pairs;
+thread_local std::vector<int64_t> last_ids;  // the bodies' #:id tags, for naming them
 
 // After the frame: what push-apart logged, when some entity reports contacts.
 void gather_contacts(Batch& batch) {
@@ -74,6 +75,8 @@ void gather_contacts(Batch& batch) {
     batch.contacts.gather(batch.frame.contact_pairs(), batch.bodies);
     batch.reports = kReportsTouching | kReportsStanding;
     last_pairs = batch.contacts.pairs;
+    last_ids.clear();
+    for (const Body& b : batch.bodies) last_ids.push_back(b.id);
 }
 
 }  // namespace
@@ -166,7 +169,7 @@ SCM frame_contacts(SCM entities) {
         fail(f, "wrong-type-arg", scm_list_1(entities), "expected the entity list the frame returned, got ~S");
         raise(f);
     }
-    return pair_names(last_pairs, entity_names(entities));
+    return pair_names(last_pairs, entity_names(entities, last_ids));
 }
 
 SCM step_stats(const char* name, const StepStats& s) {
