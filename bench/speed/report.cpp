@@ -195,6 +195,15 @@ each body goes through the same motion whatever N is.
   a solid immovable 16×32 pillar after every 16 stacks. Every frame gravity
   makes each stack overlap and the sequential push-apart resolves it: the
   entity–entity work, and ground detection on solid entities.
+- crowd-categories :: crowd with every other box in the category enemy,
+  which collides with enemy and default (semantics §13): every pair still
+  meets, so the boxes move exactly as in crowd; crowd-categories ÷ crowd is
+  what the category test costs. (Box2D: filter category and mask bits.)
+- crowd-sensors :: crowd with one 8×32 sensor per ten boxes, over every
+  tenth box and those stacked on it (1000 sensors among 10 000 movers);
+  each frame the sensors' pairs are found and, on the Scheme paths, named
+  in scene-contacts. crowd-sensors ÷ crowd is what the sensors cost.
+  (Box2D: static sensor fixtures.)
 - rest :: N gravity boxes (not solid) standing exactly on shelves of tiles,
   on-ground, vy 0: a frame changes nothing (checked natively when the scene
   is built). The cost of a frame in which nothing happens.
