@@ -16,7 +16,8 @@ constexpr const char* kStandIns[] = {
     "%display-stats",     "%display-save-png",        "%display-pixel",         "%display-clear-commands!",
     "%draw-rect!",        "%draw-line!",              "%draw-sprite!",          "%draw-text!",
     "%display-set-input-map!", "%display-poll!",      "%open-audio!",           "%load-sound",
-    "%play-sound",        "%note-pushed-pairs!"};
+    "%play-sound",        "%note-pushed-pairs!",      "%load-music",            "%play-music",
+    "%stop-music",        "%set-volume!"};
 
 // One function per name (I), as each registered function has one name.
 template <size_t I>

@@ -482,6 +482,8 @@ std::unique_ptr<SoundBank> bank;  // one per process: there is one audio device
 // What was loaded under each name, so a bank reopened on the real device
 // (a window opening after the script loaded its sounds) has them all again.
 std::unordered_map<std::string, std::string> sound_files;
+std::unordered_map<std::string, std::string> music_files;  // likewise for music
+double music_volume = 1, sound_volume = 1;                  // and the volumes set
 
 SCM open_audio(SCM audible) {
     Failure f{"load-sound"};
@@ -490,6 +492,9 @@ SCM open_audio(SCM audible) {
             bank.reset();
             bank = std::make_unique<SoundBank>(scm_is_true(audible));
             for (const auto& [name, path] : sound_files) bank->load(name, path);
+            for (const auto& [name, path] : music_files) bank->load_music(name, path);
+            bank->set_music_volume(music_volume);
+            bank->set_sound_volume(sound_volume);
         }
     });
     if (f) raise(f);
@@ -518,6 +523,56 @@ SCM play_sound(SCM name) {
     });
     if (f) raise(f);
     return scm_from_bool(known);
+}
+
+SCM load_music(SCM name, SCM path) {
+    Failure f{"load-music"};
+    std::string n, p;
+    guarded(f, nullptr, [&] {
+        if (!symbol_arg(name, "name", n, f) || !from_scm(path, p, "file", f)) return;
+        if (!bank) bank = std::make_unique<SoundBank>(false);
+        bank->load_music(n, p);
+        music_files[n] = p;
+    });
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+// Milliseconds of a fade: the engine has checked them (a real from 0 to
+// kMaxFadeMs); here they are rounded to SDL_mixer's int.
+int fade_ms(SCM ms) { return int(std::lround(scm_to_double(ms))); }
+
+SCM play_music(SCM name, SCM loop, SCM fade_in) {
+    Failure f{"play-music"};
+    std::string n;
+    bool known = false;
+    guarded(f, nullptr, [&] {
+        if (symbol_arg(name, "name", n, f)) known = bank && bank->play_music(n, scm_is_true(loop), fade_ms(fade_in));
+    });
+    if (f) raise(f);
+    return scm_from_bool(known);
+}
+
+SCM stop_music(SCM fade_out) {
+    Failure f{"stop-music"};
+    guarded(f, nullptr, [&] {
+        if (bank) bank->stop_music(fade_ms(fade_out));
+    });
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
+}
+
+// Volumes (checked by the engine: reals from 0 to 1), kept for a reopened bank.
+SCM set_volume(SCM which, SCM volume) {
+    Failure f{"music-volume-set!"};
+    const double v = scm_to_double(volume);
+    const bool music = scm_is_eq(which, scm_from_utf8_symbol("music"));
+    (music ? music_volume : sound_volume) = v;
+    guarded(f, nullptr, [&] {
+        if (bank) music ? bank->set_music_volume(v) : bank->set_sound_volume(v);
+    });
+    if (f) raise(f);
+    return SCM_UNSPECIFIED;
 }
 
 // ---------------------------------------------------------------- pushed pairs
@@ -558,6 +613,10 @@ void register_render_procedures() {
     define_procedure<7, 0, 0, draw_text>("%draw-text!",
         WrapperDoc{"(display text x y color scale space)", "draw-text", render});
     define_procedure<2, 0, 0, load_sound>("%load-sound", WrapperDoc{"(name file)", "load-sound", render});
+    define_procedure<2, 0, 0, load_music>("%load-music", WrapperDoc{"(name file)", "load-music", render});
+    define_procedure<3, 0, 0, play_music>("%play-music", WrapperDoc{"(name loop? fade-in-ms)", "play-music", engine});
+    define_procedure<1, 0, 0, stop_music>("%stop-music", WrapperDoc{"(fade-out-ms)", "stop-music", engine});
+    define_procedure<2, 0, 0, set_volume>("%set-volume!", WrapperDoc{"(which volume)", "music-volume-set!", engine});
     define_procedure<1, 0, 0, display_stats>("%display-stats",
         WrapperDoc{"(display) → (render drawn culled ms)", "engine-stats", engine});
     define_procedure<3, 0, 0, display_pixel>("%display-pixel", WrapperDoc{"(display x y)", "game-pixel", engine});

@@ -5,6 +5,15 @@
   "The gid of sprites.tsx's tile LOCAL-ID (demo/maps/make_art.py lists them)."
   (+ 5 local-id))
 
+(define (load-demo-music!)
+  "Load demo/sounds/theme.ogg (made by make_music.py there) as the music
+'theme. Headless runs only record what play-music plays (game-music)."
+  (load-music 'theme (string-append demo-dir "/sounds/theme.ogg")))
+
+(define (theme-from-the-start game)
+  "Start the theme, looping, on GAME's first frame (call it from update:)."
+  (when (= (game-frame game) 0) (play-music 'theme)))
+
 (define (load-demo-sounds! . names)
   "Load demo/sounds/NAME.wav as the sound NAME, for each NAME. Headless runs
 only record what play-sound plays (game-sounds)."

@@ -50,6 +50,7 @@
 (define breakable-gid 22)               ; level-tiles.tsx's tile 1 (make_maps.py)
 
 (load-demo-sounds! 'jump 'goal 'boom 'coin)
+(load-demo-music!)
 
 (define (map-object name)
   (or (find (lambda (o) (equal? (entity-ref o #:name) name)) (tilemap-objects level))
@@ -190,6 +191,7 @@ removed, and how many there were."
         (cons tiles 0) cells))
 
 (define (update game dt)
+  (theme-from-the-start game)
   (if (input-pressed? (game-input game) 'start)
       (restart! game)
       (play! game dt)))

@@ -36,6 +36,7 @@
 
 ;;; ------------------------------------------------------------ looks
 (include "looks.scm")
+(load-demo-music!)
 (define walker-picture (sprite 3))
 (define walker-step-picture (sprite 4))
 (define crate-picture (sprite 9))
@@ -195,6 +196,7 @@ it walks left."
              (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene)))))))))
 
 (define (update game dt)
+  (theme-from-the-start game)
   ;; The default engine-update has moved everything; now the game's own logic.
   (watch-boxes! game)
   (game-scene-set! game (scene-map-entities (game-scene game) (bot-logic game) (raft-logic game)))

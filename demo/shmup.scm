@@ -40,6 +40,7 @@
 (define explosion-picture (sprite 15))
 
 (load-demo-sounds! 'shot 'boom)
+(load-demo-music!)
 
 (define screen-width 320)
 (define screen-height 240)
@@ -109,6 +110,7 @@
   (game-scene-set! game (update-scene (game-scene game) entities: (cons ship0 enemies0))))
 
 (define (update game dt)
+  (theme-from-the-start game)
   (set! explosions (filter (lambda (x) (> (caddr x) (game-frame game))) explosions))
   (if (input-pressed? (game-input game) 'start)
       (restart! game)

@@ -33,6 +33,7 @@
 (define guard-pictures (vector (sprite 3) (sprite 4)))
 
 (load-demo-sounds! 'coin)
+(load-demo-music!)
 
 ;;; Map objects → entities. Object ids are Tiled's numbers; the game names
 ;;; entities by symbols instead.
@@ -113,6 +114,7 @@
                                       entities: (cons (dress player0 0 0 0) (append coins0 (list guard0))))))
 
 (define (update game dt)
+  (theme-from-the-start game)
   (if (input-pressed? (game-input game) 'start)
       (restart! game)
       (play! game dt)))

@@ -45,6 +45,7 @@
 (define burst-picture (sprite 15))
 
 (load-demo-sounds! 'hit)
+(load-demo-music!)
 
 ;;; ------------------------------------------------------------ bookkeeping
 (define demo-script "tweens.scm")
@@ -114,6 +115,7 @@
                              walker-step-picture)))
 
 (define (update game dt)
+  (theme-from-the-start game)
   (if (input-pressed? (game-input game) 'start)
       ;; Return in a window: every tween from the start again.
       (game-scene-set! game (update-scene (game-scene game) entities: entities0))

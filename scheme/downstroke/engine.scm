@@ -15,13 +15,15 @@
                           %display-set-background!
                           %display-clear-commands! %display-set-input-map! %display-poll!
                           %display-open-window! %display-close-window! %open-audio!
-                          %play-sound %note-pushed-pairs! %max-substeps))
+                          %play-sound %play-music %stop-music %set-volume!
+                          %note-pushed-pairs! %max-substeps))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
             game-substeps game-substeps-set! game-resting-contacts? game-resting-contacts-set!
             game-update game-update-set! game-engine-update game-engine-update-set!
             input-pressed? input-held? input-released? play-sound
+            play-music stop-music music-volume-set! sound-volume-set! game-music
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
             frame-pacing hook-error-reporter main-script? script-number-argument engine-stats
@@ -48,7 +50,7 @@
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
-              input input-script frame sounds history-size history
+              input input-script frame sounds music history-size history
               display debug-draw input-log stack-limit)
   game?
   (title game-title)
@@ -66,6 +68,7 @@
   (input-script game-input-script game-input-script-set!)
   (frame game-frame game-frame-set!)
   (sounds game-sound-log game-sound-log-set!)  ; (count . ((frame . name) …)), newest first
+  (music game-music-log game-music-log-set!)   ; a bounded log of (frame . event), newest first
   (history-size game-history-size)
   (history game-history-log game-history-log-set!)  ; a bounded log of (frame . scene)
   (display game-display)            ; the renderer's, or #f in a build without it
@@ -191,7 +194,8 @@ raises stack-overflow naming itself (64 MiB by default)."
       (%display-set-background! display background))
     (let ((game (%make-game title width height frame-delay scene update render engine-update
                             collision-mode substeps (and resting-contacts? #t)
-                            (make-input '() '()) input-script 0 (make-bounded-log) history (make-bounded-log)
+                            (make-input '() '()) input-script 0 (make-bounded-log) (make-bounded-log)
+                            history (make-bounded-log)
                             display #f (make-bounded-log) stack-limit)))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       game)))
@@ -329,6 +333,59 @@ game-sounds) and, when a window is open and load-sound loaded it, heard."
                                                   (cons (game-frame game) name) *sounds-kept*)))
     ;; Heard only with a window open; a sound never loaded is only recorded.
     (when (and (symbol? name) (renderer-available?)) (%play-sound name))))
+
+(define (game-music game)
+  "The music events lately, oldest first, as (frame . event): (play NAME
+LOOP? FADE-IN-MS), (stop FADE-OUT-MS), (music-volume V) and (sound-volume
+V). Recorded headless as in a window, so a test sees what a player would
+hear; at least the newest 4096 are kept."
+  (reverse (bounded-log-items (game-music-log game))))
+
+(define (note-music! event)
+  (let ((game (current-game)))
+    (when game
+      (game-music-log-set! game (bounded-log-push (game-music-log game)
+                                                  (cons (game-frame game) event) *sounds-kept*)))))
+
+;; A fade longer than ten minutes is a typo (seconds for milliseconds, say).
+(define *max-fade-ms* 600000)
+
+(define (check-fade who what ms)
+  (unless (and (real? ms) (not (nan? ms)) (<= 0 ms *max-fade-ms*))
+    (scm-error 'wrong-type-arg who "~A: expected a number of ms from 0 to ~A, got ~S"
+               (list what *max-fade-ms* ms) #f)))
+
+(define (check-volume who v)
+  (unless (and (real? v) (not (nan? v)) (<= 0 v 1))
+    (scm-error 'wrong-type-arg who "volume: expected a number from 0 to 1, got ~S" (list v) #f)))
+
+(define* (play-music name #:key (loop? #t) (fade-in 0))
+  "Play the music NAME (load-music), in place of any playing: looping unless
+LOOP? is #f, fading in over FADE-IN ms. Recorded in game-music; heard when
+a window is open. #f when no music of that name was loaded."
+  (unless (symbol? name)
+    (scm-error 'wrong-type-arg "play-music" "name: expected a symbol, got ~S" (list name) #f))
+  (check-fade "play-music" "fade-in" fade-in)
+  (note-music! (list 'play name (and loop? #t) fade-in))
+  (and (renderer-available?) (%play-music name (and loop? #t) fade-in)))
+
+(define* (stop-music #:key (fade-out 0))
+  "Stop the music, fading out over FADE-OUT ms."
+  (check-fade "stop-music" "fade-out" fade-out)
+  (note-music! (list 'stop fade-out))
+  (when (renderer-available?) (%stop-music fade-out)))
+
+(define (music-volume-set! v)
+  "The music's volume, from 0 (silent) to 1 (as recorded, the default)."
+  (check-volume "music-volume-set!" v)
+  (note-music! (list 'music-volume v))
+  (when (renderer-available?) (%set-volume! 'music v)))
+
+(define (sound-volume-set! v)
+  "Every sound's volume, from 0 (silent) to 1 (as recorded, the default)."
+  (check-volume "sound-volume-set!" v)
+  (note-music! (list 'sound-volume v))
+  (when (renderer-available?) (%set-volume! 'sound v)))
 
 (define current-game (make-parameter #f))
 

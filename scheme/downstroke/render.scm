@@ -5,7 +5,7 @@
   #:export (renderer-available? display-mode capture-directory window-scale debug-draw-default
             current-display default-input-map
             draw-rect draw-line draw-sprite draw-text draw-label text-width
-            color-rgba load-sound))
+            color-rgba load-sound load-music))
 
 (define (renderer-available?)
   "Whether this build can draw (it was built with SDL2)."
@@ -92,6 +92,23 @@ to 'screen (a HUD); the plate reaches 2 px beyond the text on every side."
                (+ (* 9 scale (- lines 1)) (* 7 scale) 4) label-plate #:fill? #t #:space space)
     (draw-text text (+ x scale) (+ y scale) label-shadow #:scale scale #:space space)
     (draw-text text x y color #:scale scale #:space space)))
+
+;;; A file a build without the renderer can only check is there.
+(define (check-sound-file who what name file)
+  (cond ((not (symbol? name))
+         (scm-error 'wrong-type-arg who "name: expected a symbol, got ~S" (list name) #f))
+        ((not (and (string? file) (file-exists? file) (eq? 'regular (stat:type (stat file)))))
+         (scm-error 'misc-error who (string-append what " ~S: no such file") (list file) #f))))
+
+(define (load-music name file)
+  "Open FILE (OGG or WAV, MP3 where SDL_mixer reads it) as the music NAME, a
+symbol, for play-music. Music is streamed from the file while it plays, so
+a long track costs no memory up front. Headless runs open it too (a missing
+or unreadable file, or a WAV or OGG whose header is broken, is an error
+naming it at once) but play nothing."
+  (if (renderer-available?)
+      (%load-music name file)
+      (check-sound-file "load-music" "music" name file)))
 
 (define (load-sound name file)
   "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.

@@ -3,7 +3,10 @@
 #include <SDL.h>
 #include <SDL_mixer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -99,6 +102,30 @@ std::string too_big_or_lying(const std::string& path, std::vector<uint8_t>& head
     return "";
 }
 
+// Why the music file at `path` cannot be streamed, or "": a WAV or an Ogg
+// (by its magic) must have a sound header, though not a short one; other
+// formats (MP3 …) are left to SDL_mixer, which names its own reason.
+std::string bad_music_header(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(path, ec);
+    if (!in || ec) return "cannot be read";
+    std::vector<uint8_t> head(std::min<uint64_t>(size, kSoundHeaderBytes));
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    std::vector<uint8_t> tail(std::min<uint64_t>(size, kSoundTailBytes));
+    in.seekg(std::streamoff(size - tail.size()));
+    in.read(reinterpret_cast<char*>(tail.data()), std::streamsize(tail.size()));
+    if (!in) return "reading it failed";
+    auto magic = [&](const char* m) { return head.size() >= 4 && std::memcmp(head.data(), m, 4) == 0; };
+    if (!magic("RIFF") && !magic("OggS")) return "";
+    SoundHeader h;
+    std::string why;
+    return read_sound_header(head, tail, size, h, why) ? "" : why;
+}
+
+// Mix_VolumeMusic's and Mix_Volume's scale from a volume of 0–1.
+int mixer_volume(double v) { return int(std::lround(std::clamp(v, 0.0, 1.0) * MIX_MAX_VOLUME)); }
+
 }  // namespace
 
 SoundBank::SoundBank(bool audible) {
@@ -118,6 +145,8 @@ SoundBank::SoundBank(bool audible) {
 }
 
 SoundBank::~SoundBank() {
+    Mix_HaltMusic();
+    for (auto& [name, music] : music_) Mix_FreeMusic(music);
     for (auto& [name, chunk] : sounds_) Mix_FreeChunk(chunk);
     Mix_CloseAudio();
     Mix_Quit();
@@ -148,6 +177,38 @@ void SoundBank::load(const std::string& name, const std::string& path) {
 }
 
 bool SoundBank::has(const std::string& name) const { return sounds_.contains(name); }
+
+void SoundBank::load_music(const std::string& name, const std::string& path) {
+    if (const std::string why = not_a_sound_file(path); !why.empty())
+        throw RenderError("music " + path + ": " + why);
+    if (const std::string why = bad_music_header(path); !why.empty())
+        throw RenderError("music " + path + ": " + why);
+    Mix_Music* music = Mix_LoadMUS(path.c_str());
+    if (!music) throw RenderError("music " + path + ": " + Mix_GetError());
+    auto [it, added] = music_.try_emplace(name, music);
+    if (!added) {
+        Mix_FreeMusic(it->second);  // stops it first if it is the one playing
+        it->second = music;
+    }
+}
+
+bool SoundBank::has_music(const std::string& name) const { return music_.contains(name); }
+
+bool SoundBank::play_music(const std::string& name, bool loop, int fade_in_ms) {
+    const auto it = music_.find(name);
+    if (it == music_.end()) return false;
+    if (audible_) Mix_FadeInMusic(it->second, loop ? -1 : 1, std::max(0, fade_in_ms));
+    return true;
+}
+
+void SoundBank::stop_music(int fade_out_ms) {
+    if (!audible_) return;
+    if (fade_out_ms > 0) Mix_FadeOutMusic(fade_out_ms);
+    else Mix_HaltMusic();
+}
+
+void SoundBank::set_music_volume(double v) { Mix_VolumeMusic(mixer_volume(v)); }
+void SoundBank::set_sound_volume(double v) { Mix_Volume(-1, mixer_volume(v)); }
 
 bool SoundBank::play(const std::string& name) {
     const auto it = sounds_.find(name);

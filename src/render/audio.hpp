@@ -1,9 +1,13 @@
-// Sounds by name through SDL_mixer: WAV and OGG (anything SDL_mixer decodes).
+// Sounds and music by name through SDL_mixer: WAV and OGG (anything SDL_mixer
+// decodes; MP3 too where it was built with it). A sound is decoded whole and
+// played on a free channel; music is streamed from its file, one track at a
+// time.
 #pragma once
 #include <string>
 #include <unordered_map>
 
 struct Mix_Chunk;
+typedef struct _Mix_Music Mix_Music;
 
 namespace ds::render {
 
@@ -28,8 +32,24 @@ public:
     bool play(const std::string& name);
     bool audible() const { return audible_; }
 
+    // Opens `path` as the music `name` (streamed when played), replacing an
+    // earlier one of that name. Throws RenderError naming the file, as
+    // load() does; a WAV or OGG header is checked first, but not its length:
+    // music is never decoded whole.
+    void load_music(const std::string& name, const std::string& path);
+    bool has_music(const std::string& name) const;
+    // Plays the named music instead of any other, once or looping, fading
+    // in over fade_in_ms. False when no music has that name.
+    bool play_music(const std::string& name, bool loop, int fade_in_ms);
+    // Stops the music, fading out over fade_out_ms (0: at once).
+    void stop_music(int fade_out_ms);
+    // Volumes from 0 to 1 (clamped): the music's, and every sound's.
+    void set_music_volume(double v);
+    void set_sound_volume(double v);
+
 private:
     std::unordered_map<std::string, Mix_Chunk*> sounds_;
+    std::unordered_map<std::string, Mix_Music*> music_;
     bool audible_ = false;
 };
 

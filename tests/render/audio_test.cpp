@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <SDL_mixer.h>
+
 #include "audio.hpp"
 #include "render_error.hpp"
 
@@ -236,6 +238,89 @@ TEST_CASE("the demos' sound effects all decode") {
         bank.load(name, (sounds / (std::string(name) + ".wav")).string());
         CHECK(bank.play(name));
     }
+}
+
+// ---- music
+
+std::string music_error(SoundBank& bank, const std::string& name, const std::string& path) {
+    try {
+        bank.load_music(name, path);
+    } catch (const RenderError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// A bank that really mixes, on SDL's dummy device (no sound card needed):
+// music is only started on an audible bank.
+struct DummyDevice {
+    DummyDevice() { setenv("SDL_AUDIODRIVER", "dummy", 1); }
+    ~DummyDevice() { unsetenv("SDL_AUDIODRIVER"); }
+};
+
+TEST_CASE("music loads from OGG and WAV, plays looping or once, fades and stops") {
+    DummyDevice dummy;
+    TempDir tmp;
+    write_wav(tmp.file("loop.wav"), 22050);
+    SoundBank bank(true);
+    REQUIRE(bank.audible());
+    bank.load_music("theme", std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
+    bank.load_music("loop", tmp.file("loop.wav"));
+    CHECK(bank.has_music("theme"));
+    CHECK_FALSE(bank.has_music("other"));
+    CHECK_FALSE(bank.play_music("other", true, 0));
+    CHECK(bank.play_music("theme", true, 0));
+    CHECK(Mix_PlayingMusic() == 1);
+    CHECK(bank.play_music("loop", false, 200));  // in place of the theme, fading in
+    CHECK(Mix_PlayingMusic() == 1);
+    CHECK(Mix_FadingMusic() == MIX_FADING_IN);
+    bank.stop_music(0);
+    CHECK(Mix_PlayingMusic() == 0);
+    CHECK(bank.play_music("theme", true, 0));
+    bank.stop_music(300);
+    CHECK(Mix_FadingMusic() == MIX_FADING_OUT);
+    bank.stop_music(0);
+}
+
+TEST_CASE("volumes from 0 to 1 reach the mixer, clamped") {
+    DummyDevice dummy;
+    SoundBank bank(true);
+    bank.set_music_volume(0.5);
+    CHECK(Mix_VolumeMusic(-1) == MIX_MAX_VOLUME / 2);
+    bank.set_music_volume(2);
+    CHECK(Mix_VolumeMusic(-1) == MIX_MAX_VOLUME);
+    bank.set_sound_volume(0.25);
+    CHECK(Mix_Volume(0, -1) == MIX_MAX_VOLUME / 4);
+    bank.set_sound_volume(-1);
+    CHECK(Mix_Volume(0, -1) == 0);
+}
+
+TEST_CASE("a silent bank keeps its music but plays none") {
+    SoundBank bank(false);
+    bank.load_music("theme", std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
+    CHECK(bank.play_music("theme", true, 0));
+    CHECK(Mix_PlayingMusic() == 0);
+    bank.stop_music(100);
+}
+
+TEST_CASE("what is no music file is refused naming the path, and the old music stays") {
+    TempDir tmp;
+    SoundBank bank(false);
+    const std::string missing = tmp.file("missing.ogg");
+    CHECK(music_error(bank, "m", missing) == "music " + missing + ": no such file");
+    CHECK(music_error(bank, "m", tmp.file("")) == "music " + tmp.file("") + ": not a regular file");
+    std::ifstream in(std::string(DS_TEST_DATA) + "/sounds/tone.ogg", std::ios::binary);
+    const std::string ogg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string stub = tmp.file("stub.ogg");
+    std::ofstream(stub, std::ios::binary) << ogg.substr(0, 20);
+    CHECK(music_error(bank, "m", stub) == "music " + stub + ": its Ogg page header is cut short");
+    const std::string text = tmp.file("notes.txt");
+    std::ofstream(text) << "not music at all, not even close";
+    CHECK(contains(music_error(bank, "m", text), "music " + text + ": "));
+    CHECK_FALSE(bank.has_music("m"));
+    bank.load_music("m", std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
+    CHECK(contains(music_error(bank, "m", stub), stub));
+    CHECK(bank.has_music("m"));  // the good one is still there
 }
 
 }  // TEST_SUITE

@@ -147,6 +147,7 @@ demos' top-level names stay in that module."
     '((42 . coin) (50 . jump) (75 . coin) (85 . jump) (123 . coin) (220 . jump) (287 . coin) (372 . jump)
       (453 . jump) (455 . boom) (675 . goal))
     (game-sounds (game-of platformer)))
+  (test-equal "the theme plays from the first frame, looping" '((0 play theme #t 0)) (game-music (game-of platformer)))
   ;; The coins and the goal are sensors: entered when the frame pairs them
   ;; with the player; coin-1 (8×8 at 100, 164) meets the 12 px player at x 91.
   (test-equal "coin-1 is there until frame 41, gone at 42; coin-5, out of reach, stays"

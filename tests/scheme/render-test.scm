@@ -315,4 +315,37 @@
 (test-assert "a sound's name must be a symbol"
   (mentions? (error-text (lambda () (load-sound "x" tone))) "load-sound" "name"))
 
+;;; ---------------------------------------------------------------- music and volume
+(load-music 'theme tone)
+(load-music 'loop (string-append demo-dir "/sounds/jump.wav"))
+(define tuneful
+  (make-game update: (lambda (game dt)
+                       (case (game-frame game)
+                         ((1) (play-music 'theme))
+                         ((3) (play-music 'loop loop?: #f fade-in: 250) (music-volume-set! 1/2))
+                         ((5) (sound-volume-set! 0.25) (stop-music fade-out: 1000))))))
+(game-run! tuneful frames: 7)
+(test-equal "headless, music events are recorded with their frames"
+  '((1 play theme #t 0) (3 play loop #f 250) (3 music-volume 1/2) (5 sound-volume 0.25) (5 stop 1000))
+  (game-music tuneful))
+(test-equal "play-music of a name never loaded is #f (and still recorded)" #f (play-music 'nothing))
+(test-assert "opening the real audio device keeps the music loaded before"
+  (begin ((@ (downstroke native) %open-audio!) #t)
+         ((@ (downstroke native) %play-music) 'theme #t 0)))
+((@ (downstroke native) %stop-music) 0)
+(test-assert "a missing music file is named"
+  (mentions? (error-text (lambda () (load-music 'x (string-append dir "/none.ogg")))) "load-music" "none.ogg"))
+(test-assert "a broken OGG header is named"
+  (let ((stub (string-append dir "/stub.ogg")))
+    (call-with-output-file stub (lambda (port) (display "OggS\x00\x02" port)))
+    (mentions? (error-text (lambda () (load-music 'x stub))) "load-music" "stub.ogg")))
+(test-assert "a volume outside 0–1 is refused"
+  (mentions? (error-text (lambda () (music-volume-set! 1.5))) "music-volume-set!" "1.5"))
+(test-assert "… NaN too"
+  (mentions? (error-text (lambda () (sound-volume-set! +nan.0))) "sound-volume-set!" "+nan.0"))
+(test-assert "a fade is a number of ms"
+  (mentions? (error-text (lambda () (stop-music fade-out: 'slow))) "stop-music" "fade-out" "slow"))
+(test-assert "a music name must be a symbol"
+  (mentions? (error-text (lambda () (play-music "theme"))) "play-music" "name"))
+
 (test-end "render")
