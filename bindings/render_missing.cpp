@@ -17,7 +17,7 @@ constexpr const char* kStandIns[] = {
     "%draw-rect!",        "%draw-line!",              "%draw-sprite!",          "%draw-text!",
     "%display-set-input-map!", "%display-poll!",      "%open-audio!",           "%load-sound",
     "%play-sound",        "%note-pushed-pairs!",      "%load-music",            "%play-music",
-    "%stop-music",        "%set-volume!"};
+    "%stop-music",        "%set-volume!",             "%display-set-fullscreen!", "%display-fullscreen?"};
 
 // One function per name (I), as each registered function has one name.
 template <size_t I>

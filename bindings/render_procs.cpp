@@ -40,6 +40,7 @@ struct Display {
     TileArt art;
     DrawList commands;
     std::unique_ptr<Window> window;
+    bool fullscreen = false;  // asked for (--fullscreen, game-fullscreen-set!), also before a window opens
     InputState input;
     std::vector<std::string> actions;  // by action number
     // Per-frame scratch, kept so a frame does not allocate.
@@ -145,11 +146,34 @@ SCM open_window(SCM display, SCM title, SCM scale) {
     if (d)
         guarded(f, nullptr, [&] {
             if (!from_scm(title, t, "title", f) || !from_scm(scale, s, "scale", f, 0, 64)) return;
-            d->window = std::make_unique<Window>(t, d->width, d->height, s);
+            d->window = std::make_unique<Window>(t, d->width, d->height, s, d->fullscreen);
             s = d->window->scale();
         });
     if (f) raise(f);
     return scm_from_int(s);
+}
+
+// Fullscreen on or off: now in an open window, and for a window opened later.
+// Returns whether the window (or the wish, without one) is fullscreen.
+SCM set_fullscreen(SCM display, SCM on) {
+    Failure f;
+    Display* d = display_of(display, "game-fullscreen-set!", f);
+    bool now = false;
+    if (d)
+        guarded(f, nullptr, [&] {
+            d->fullscreen = scm_is_true(on);
+            if (d->window) d->window->set_fullscreen(d->fullscreen);
+            now = d->window ? d->window->fullscreen() : d->fullscreen;
+        });
+    if (f) raise(f);
+    return scm_from_bool(now);
+}
+
+SCM fullscreen_p(SCM display) {
+    Failure f;
+    Display* d = display_of(display, "game-fullscreen?", f);
+    if (f) raise(f);
+    return scm_from_bool(d->window ? d->window->fullscreen() : d->fullscreen);
 }
 
 SCM close_window(SCM display) {
@@ -461,19 +485,31 @@ SCM poll_input(SCM display) {
     Failure f;
     Display* d = display_of(display, "game-run!", f);
     uint64_t held = 0;
-    bool quit = false;
+    bool quit = false, focused = true;
     int toggles = 0;
+    MouseState mouse;
     if (d && d->window) {
         guarded(f, nullptr, [&] { d->window->poll(d->input); });
         held = d->input.take_held();
         quit = d->input.quit_requested();
         toggles = d->input.take_debug_toggles();
+        mouse = d->input.take_mouse();
+        focused = d->input.focused();
+        d->fullscreen = d->window->fullscreen();  // F11 may have toggled it
     }
     if (f) raise(f);
     SCM list = SCM_EOL;
     for (size_t a = d->actions.size(); a-- > 0;)
         if (held >> a & 1) list = scm_cons(scm_from_utf8_symbol(d->actions[a].c_str()), list);
-    return scm_list_3(list, scm_from_bool(quit), scm_from_int(toggles));
+    SCM pointer = SCM_BOOL_F;
+    if (mouse.inside) {
+        static const char* const kButtons[] = {"left", "middle", "right"};
+        SCM buttons = SCM_EOL;
+        for (int b = 2; b >= 0; --b)
+            if (mouse.buttons >> b & 1) buttons = scm_cons(scm_from_utf8_symbol(kButtons[b]), buttons);
+        pointer = scm_list_3(scm_from_int(mouse.x), scm_from_int(mouse.y), buttons);
+    }
+    return scm_list_5(list, scm_from_bool(quit), scm_from_int(toggles), pointer, scm_from_bool(focused));
 }
 
 // ---------------------------------------------------------------- sound
@@ -625,6 +661,9 @@ void register_render_procedures() {
     define_procedure<3, 0, 0, open_window>("%display-open-window!",
         "(display title scale): opens a window showing the display at SCALE (0: fit the screen); returns the scale.");
     define_procedure<1, 0, 0, close_window>("%display-close-window!", "(display): closes its window.");
+    define_procedure<2, 0, 0, set_fullscreen>("%display-set-fullscreen!",
+        WrapperDoc{"(display on?)", "game-fullscreen-set!", engine});
+    define_procedure<1, 0, 0, fullscreen_p>("%display-fullscreen?", WrapperDoc{"(display)", "game-fullscreen?", engine});
     define_procedure<7, 1, 0, display_draw>("%display-draw!",
         "(display tilemap camera-x camera-y entities debug? history [time-ms]): draws a frame (and shows it "
         "in the window); time-ms, the game's clock, picks each animated tile's frame.");
@@ -637,7 +676,8 @@ void register_render_procedures() {
     define_procedure<2, 0, 0, set_input_map>("%display-set-input-map!",
         "(display map): binds keys and controller inputs to actions: ((action name …) …).");
     define_procedure<1, 0, 0, poll_input>("%display-poll!",
-        "(display): (held-actions quit? debug-toggles) from the window's events.");
+        "(display): (held-actions quit? debug-toggles mouse focused?) from the window's events; mouse is "
+        "(x y buttons) in the picture's pixels, or #f when the pointer is not over the picture.");
     define_procedure<1, 0, 0, open_audio>("%open-audio!",
         "(audible?): opens the audio device (silent when not AUDIBLE?); returns whether it plays.");
     define_procedure<1, 0, 0, play_sound>("%play-sound",

@@ -17,8 +17,8 @@
 ;;; update: only runs that per-entity logic, through scene-map-entities.
 ;;;
 ;;; Keys (in a window): Left/Right or A/D move the dropper along the top,
-;;; Z or Space drops a crate from it, Return puts everything back, Escape
-;;; quits.
+;;; Z or Space drops a crate from it, a left click drops one where you
+;;; click, Return puts everything back, Escape quits.
 ;;;
 ;;; Run: build/bin/downstroke demo/sandbox.scm
 ;;; Headless: it runs `demo-frames' frames (no input needed) and prints a line
@@ -168,9 +168,10 @@ it walks left."
 (define max-dropped 24)                 ; beyond that the oldest dropped crate goes
 (define dropped 0)                      ; crates dropped so far
 
-(define (drop-crate entities)
-  ;; ENTITIES with a crate under the dropper, unless something is in the way.
-  (let ((free? (not (any (lambda (e) (aabb-overlap? dropper-x dropper-y 12 12
+(define* (drop-crate entities #:optional (x dropper-x) (y dropper-y))
+  ;; ENTITIES with a crate at (X, Y) (under the dropper), unless something
+  ;; is in the way.
+  (let ((free? (not (any (lambda (e) (aabb-overlap? x y 12 12
                                                     (entity-ref e #:x 0) (entity-ref e #:y 0)
                                                     (entity-ref e #:width 0) (entity-ref e #:height 0)))
                          entities))))
@@ -180,7 +181,7 @@ it walks left."
                (entities (if (>= (length old) max-dropped) (delete (car old) entities eq?) entities)))
           (set! dropped (+ dropped 1))
           (append entities
-                  (list (append (box (string->symbol (format #f "crate-~a" dropped)) dropper-x dropper-y)
+                  (list (append (box (string->symbol (format #f "crate-~a" dropped)) x y)
                                 (list #:dropped? #t))))))))
 
 (define (player-input! game)
@@ -193,7 +194,14 @@ it walks left."
                                         (+ dropper-x (if (input-held? input 'left) (- dropper-speed) 0)
                                            (if (input-held? input 'right) dropper-speed 0)))))
            (when (input-pressed? input 'a)
-             (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene)))))))))
+             (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene)))))
+           ;; A click drops a crate centred on the pointer, inside the walls.
+           (let ((m (mouse-world-position game)))
+             (when (and m (input-pressed? input 'click))
+               (let ((x (max 16 (min (- 464 12) (- (car m) 6))))
+                     (y (max 16 (min (- 208 12) (- (cadr m) 6))))
+                     (scene (game-scene game)))
+                 (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene) x y))))))))))
 
 (define (update game dt)
   (theme-from-the-start game)
@@ -217,7 +225,7 @@ it walks left."
   (let* ((entities (scene-entities (game-scene game)))
          (boxes (filter (lambda (e) (eq? (entity-ref e #:kind) 'box)) entities))
          (at-rest (count (lambda (e) (memq (entity-ref e #:id) landed)) boxes))
-         (hint "ARROWS MOVE   Z DROP A CRATE   RETURN RESET"))
+         (hint "ARROWS MOVE  Z OR CLICK: A CRATE  RETURN RESET"))
     (draw-platforms! entities)
     ;; The dropper: where the next crate appears, and an arrow down.
     (draw-rect dropper-x dropper-y 12 12 '(250 220 70 200))
@@ -248,6 +256,7 @@ it walks left."
 
 (define game
   (make-game title: "Downstroke — sandbox" width: 480 height: 240 frame-delay: 16
+             input-map: (append (default-input-map) '((click "mouse:left")))
              scene: (make-scene entities: entities0 tilemap: arena)
              update: update render: render
              input-script: '()))

@@ -90,6 +90,7 @@
     (display-mode . "A parameter: how game-run! shows frames, 'headless (the default), 'window or 'capture. The host sets it from --window and --capture.")
     (capture-directory . "A parameter: the directory game-run! writes each frame to as a PNG in 'capture mode, or #f.")
     (window-scale . "A parameter: the window's whole scale factor (the host's --scale), 0 to fit the screen.")
+    (window-fullscreen . "A parameter: whether the window opens fullscreen (the host's --fullscreen).")
     (debug-draw-default . "A parameter, #f by default: whether every game starts with the debug overlay on (the host's --debug).")
     (current-display . "A parameter: what the running game draws into (its window or off-screen picture), or #f outside game-run!; draw-rect and the other draw- procedures draw there.")
     ;; (downstroke history)

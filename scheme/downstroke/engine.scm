@@ -15,6 +15,7 @@
                           %display-set-background!
                           %display-clear-commands! %display-set-input-map! %display-poll!
                           %display-open-window! %display-close-window! %open-audio!
+                          %display-set-fullscreen! %display-fullscreen?
                           %play-sound %play-music %stop-music %set-volume!
                           %note-pushed-pairs! %max-substeps))
   #:export (make-game game? game-title game-width game-height game-frame-delay
@@ -24,6 +25,7 @@
             game-update game-update-set! game-engine-update game-engine-update-set!
             input-pressed? input-held? input-released? play-sound
             play-music stop-music music-volume-set! sound-volume-set! game-music
+            input-mouse mouse-world-position game-fullscreen-set! game-fullscreen?
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
             frame-pacing hook-error-reporter main-script? script-number-argument engine-stats
@@ -47,11 +49,23 @@
   "Whether ACTION went up this frame."
   (and (memq action (input-previous-list input)) (not (input-held? input action))))
 
+;;; The pointer rides in the held list as one element (mouse x y buttons),
+;;; so the input log records it and a script replays it as it does keys.
+(define (mouse-element held) (find (lambda (x) (and (pair? x) (eq? (car x) 'mouse))) held))
+
+(define (input-mouse input)
+  "Where the pointer is in this frame, as (x y buttons): x and y in the game
+picture's own pixels (the window's scale and bars taken out), buttons the
+list of those held (left middle right). #f when the pointer is not over the
+picture (or there is no window, and the input script holds no mouse)."
+  (let ((m (mouse-element (input-held-list input))))
+    (and m (cdr m))))
+
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
               input input-script frame sounds music history-size history
-              display debug-draw input-log stack-limit)
+              display debug-draw input-log stack-limit pause-when-unfocused)
   game?
   (title game-title)
   (width game-width)
@@ -74,7 +88,8 @@
   (display game-display)            ; the renderer's, or #f in a build without it
   (debug-draw game-debug-draw? %game-debug-draw-set!)
   (input-log %game-input-log %game-input-log-set!)  ; a bounded log of (frame . held) at each change
-  (stack-limit game-stack-limit))   ; bytes of Scheme stack each hook may use
+  (stack-limit game-stack-limit)    ; bytes of Scheme stack each hook may use
+  (pause-when-unfocused game-pause-when-unfocused?))
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -99,9 +114,17 @@ collision mode, substeps and resting contacts."
   (unless (or (not proc) (procedure? proc))
     (scm-error 'wrong-type-arg who "~A: expected a procedure or #f, got ~S" (list what proc) #f)))
 
+(define (mouse-entry? x)
+  ;; (mouse x y buttons): the pointer in picture pixels and the buttons held.
+  (and (pair? x) (eq? (car x) 'mouse) (list? x) (= (length x) 4)
+       (real? (cadr x)) (real? (caddr x)) (not (nan? (cadr x))) (not (nan? (caddr x)))
+       (list? (cadddr x)) (every (lambda (b) (memq b '(left middle right))) (cadddr x))))
+
 (define (input-script-entry? entry)
   (and (pair? entry) (exact-integer? (car entry)) (>= (car entry) 0)
-       (list? (cdr entry)) (every symbol? (cdr entry))))
+       (list? (cdr entry))
+       (every (lambda (x) (or (symbol? x) (mouse-entry? x))) (cdr entry))
+       (<= (count pair? (cdr entry)) 1)))
 
 (define (check-input-script who script)
   ;; scripted-held walks it every frame: a circular script would hang the game.
@@ -111,7 +134,7 @@ collision mode, substeps and resting contacts."
   (let ((bad (find (negate input-script-entry?) script)))
     (when bad
       (scm-error 'wrong-type-arg who
-                 "input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got ~S"
+                 "input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got ~S"
                  (list bad) #f))))
 
 (define (game-scene-set! game scene)
@@ -147,7 +170,7 @@ collision mode, substeps and resting contacts."
                     (engine-update default-engine-update)
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
                     (input-script '()) (history 0) (input-map #f) (background #f)
-                    (stack-limit default-stack-limit))
+                    (stack-limit default-stack-limit) (pause-when-unfocused? #f))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
@@ -159,7 +182,10 @@ default-input-map, which is used when it is #f. BACKGROUND, (r g b), is the
 colour a frame is cleared to; #f uses the map's backgroundcolor, else the
 engine's (24 28 40). STACK-LIMIT is the Scheme stack, in bytes, each hook
 (engine-update, update, render, a frame hook) may use: past it the hook
-raises stack-overflow naming itself (64 MiB by default)."
+raises stack-overflow naming itself (64 MiB by default).
+PAUSE-WHEN-UNFOCUSED? stops the game's steps while its window has lost the
+keyboard focus; it resumes where it stopped, with no burst of catch-up
+steps."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
@@ -196,7 +222,7 @@ raises stack-overflow naming itself (64 MiB by default)."
                             collision-mode substeps (and resting-contacts? #t)
                             (make-input '() '()) input-script 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
-                            display #f (make-bounded-log) stack-limit)))
+                            display #f (make-bounded-log) stack-limit (and pause-when-unfocused? #t))))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       game)))
 
@@ -389,6 +415,31 @@ a window is open. #f when no music of that name was loaded."
 
 (define current-game (make-parameter #f))
 
+(define (mouse-world-position game)
+  "Where the pointer is in GAME's world this frame, as (x y): input-mouse's
+point through the scene's camera. #f when the pointer is not over the
+picture."
+  (check-game "mouse-world-position" game)
+  (let ((m (input-mouse (game-input game)))
+        (scene (game-scene game)))
+    (and m (let ((camera (and scene (scene-camera scene))))
+             (if camera
+                 (list (+ (car m) (camera-x camera)) (+ (cadr m) (camera-y camera)))
+                 (list (car m) (cadr m)))))))
+
+(define (game-fullscreen-set! game on?)
+  "Show GAME fullscreen (ON? true) or in its window, now if its window is
+open, else when it opens (F11 and Alt+Return toggle it too)."
+  (check-game "game-fullscreen-set!" game)
+  (let ((display (game-display game)))
+    (if display (%display-set-fullscreen! display (and on? #t)) #f)))
+
+(define (game-fullscreen? game)
+  "Whether GAME is (or, before its window opens, will be) fullscreen."
+  (check-game "game-fullscreen?" game)
+  (let ((display (game-display game)))
+    (and display (%display-fullscreen? display))))
+
 (define (entity-tagged entities target)
   (find (lambda (e) (or (equal? (entity-ref e #:id) target)
                         (equal? (entity-ref e #:tag) target)))
@@ -433,7 +484,7 @@ frame from frame 0 on: a key frame (frame . actions) for frame 0 and for
 every frame whose set of held actions differs from the frame before."
   (let loop ((log log) (frame 0) (previous #f) (acc '()))
     (cond ((null? log) (reverse acc))
-          ((and previous (lset= eq? previous (car log))) (loop (cdr log) (+ frame 1) previous acc))
+          ((and previous (lset= equal? previous (car log))) (loop (cdr log) (+ frame 1) previous acc))
           (else (loop (cdr log) (+ frame 1) (car log) (cons (cons frame (car log)) acc))))))
 
 (export input-held-actions input-log->script)
@@ -464,7 +515,7 @@ for frame."
                   (list->bounded-log (drop-while (lambda (e) (>= (car e) frame)) items))
                   log))
          (newest (bounded-log-items log)))
-    (%game-input-log-set! game (if (and (pair? newest) (lset= eq? (cdar newest) held))
+    (%game-input-log-set! game (if (and (pair? newest) (lset= equal? (cdar newest) held))
                                    log
                                    (bounded-log-push log (cons frame held) *input-changes-kept*)))))
 
@@ -672,6 +723,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
   (let* ((display (game-display game))
          (dt (game-frame-delay game))
          (tick (* dt (/ internal-time-units-per-second 1000))))
+    (when (window-fullscreen) (%display-set-fullscreen! display #t))
     (%display-open-window! display (game-title game) (window-scale))
     (%open-audio! #t)
     (dynamic-wind
@@ -680,13 +732,16 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
         (let loop ((last (get-internal-real-time)) (owed tick))
           (run-frame-hooks! game)
           (let* ((polled (%display-poll! display))
-                 (held (car polled)))
+                 (mouse (list-ref polled 3))
+                 (held (if mouse (append (car polled) (list (cons 'mouse mouse))) (car polled)))
+                 ;; Unfocused and told to pause: no step, and no time owed.
+                 (paused? (and (game-pause-when-unfocused? game) (not (list-ref polled 4)))))
             (when (odd? (caddr polled))
               (game-debug-draw-set! game (not (game-debug-draw? game))))
             (unless (or (cadr polled) (memq 'quit held)
                         (and frames (>= (game-frame game) frames)))
               (let* ((now (get-internal-real-time))
-                     (owed (+ owed (- now last)))
+                     (owed (if paused? 0 (+ owed (- now last))))
                      (due (floor (/ owed tick)))
                      (steps (min due *max-catch-up-steps*)))
                 (let step ((k 0))

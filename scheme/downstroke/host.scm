@@ -218,9 +218,12 @@
   (string-append "usage: downstroke [OPTION...] [FILE.scm ARGS...]
 Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
 
-  --window            show the game in a window: real time, keyboard and
-                      controllers, sound (closing it quits; F1: debug overlay)
-  --scale N           the window's whole scale factor (default: fit the screen)
+  --window            show the game in a window: real time, keyboard, mouse
+                      and controllers, sound and music (closing it quits; F1:
+                      debug overlay; F11 or Alt+Return: fullscreen)
+  --scale N           the window's whole scale factor (default: fit the screen);
+                      the window can be resized, the picture stays whole-scaled
+  --fullscreen        open the window fullscreen
   --debug             start with the debug overlay on (F1 toggles it in a window)
   --capture DIR       headless, and draw every frame off-screen into
                       DIR/NNNNNN.png (NNNNNN: the frame number)
@@ -254,6 +257,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
           ((string=? (car args) "--version") (loop (cdr args) (acons 'version #t opts)))
           ((string=? (car args) "--no-auto-compile") (loop (cdr args) (acons 'no-auto-compile #t opts)))
           ((string=? (car args) "--debug") (loop (cdr args) (acons 'debug #t opts)))
+          ((string=? (car args) "--fullscreen") (loop (cdr args) (acons 'fullscreen #t opts)))
           ((string=? (car args) "--scale")
            (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
           ((string=? (car args) "--capture") (with-value 'capture string?))
@@ -293,6 +297,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
            (frame-pacing #t)
            (let ((scale (assq-ref opts 'scale)))
              (when scale (window-scale (string->number scale))))
+           (when (assq-ref opts 'fullscreen) (window-fullscreen #t))
            #t)
           (else #t))))
 

@@ -2,7 +2,8 @@
 ;;; and how the host asked frames to be shown (headless, a window, captures).
 (define-module (downstroke render)
   #:use-module (downstroke native)
-  #:export (renderer-available? display-mode capture-directory window-scale debug-draw-default
+  #:export (renderer-available? display-mode capture-directory window-scale window-fullscreen
+            debug-draw-default
             current-display default-input-map
             draw-rect draw-line draw-sprite draw-text draw-label text-width
             color-rgba load-sound load-music))
@@ -18,6 +19,8 @@
 (define capture-directory (make-parameter #f))
 ;; --scale N: the window's whole scale factor; 0 fits the screen.
 (define window-scale (make-parameter 0))
+;; --fullscreen: the window opens fullscreen (F11 or Alt+Return toggles it).
+(define window-fullscreen (make-parameter #f))
 ;; --debug: every game starts with the debug overlay on.
 (define debug-draw-default (make-parameter #f))
 

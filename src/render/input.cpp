@@ -16,6 +16,23 @@ namespace {
 constexpr int kAxisDeadzone = 8000;
 
 constexpr std::string_view kPadPrefix = "pad:";
+constexpr std::string_view kMousePrefix = "mouse:";
+
+struct MouseName {
+    std::string_view name;
+    Binding::Kind kind;
+    int32_t code;
+};
+
+constexpr MouseName kMouseNames[] = {
+    {"left", Binding::Kind::MouseButton, SDL_BUTTON_LEFT},
+    {"middle", Binding::Kind::MouseButton, SDL_BUTTON_MIDDLE},
+    {"right", Binding::Kind::MouseButton, SDL_BUTTON_RIGHT},
+    {"x1", Binding::Kind::MouseButton, SDL_BUTTON_X1},
+    {"x2", Binding::Kind::MouseButton, SDL_BUTTON_X2},
+    {"wheel-up", Binding::Kind::MouseWheel, +1},
+    {"wheel-down", Binding::Kind::MouseWheel, -1},
+};
 
 struct PadName {
     std::string_view name;
@@ -69,7 +86,35 @@ bool parse_pad(std::string_view rest, uint8_t action, Binding& out) {
     return false;
 }
 
-bool is_pad_binding(const Binding& b) { return b.kind != Binding::Kind::Key; }
+bool parse_mouse(std::string_view rest, uint8_t action, Binding& out) {
+    const std::string lower = lowercase(rest);
+    for (const MouseName& m : kMouseNames) {
+        if (m.name != lower) continue;
+        out = Binding{m.kind, m.code, 0, action};
+        return true;
+    }
+    return false;
+}
+
+bool is_pad_binding(const Binding& b) {
+    return b.kind == Binding::Kind::PadButton || b.kind == Binding::Kind::PadAxis;
+}
+
+// The MouseState::buttons bit of an SDL button (0: none it reports).
+uint8_t button_bit(uint8_t button) {
+    switch (button) {
+        case SDL_BUTTON_LEFT: return 1;
+        case SDL_BUTTON_MIDDLE: return 2;
+        case SDL_BUTTON_RIGHT: return 4;
+        default: return 0;
+    }
+}
+
+// A picture coordinate from a window one: floor((w − offset) / scale).
+int picture_coordinate(int window, int offset, int scale) {
+    const int d = window - offset;
+    return d >= 0 ? d / scale : -((-d + scale - 1) / scale);
+}
 
 SDL_JoystickID instance_id(SDL_GameController* pad) {
     return SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pad));
@@ -83,6 +128,8 @@ bool parse_binding(std::string_view name, uint8_t action, Binding& out) {
     if (name.size() > kPadPrefix.size() &&
         lowercase(name.substr(0, kPadPrefix.size())) == kPadPrefix)
         return parse_pad(name.substr(kPadPrefix.size()), action, out);
+    if (name.size() > kMousePrefix.size() && lowercase(name.substr(0, kMousePrefix.size())) == kMousePrefix)
+        return parse_mouse(name.substr(kMousePrefix.size()), action, out);
     const SDL_Keycode key = SDL_GetKeyFromName(std::string(name).c_str());
     if (key == SDLK_UNKNOWN) return false;
     out = Binding{Binding::Kind::Key, key, 0, action};
@@ -100,6 +147,8 @@ const std::vector<DefaultBinding>& default_input_map() {
         {"start", {"Return", "pad:start"}},
         {"select", {"Backspace", "pad:back"}},
         {"quit", {"Escape"}},
+        {"wheel-up", {"mouse:wheel-up"}},
+        {"wheel-down", {"mouse:wheel-down"}},
     };
     return map;
 }
@@ -173,7 +222,45 @@ void InputState::remove_pad(SDL_JoystickID id) {
 void InputState::handle_window(const SDL_WindowEvent& w) {
     if (w.event == SDL_WINDOWEVENT_CLOSE) quit_ = true;
     // Keys released while another window has focus never reach us.
-    if (w.event == SDL_WINDOWEVENT_FOCUS_LOST) release_all();
+    if (w.event == SDL_WINDOWEVENT_FOCUS_LOST) {
+        release_all();
+        focused_ = false;
+    }
+    if (w.event == SDL_WINDOWEVENT_FOCUS_GAINED) focused_ = true;
+    if (w.event == SDL_WINDOWEVENT_ENTER) in_window_ = true;
+    if (w.event == SDL_WINDOWEVENT_LEAVE) {
+        in_window_ = false;
+        mouse_.inside = false;
+    }
+}
+
+void InputState::set_view(const PictureView& view) {
+    view_ = view;
+    if (in_window_) move_mouse(window_x_, window_y_);  // the picture moved under the pointer
+}
+
+void InputState::move_mouse(int window_x, int window_y) {
+    in_window_ = true;
+    window_x_ = window_x;
+    window_y_ = window_y;
+    const int s = std::max(1, view_.scale);
+    const int x = picture_coordinate(window_x, view_.x, s), y = picture_coordinate(window_y, view_.y, s);
+    mouse_.inside = x >= 0 && y >= 0 && x < view_.width && y < view_.height;
+    if (mouse_.inside) mouse_.x = x, mouse_.y = y;
+}
+
+MouseState InputState::take_mouse() {
+    MouseState m = mouse_;
+    m.buttons = static_cast<uint8_t>(m.buttons | tapped_buttons_);
+    tapped_buttons_ = 0;
+    return m;
+}
+
+void InputState::press_mouse(uint8_t button, bool down) {
+    const uint8_t bit = button_bit(button);
+    if (down) tapped_buttons_ = static_cast<uint8_t>(tapped_buttons_ | bit);
+    mouse_.buttons = static_cast<uint8_t>(down ? mouse_.buttons | bit : mouse_.buttons & ~bit);
+    set_down(Binding::Kind::MouseButton, button, down);
 }
 
 void InputState::handle(const SDL_Event& e) {
@@ -189,6 +276,21 @@ void InputState::handle(const SDL_Event& e) {
     case SDL_CONTROLLERDEVICEADDED: add_pad(e.cdevice.which); break;
     case SDL_CONTROLLERDEVICEREMOVED: remove_pad(e.cdevice.which); break;
     case SDL_WINDOWEVENT: handle_window(e.window); break;
+    case SDL_MOUSEMOTION: move_mouse(e.motion.x, e.motion.y); break;
+    case SDL_MOUSEBUTTONDOWN:
+    case SDL_MOUSEBUTTONUP:
+        move_mouse(e.button.x, e.button.y);
+        press_mouse(e.button.button, e.type == SDL_MOUSEBUTTONDOWN);
+        break;
+    case SDL_MOUSEWHEEL: {
+        // A step of the wheel is a tap: its action holds for one frame.
+        const int32_t dir = (e.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -e.wheel.y : e.wheel.y) > 0 ? 1 : -1;
+        if (e.wheel.y != 0)
+            for (const Binding& b : bindings_)
+                if (b.kind == Binding::Kind::MouseWheel && b.code == dir && b.action < kMaxActions)
+                    tapped_ |= uint64_t{1} << b.action;
+        break;
+    }
     case SDL_QUIT: quit_ = true; break;
     default: break;
     }
@@ -210,6 +312,8 @@ int InputState::take_debug_toggles() { return std::exchange(debug_toggles_, 0); 
 void InputState::release_all() {
     std::fill(down_.begin(), down_.end(), 0);
     tapped_ = 0;
+    mouse_.buttons = 0;
+    tapped_buttons_ = 0;
 }
 
 }  // namespace ds::render

@@ -12,7 +12,13 @@ int fitting_scale(int width, int height, int bounds_w, int bounds_h) {
     return std::clamp(std::min(bounds_w / width, bounds_h / height), 1, kMaxScale);
 }
 
-Window::Window(const std::string& title, int width, int height, int scale) {
+PictureView picture_view(int width, int height, int window_w, int window_h) {
+    const int s = fitting_scale(width, height, window_w, window_h);
+    return {(window_w - width * s) / 2, (window_h - height * s) / 2, s, width, height};
+}
+
+Window::Window(const std::string& title, int width, int height, int scale, bool fullscreen)
+    : width_(width), height_(height) {
     if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0)
         throw RenderError(std::string("cannot open a window: ") + SDL_GetError());
     if (scale <= 0) {
@@ -22,12 +28,15 @@ Window::Window(const std::string& title, int width, int height, int scale) {
     }
     scale_ = std::clamp(scale, 1, kMaxScale);
     window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                               width * scale_, height * scale_, SDL_WINDOW_SHOWN);
+                               width * scale_, height * scale_, SDL_WINDOW_SHOWN | SDL_WINDOW_RESIZABLE);
     if (!window_) {
         const std::string why = SDL_GetError();
         SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
         throw RenderError("cannot open a window: " + why);
     }
+    // Smaller than one picture pixel per pixel the picture would be cut.
+    SDL_SetWindowMinimumSize(window_, width, height);
+    if (fullscreen) set_fullscreen(true);
 }
 
 Window::~Window() {
@@ -35,20 +44,63 @@ Window::~Window() {
     SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
 }
 
+PictureView Window::view() const {
+    int w = 0, h = 0;
+    SDL_GetWindowSize(window_, &w, &h);
+    return picture_view(width_, height_, w, h);
+}
+
 void Window::present(const Canvas& canvas) {
-    SDL_Surface* screen = SDL_GetWindowSurface(window_);
+    SDL_Surface* screen = SDL_GetWindowSurface(window_);  // a new one after a resize
     if (!screen) throw RenderError(std::string("the window has no surface: ") + SDL_GetError());
-    SDL_Rect dst{0, 0, canvas.width() * scale_, canvas.height() * scale_};
+    const PictureView v = picture_view(canvas.width(), canvas.height(), screen->w, screen->h);
+    SDL_Rect dst{v.x, v.y, canvas.width() * v.scale, canvas.height() * v.scale};
+    // The bars: black, and only where the picture is not (it covers the rest).
+    if (v.x > 0 || v.y > 0 || dst.w < screen->w || dst.h < screen->h)
+        SDL_FillRect(screen, nullptr, SDL_MapRGB(screen->format, 0, 0, 0));
     // The canvas never blends onto the screen, and a scaled blit copies the
     // nearest source pixel: every canvas pixel becomes a scale × scale block.
-    if (scale_ == 1) SDL_BlitSurface(canvas.surface(), nullptr, screen, &dst);
+    if (v.scale == 1) SDL_BlitSurface(canvas.surface(), nullptr, screen, &dst);
     else SDL_BlitScaled(canvas.surface(), nullptr, screen, &dst);
     SDL_UpdateWindowSurface(window_);
 }
 
 void Window::poll(InputState& input) {
+    input.set_view(view());
     SDL_Event e;
-    while (SDL_PollEvent(&e)) input.handle(e);
+    while (SDL_PollEvent(&e)) {
+        if (e.type == SDL_KEYDOWN && !e.key.repeat &&
+            (e.key.keysym.sym == SDLK_F11 || (e.key.keysym.sym == SDLK_RETURN && (e.key.keysym.mod & KMOD_ALT)))) {
+            set_fullscreen(!fullscreen());
+            continue;
+        }
+        if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) input.set_view(view());
+        input.handle(e);
+    }
 }
+
+void Window::set_fullscreen(bool on) {
+    if (on == fullscreen_) return;
+    if (on) {
+        SDL_GetWindowPosition(window_, &windowed_.x, &windowed_.y);
+        SDL_GetWindowSize(window_, &windowed_.w, &windowed_.h);
+        SDL_Rect display{0, 0, windowed_.w, windowed_.h};
+        const int index = SDL_GetWindowDisplayIndex(window_);
+        if (SDL_GetDisplayBounds(index < 0 ? 0 : index, &display) != 0) return;  // nowhere to go: stay windowed
+        SDL_SetWindowBordered(window_, SDL_FALSE);
+        SDL_SetWindowResizable(window_, SDL_FALSE);
+        SDL_SetWindowPosition(window_, display.x, display.y);
+        SDL_SetWindowSize(window_, display.w, display.h);
+        SDL_RaiseWindow(window_);
+    } else {
+        SDL_SetWindowBordered(window_, SDL_TRUE);
+        SDL_SetWindowResizable(window_, SDL_TRUE);
+        SDL_SetWindowSize(window_, windowed_.w, windowed_.h);
+        SDL_SetWindowPosition(window_, windowed_.x, windowed_.y);
+    }
+    fullscreen_ = on;
+}
+
+bool Window::fullscreen() const { return fullscreen_; }
 
 }  // namespace ds::render

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "input.hpp"
+#include "window.hpp"
 
 namespace {
 
@@ -124,7 +125,7 @@ TEST_CASE("an unknown name is refused and leaves out alone") {
 
 TEST_CASE("every name in the default map parses") {
     const auto& map = default_input_map();
-    REQUIRE(map.size() == 9);
+    REQUIRE(map.size() == 11);
     CHECK(map.front().action == std::string("left"));
     for (const DefaultBinding& d : map) {
         for (const char* name : d.names) {
@@ -271,6 +272,133 @@ TEST_CASE("SDL_QUIT and a window close ask to quit") {
     InputState close;
     close.handle(window(SDL_WINDOWEVENT_CLOSE));
     CHECK(close.quit_requested());
+}
+
+// ---- the mouse and the picture's place in the window
+
+SDL_Event motion(int x, int y) {
+    SDL_Event e{};
+    e.type = SDL_MOUSEMOTION;
+    e.motion.x = x;
+    e.motion.y = y;
+    return e;
+}
+
+SDL_Event click(Uint32 type, uint8_t b, int x, int y) {
+    SDL_Event e{};
+    e.type = type;
+    e.button.button = b;
+    e.button.x = x;
+    e.button.y = y;
+    return e;
+}
+
+SDL_Event wheel(int y) {
+    SDL_Event e{};
+    e.type = SDL_MOUSEWHEEL;
+    e.wheel.y = y;
+    e.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
+    return e;
+}
+
+TEST_CASE("the picture is scaled by the largest whole factor that fits, and centred") {
+    const PictureView v = picture_view(320, 240, 1000, 700);  // ×2 = 640 × 480; ×3 would be 960 × 720
+    CHECK(v.scale == 2);
+    CHECK(v.x == 180);
+    CHECK(v.y == 110);
+    const PictureView exact = picture_view(64, 48, 320, 240);
+    CHECK(exact.scale == 5);
+    CHECK(exact.x == 0);
+    CHECK(exact.y == 0);
+    CHECK(picture_view(64, 48, 300, 200).scale == 4);
+    CHECK(picture_view(64, 48, 300, 200).x == 22);
+    CHECK(picture_view(64, 48, 10, 10).scale == 1);  // never below 1
+}
+
+TEST_CASE("the pointer is read in the picture's pixels, bars and scale taken out") {
+    InputState in;
+    in.set_view({180, 110, 2, 320, 240});
+    in.handle(motion(180, 110));
+    CHECK(in.mouse().inside);
+    CHECK(in.mouse().x == 0);
+    CHECK(in.mouse().y == 0);
+    in.handle(motion(181 + 2 * 100, 111 + 2 * 50));
+    CHECK(in.mouse().x == 100);
+    CHECK(in.mouse().y == 50);
+    in.handle(motion(179, 200));  // over the left bar
+    CHECK_FALSE(in.mouse().inside);
+    in.handle(motion(180 + 640, 200));  // just past the right edge
+    CHECK_FALSE(in.mouse().inside);
+    in.handle(motion(180 + 639, 110 + 479));
+    CHECK(in.mouse().inside);
+    CHECK(in.mouse().x == 319);
+    CHECK(in.mouse().y == 239);
+    in.handle(window(SDL_WINDOWEVENT_LEAVE));
+    CHECK_FALSE(in.mouse().inside);
+}
+
+TEST_CASE("a resize moves the picture under a still pointer") {
+    InputState in;
+    in.set_view({0, 0, 2, 64, 48});
+    in.handle(motion(40, 40));
+    CHECK(in.mouse().x == 20);
+    in.set_view({22, 4, 4, 64, 48});
+    CHECK(in.mouse().x == 4);  // (40 − 22) / 4
+    CHECK(in.mouse().y == 9);  // (40 − 4) / 4
+}
+
+TEST_CASE("mouse buttons are held, and hold the actions bound to them") {
+    InputState in;
+    in.set_bindings(bind({{"mouse:left", 0}, {"mouse:right", 1}, {"Z", 0}}));
+    in.set_view({0, 0, 1, 100, 100});
+    in.handle(click(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, 10, 20));
+    CHECK(in.mouse().buttons == 1);
+    CHECK(in.mouse().x == 10);
+    CHECK(in.held() == 0b01);
+    in.handle(click(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_RIGHT, 10, 20));
+    in.handle(click(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_MIDDLE, 10, 20));
+    CHECK(in.mouse().buttons == 0b111);
+    CHECK(in.held() == 0b11);
+    in.handle(click(SDL_MOUSEBUTTONUP, SDL_BUTTON_LEFT, 10, 20));
+    CHECK(in.mouse().buttons == 0b110);
+    CHECK(in.held() == 0b10);
+    in.handle(window(SDL_WINDOWEVENT_FOCUS_LOST));
+    CHECK(in.mouse().buttons == 0);
+    CHECK(in.held() == 0);
+    CHECK_FALSE(in.focused());
+    in.handle(window(SDL_WINDOWEVENT_FOCUS_GAINED));
+    CHECK(in.focused());
+}
+
+TEST_CASE("a click inside one poll shows its button for that poll") {
+    InputState in;
+    in.set_view({0, 0, 1, 100, 100});
+    in.handle(click(SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, 5, 5));
+    in.handle(click(SDL_MOUSEBUTTONUP, SDL_BUTTON_LEFT, 5, 5));
+    CHECK(in.mouse().buttons == 0);
+    CHECK(in.take_mouse().buttons == 1);
+    CHECK(in.take_mouse().buttons == 0);
+}
+
+TEST_CASE("a wheel step holds wheel-up or wheel-down for one frame") {
+    InputState in;
+    in.set_bindings(bind({{"mouse:wheel-up", 0}, {"mouse:wheel-down", 1}}));
+    in.handle(wheel(1));
+    CHECK(in.take_held() == 0b01);
+    CHECK(in.take_held() == 0);
+    in.handle(wheel(-2));
+    CHECK(in.take_held() == 0b10);
+    CHECK(in.held() == 0);
+}
+
+TEST_CASE("mouse names parse; unknown ones are refused") {
+    CHECK(same(parsed("mouse:left", 3), Binding{Kind::MouseButton, SDL_BUTTON_LEFT, 0, 3}));
+    CHECK(same(parsed("MOUSE:Right", 3), Binding{Kind::MouseButton, SDL_BUTTON_RIGHT, 0, 3}));
+    CHECK(same(parsed("mouse:wheel-down", 2), Binding{Kind::MouseWheel, -1, 0, 2}));
+    Binding b = kSentinel;
+    CHECK_FALSE(parse_binding("mouse:fourth", 1, b));
+    CHECK_FALSE(parse_binding("mouse:", 1, b));
+    CHECK(same(b, kSentinel));
 }
 
 }  // TEST_SUITE

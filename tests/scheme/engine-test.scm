@@ -393,13 +393,13 @@
         "In procedure game-engine-update-set!: engine-update: expected a procedure or #f, got step\n"
         (lambda () (game-engine-update-set! edge-game 'step)))
   (list "an input-script entry that is not a pair"
-        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got 5\n"
+        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got 5\n"
         (lambda () (make-game input-script: '(5))))
   (list "an input-script entry whose frame is a symbol"
-        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got (x a)\n"
+        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got (x a)\n"
         (lambda () (make-game input-script: '((0 . ()) (x . (a))))))
   (list "an input-script entry whose actions are not a list"
-        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols, got (0 . a)\n"
+        "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got (0 . a)\n"
         (lambda () (make-game input-script: '((0 . a)))))
   (list "make-game scene: a list" "In procedure make-game: scene: expected a scene (make-scene) or #f, got (1)\n"
         (lambda () (make-game scene: '(1))))
@@ -430,5 +430,33 @@
         "In procedure resolve-entity-collisions: entity key #:vx: expected a real number, got #t (entity 0 of the list)\n"
         (lambda () (resolve-entity-collisions '((#:id (a b) #:vx #t)))))))
 (test-equal "a refused game-scene-set! leaves the scene alone" #f (game-scene edge-game))
+
+;;; ---------------------------------------------------------------- the mouse in scripts and logs
+(define seen-mouse '())
+(define pointing
+  (make-game scene: (make-scene camera: (make-camera x: 100 y: 50))
+             input-script: '((0 . ()) (2 . (a (mouse 10 20 (left)))) (4 . ((mouse 11 20 ()))) (5 . ()))
+             update: (lambda (game dt)
+                       (set! seen-mouse (cons (list (game-frame game) (input-mouse (game-input game))
+                                                    (mouse-world-position game))
+                                              seen-mouse)))))
+(game-run! pointing frames: 6)
+(test-equal "a scripted pointer: input-mouse in picture pixels, mouse-world-position through the camera"
+  '((0 #f #f) (1 #f #f) (2 (10 20 (left)) (110 70)) (3 (10 20 (left)) (110 70)) (4 (11 20 ()) (111 70)) (5 #f #f))
+  (reverse seen-mouse))
+(test-equal "the input log records the pointer with the actions, and replays as a script"
+  '((0) (2 a (mouse 10 20 (left))) (4 (mouse 11 20 ())) (5))
+  (input-log->script (game-input-log pointing)))
+(test-equal "input-mouse without a pointer: #f" #f (input-mouse (game-input (make-game))))
+(for-each (lambda (bad)
+            (test-equal (format #f "a malformed pointer in a script is refused: ~s" bad) 'wrong-type-arg
+              (catch #t (lambda () (make-game input-script: (list (cons 0 bad))) 'accepted) (lambda (key . _) key))))
+          '(((mouse 1 2)) ((mouse 1 2 (fourth))) ((mouse "1" 2 ())) ((mouse 1 2 ()) (mouse 3 4 ())) ((mouse +nan.0 2 ()))))
+(test-equal "game-fullscreen? of a game never shown: #f" #f
+  (if (renderer-available?) (game-fullscreen? (make-game)) #f))
+(test-equal "game-fullscreen-set! before the window opens is kept for it" #t
+  (if (renderer-available?)
+      (let ((g (make-game))) (game-fullscreen-set! g #t) (game-fullscreen? g))
+      #t))
 
 (test-end "engine")

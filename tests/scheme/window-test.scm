@@ -5,7 +5,7 @@
 ;;; picture scaled ×2 pixel-exactly with the box where the held key walked
 ;;; it; a change made from the REPL shows in the next screenshot; then Escape
 ;;; quits. Every wait is bounded.
-(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 rdelim) (ice-9 binary-ports) (rnrs bytevectors))
+(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 rdelim) (ice-9 popen) (ice-9 binary-ports) (rnrs bytevectors))
 
 (load "support.scm")
 
@@ -130,6 +130,57 @@
     (test-equal "… and no longer at x 20" background (and after origin (canvas-pixel-of after 20 21))))
   (close-port client))
 
+;; The mouse: the pointer over canvas pixel (30, 12) and a click there.
+(when origin
+  (system* "xdotool" "mousemove" (number->string (+ (car origin) 61)) (number->string (+ (cdr origin) 25)))
+  (usleep 300000)
+  (system* "xdotool" "click" "1")
+  (test-equal "a click reports the pointer in the picture's pixels, the button held"
+    "click 30 12 (left)" (read-line-within from-game 20))
+  (usleep 300000)
+  (let ((marked (screenshot "mouse.xwd")))
+    (test-equal "the game's marker is drawn under the pointer" '(255 255 0)
+      (and marked (canvas-pixel-of marked 30 12)))
+    (test-equal "… and nowhere beside it" background (and marked (canvas-pixel-of marked 31 12)))))
+
+;; Resized to 300 × 200 at the screen's corner: the largest whole scale that
+;; fits is 4 (256 × 192), centred with black bars of 22 and 4 px.
+(define window-id
+  (let* ((p (open-input-pipe "xdotool search --name window-test 2>/dev/null"))
+         (line (read-line p)))
+    (close-pipe p)
+    (and (string? line) line)))
+(test-assert "xdotool finds the game's window" window-id)
+(define (canvas-pixel-at shot ox oy scale cx cy)
+  ;; The screen's scale × scale block for canvas pixel (cx, cy), if uniform.
+  (let* ((x (+ ox (* scale cx))) (y (+ oy (* scale cy)))
+         (block (append-map (lambda (dy) (map (lambda (dx) (screen-pixel shot (+ x dx) (+ y dy))) (iota scale)))
+                            (iota scale))))
+    (and (every (lambda (p) (equal? p (car block))) block) (car block))))
+(when window-id
+  (system* "xdotool" "windowmove" window-id "0" "0")
+  (system* "xdotool" "windowsize" window-id "300" "200")
+  (usleep 700000)
+  (let ((resized (screenshot "resized.xwd")))
+    (test-equal "resized: the red bar starts at (22, 4), scaled ×4" '(230 60 60)
+      (and resized (canvas-pixel-at resized 22 4 4 0 0)))
+    (test-equal "… the box at x 40 as the REPL left it, ×4" '(80 220 100)
+      (and resized (canvas-pixel-at resized 22 4 4 40 20)))
+    (test-equal "… black bars left and right" '((0 0 0) (0 0 0) (0 0 0))
+      (and resized (list (screen-pixel resized 10 100) (screen-pixel resized 21 100) (screen-pixel resized 290 100))))
+    (test-equal "… pixel-exact: every canvas pixel a 4 × 4 block" #t
+      (and resized (every (lambda (cy) (every (lambda (cx) (and (canvas-pixel-at resized 22 4 4 cx cy) #t)) (iota 64)))
+                          (iota 48)))))
+  ;; F11: fullscreen on the 320 × 240 screen, ×5, no bars.
+  (system* "xdotool" "mousemove" "150" "100")
+  (system* "xdotool" "key" "F11")
+  (usleep 700000)
+  (let ((full (screenshot "fullscreen.xwd")))
+    (test-equal "F11: fullscreen, the picture ×5 from the screen's corner" '(230 60 60)
+      (and full (canvas-pixel-at full 0 0 5 0 0)))
+    (test-equal "… its last pixel at the screen's far corner" background
+      (and full (canvas-pixel-at full 0 0 5 63 47)))))
+
 (system* "xdotool" "key" "Escape")
 (test-equal "Escape quits the game" "quit" (read-line-within from-game 20))
 (define status #f)
@@ -140,6 +191,49 @@
   (kill game SIGKILL)
   (waitpid game))
 (test-equal "… which exits with status 0" 0 status)
+;; pause-when-unfocused?: focus taken to the root window, the game stops
+;; stepping; given back, it steps again at its own pace, no catch-up burst.
+(define (lines-within port seconds)
+  ;; Every line that arrives within SECONDS.
+  (let ((end (+ (get-internal-real-time) (* seconds internal-time-units-per-second))))
+    (let loop ((acc '()))
+      (let ((left (/ (- end (get-internal-real-time)) internal-time-units-per-second)))
+        (if (<= left 0)
+            (reverse acc)
+            (let ((line (read-line-within port (max 0.01 (exact->inexact left)))))
+              (if (and line (not (eof-object? line))) (loop (cons line acc)) (reverse acc))))))))
+(define focus-out (pipe))
+(define focus-game (spawn host (list "--window" "--scale" "2" (string-append (getenv "DS_TEST_DATA") "/scripts/focus-game.scm"))
+                          (port->fdes (cdr focus-out))))
+(close-port (cdr focus-out))
+(test-equal "the focus game steps" "frame 0" (read-line-within (car focus-out) 20))
+(define (window-named name)
+  (let* ((p (open-input-pipe (string-append "xdotool search --name " name " 2>/dev/null")))
+         (line (read-line p)))
+    (close-pipe p)
+    (and (string? line) line)))
+(define root-window
+  (let* ((p (open-input-pipe "xdotool search --maxdepth 0 --name '' 2>/dev/null")) (line (read-line p)))
+    (close-pipe p)
+    (and (string? line) line)))
+(define focus-window
+  (let ((found #f))
+    (wait-for (lambda () (set! found (window-named "focus-test")) found) 10)
+    found))
+(test-equal "xdotool finds the focus game's window and the root" #t (and (string? focus-window) (string? root-window)))
+(when (and focus-window root-window)
+  (system* "xdotool" "windowfocus" focus-window)
+  (lines-within (car focus-out) 0.5)
+  (system* "xdotool" "windowfocus" root-window)
+  (lines-within (car focus-out) 0.5)  ; what was on its way
+  (test-equal "unfocused, it takes no step for a second" '() (lines-within (car focus-out) 1))
+  (system* "xdotool" "windowfocus" focus-window)
+  (let ((after (lines-within (car focus-out) 1)))
+    (test-assert "focused again, it steps: about 60 frames in a second, no burst of catch-up steps"
+      (<= 2 (length after) 5))))
+(kill focus-game SIGKILL)
+(waitpid focus-game)
+
 (kill xvfb SIGTERM)
 (waitpid xvfb)
 (test-end "window")
