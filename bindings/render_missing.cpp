@@ -17,7 +17,8 @@ constexpr const char* kStandIns[] = {
     "%draw-rect!",        "%draw-line!",              "%draw-sprite!",          "%draw-text!",
     "%display-set-input-map!", "%display-poll!",      "%open-audio!",           "%load-sound",
     "%play-sound",        "%note-pushed-pairs!",      "%load-music",            "%play-music",
-    "%stop-music",        "%set-volume!",             "%display-set-fullscreen!", "%display-fullscreen?"};
+    "%stop-music",        "%set-volume!",             "%display-set-fullscreen!", "%display-fullscreen?",
+    "%display-refresh-rate"};
 
 // One function per name (I), as each registered function has one name.
 template <size_t I>

@@ -23,6 +23,7 @@
 #include "canvas.hpp"
 #include "draw_list.hpp"
 #include "input.hpp"
+#include "interpolate.hpp"
 #include "scene_draw.hpp"
 #include "tile_art.hpp"
 #include "window.hpp"
@@ -45,6 +46,8 @@ struct Display {
     std::vector<std::string> actions;  // by action number
     // Per-frame scratch, kept so a frame does not allocate.
     std::vector<EntityView> entities;
+    std::vector<EntityView> before;             // the step before, when drawing between two
+    std::vector<int64_t> now_ids, before_ids;   // their #:id tags
     std::vector<Trail> trails;
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     DrawCounts counts;
@@ -176,6 +179,13 @@ SCM fullscreen_p(SCM display) {
     return scm_from_bool(d->window ? d->window->fullscreen() : d->fullscreen);
 }
 
+SCM refresh_rate(SCM display) {
+    Failure f;
+    Display* d = display_of(display, "game-run!", f);
+    if (f) raise(f);
+    return scm_from_int(d->window ? d->window->refresh_hz() : kDefaultRefreshHz);
+}
+
 SCM close_window(SCM display) {
     Failure f;
     if (Display* d = display_of(display, "game-run!", f)) guarded(f, nullptr, [&] { d->window.reset(); });
@@ -283,8 +293,42 @@ void warn_all(Display& d) {
     d.warnings.clear();
 }
 
+// The #:id tag of each entity of a validated list.
+void id_tags(SCM entities, std::vector<int64_t>& out) {
+    out.clear();
+    for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p))
+        out.push_back(identity_tag(plist_get(SCM_CAR(p), keys->key[kId], SCM_BOOL_F)));
+}
+
+// Drawing between two steps (interpolate.hpp): `between` is #f, or
+// (previous alpha camera-x camera-y): the list and the camera the step
+// before left, and how far past it the clock is.
+bool between_steps(Display& d, SceneView& view, SCM entities, SCM between, Failure& f) {
+    if (SCM_UNBNDP(between) || scm_is_false(between)) return true;
+    if (scm_ilength(between) != 4) {
+        fail_arg(f, "between", between, "#f or (previous-entities alpha camera-x camera-y)");
+        return false;
+    }
+    const SCM previous = scm_list_ref(between, scm_from_int(0)), alpha = scm_list_ref(between, scm_from_int(1));
+    double a = 0, px = 0, py = 0;
+    if (!from_scm(alpha, a, "alpha", f) || !from_scm(scm_list_ref(between, scm_from_int(2)), px, "camera x then", f) ||
+        !from_scm(scm_list_ref(between, scm_from_int(3)), py, "camera y then", f))
+        return false;
+    if (!(a >= 0 && a <= 1)) {
+        fail_arg(f, "alpha", alpha, "a number from 0 to 1");
+        return false;
+    }
+    if (!entity_views(previous, d.before, f)) return false;
+    id_tags(entities, d.now_ids);
+    id_tags(previous, d.before_ids);
+    interpolate_views(d.entities, d.now_ids, d.before, d.before_ids, a);
+    view.camera_x = interpolated(px, view.camera_x, a);
+    view.camera_y = interpolated(py, view.camera_y, a);
+    return true;
+}
+
 SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history,
-                 SCM time_ms) {
+                 SCM time_ms, SCM between) {
     Failure f;
     Display* d = display_of(display, "game-draw", f);
     SceneView view;
@@ -298,6 +342,7 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
     if (d && !f && from_scm(cam_x, view.camera_x, "camera x", f) && from_scm(cam_y, view.camera_y, "camera y", f))
         guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too
             if (!entity_views(entities, d->entities, f)) return;
+            if (!between_steps(*d, view, entities, between, f)) return;
             view.debug = scm_is_true(debug);
             d->trails.clear();
             d->pairs.clear();
@@ -664,9 +709,13 @@ void register_render_procedures() {
     define_procedure<2, 0, 0, set_fullscreen>("%display-set-fullscreen!",
         WrapperDoc{"(display on?)", "game-fullscreen-set!", engine});
     define_procedure<1, 0, 0, fullscreen_p>("%display-fullscreen?", WrapperDoc{"(display)", "game-fullscreen?", engine});
-    define_procedure<7, 1, 0, display_draw>("%display-draw!",
-        "(display tilemap camera-x camera-y entities debug? history [time-ms]): draws a frame (and shows it "
-        "in the window); time-ms, the game's clock, picks each animated tile's frame.");
+    define_procedure<1, 0, 0, refresh_rate>("%display-refresh-rate",
+        "(display): the refresh rate, in Hz, of the display its window is on (60 when unknown).");
+    define_procedure<7, 2, 0, display_draw>("%display-draw!",
+        "(display tilemap camera-x camera-y entities debug? history [time-ms between]): draws a frame (and "
+        "shows it in the window); time-ms, the game's clock, picks each animated tile's frame; between, "
+        "(previous-entities alpha camera-x camera-y) of the step before, draws each entity and the camera "
+        "alpha of the way from then to now.");
     define_procedure<2, 0, 0, display_save_png>("%display-save-png",
         "(display file): writes the last frame drawn as a PNG.");
     define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",

@@ -15,7 +15,7 @@
                           %display-set-background!
                           %display-clear-commands! %display-set-input-map! %display-poll!
                           %display-open-window! %display-close-window! %open-audio!
-                          %display-set-fullscreen! %display-fullscreen?
+                          %display-set-fullscreen! %display-fullscreen? %display-refresh-rate
                           %play-sound %play-music %stop-music %set-volume!
                           %note-pushed-pairs! %max-substeps))
   #:export (make-game game? game-title game-width game-height game-frame-delay
@@ -65,7 +65,7 @@ picture (or there is no window, and the input script holds no mouse)."
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
               input input-script frame sounds music history-size history
-              display debug-draw input-log stack-limit pause-when-unfocused)
+              display debug-draw input-log stack-limit pause-when-unfocused interpolate)
   game?
   (title game-title)
   (width game-width)
@@ -89,7 +89,8 @@ picture (or there is no window, and the input script holds no mouse)."
   (debug-draw game-debug-draw? %game-debug-draw-set!)
   (input-log %game-input-log %game-input-log-set!)  ; a bounded log of (frame . held) at each change
   (stack-limit game-stack-limit)    ; bytes of Scheme stack each hook may use
-  (pause-when-unfocused game-pause-when-unfocused?))
+  (pause-when-unfocused game-pause-when-unfocused?)
+  (interpolate game-interpolate?))
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -170,7 +171,7 @@ collision mode, substeps and resting contacts."
                     (engine-update default-engine-update)
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
                     (input-script '()) (history 0) (input-map #f) (background #f)
-                    (stack-limit default-stack-limit) (pause-when-unfocused? #f))
+                    (stack-limit default-stack-limit) (pause-when-unfocused? #f) (interpolate? #t))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
@@ -185,7 +186,10 @@ engine's (24 28 40). STACK-LIMIT is the Scheme stack, in bytes, each hook
 raises stack-overflow naming itself (64 MiB by default).
 PAUSE-WHEN-UNFOCUSED? stops the game's steps while its window has lost the
 keyboard focus; it resumes where it stopped, with no burst of catch-up
-steps."
+steps. INTERPOLATE? (in a window) draws each entity and the camera between
+their last two steps, at the fraction of a step the clock has run, so
+motion is smooth at any refresh rate; physics is not touched, and headless
+runs and captures draw the stepped state."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
@@ -222,7 +226,8 @@ steps."
                             collision-mode substeps (and resting-contacts? #t)
                             (make-input '() '()) input-script 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
-                            display #f (make-bounded-log) stack-limit (and pause-when-unfocused? #t))))
+                            display #f (make-bounded-log) stack-limit (and pause-when-unfocused? #t)
+                            (and interpolate? #t))))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       game)))
 
@@ -536,8 +541,10 @@ window."
       (filter-map (lambda (e) (and (cdr e) (scene-entities (cdr e)))) (reverse (game-history game)))
       '()))
 
-(define (draw-game! game)
-  ;; One frame into the game's display (and its window, when one is open).
+(define* (draw-game! game #:optional (between #f))
+  ;; One frame into the game's display (and its window, when one is open);
+  ;; BETWEEN, (previous-entities alpha camera-x camera-y), draws it between
+  ;; the step before and this one.
   (let ((display (game-display game))
         (scene (game-scene game)))
     (unless display
@@ -550,7 +557,8 @@ window."
                     (game-debug-draw? game)
                     (trail-scenes game)
                     ;; The game's clock, for animated tiles.
-                    (* (game-frame game) (game-frame-delay game)))))
+                    (* (game-frame game) (game-frame-delay game))
+                    between)))
 
 (define (game-capture game file)
   "Draw GAME's current frame — its map, entities, what its render: procedure
@@ -717,42 +725,75 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
 ;; ever longer catch-up frames.
 (define *max-catch-up-steps* 5)
 
+;; What the step before left, for drawing between it and this one:
+;; (entities camera-x camera-y).
+(define (state-of game)
+  (let ((scene (game-scene game)))
+    (and scene (list (scene-entities scene) (camera-x (scene-camera scene)) (camera-y (scene-camera scene))))))
+
+(define (open-frame-log)
+  (let ((file (frame-log-file)))
+    (and file (open-output-file file))))
+
 (define (run-window! game frames)
-  ;; Real time at a fixed timestep: time accumulates, and each fixed step of
-  ;; frame-delay ms consumes it; the window shows the last step's picture.
+  ;; Real time at a fixed timestep ("Fix Your Timestep!"): time accumulates,
+  ;; and each fixed step of frame-delay ms consumes it. The window presents
+  ;; at the display's refresh rate, not the step's: each entity and the
+  ;; camera are drawn between the last two steps, α of the way (the share of
+  ;; a step the clock holds), so motion is smooth at 60, 75, 120 or 144 Hz.
   (let* ((display (game-display game))
          (dt (game-frame-delay game))
          (tick (* dt (/ internal-time-units-per-second 1000))))
     (when (window-fullscreen) (%display-set-fullscreen! display #t))
     (%display-open-window! display (game-title game) (window-scale))
     (%open-audio! #t)
-    (dynamic-wind
-      (lambda () #t)
-      (lambda ()
-        (let loop ((last (get-internal-real-time)) (owed tick))
-          (run-frame-hooks! game)
-          (let* ((polled (%display-poll! display))
-                 (mouse (list-ref polled 3))
-                 (held (if mouse (append (car polled) (list (cons 'mouse mouse))) (car polled)))
-                 ;; Unfocused and told to pause: no step, and no time owed.
-                 (paused? (and (game-pause-when-unfocused? game) (not (list-ref polled 4)))))
-            (when (odd? (caddr polled))
-              (game-debug-draw-set! game (not (game-debug-draw? game))))
-            (unless (or (cadr polled) (memq 'quit held)
-                        (and frames (>= (game-frame game) frames)))
-              (let* ((now (get-internal-real-time))
-                     (owed (if paused? 0 (+ owed (- now last))))
-                     (due (floor (/ owed tick)))
-                     (steps (min due *max-catch-up-steps*)))
-                (let step ((k 0))
-                  (when (and (< k steps) (not (and frames (>= (game-frame game) frames))))
-                    (step-or-pause! game dt held)
-                    (step (+ k 1))))
-                (draw-game! game)
-                (let ((owed (if (> due steps) 0 (- owed (* steps tick)))))
-                  (wait-until (+ (get-internal-real-time) (- tick owed)))
-                  (loop now owed)))))))
-      (lambda () (%display-close-window! display)))))
+    (let ((present (round (/ internal-time-units-per-second (%display-refresh-rate display))))
+          (log (open-frame-log))
+          (start (get-internal-real-time)))
+      (dynamic-wind
+        (lambda () #t)
+        (lambda ()
+          (let loop ((last start) (owed tick) (before #f) (next-present start) (dropped 0))
+            (run-frame-hooks! game)
+            (let* ((polled (%display-poll! display))
+                   (mouse (list-ref polled 3))
+                   (held (if mouse (append (car polled) (list (cons 'mouse mouse))) (car polled)))
+                   ;; Unfocused and told to pause: no step, and no time owed.
+                   (paused? (and (game-pause-when-unfocused? game) (not (list-ref polled 4)))))
+              (when (odd? (caddr polled))
+                (game-debug-draw-set! game (not (game-debug-draw? game))))
+              (unless (or (cadr polled) (memq 'quit held)
+                          (and frames (>= (game-frame game) frames)))
+                (let* ((now (get-internal-real-time))
+                       (owed (if paused? 0 (+ owed (- now last))))
+                       (due (floor (/ owed tick)))
+                       (steps (min due *max-catch-up-steps*))
+                       (before
+                        (let step ((k 0) (before before))
+                          (if (and (< k steps) (not (and frames (>= (game-frame game) frames))))
+                              (let ((then (state-of game)))
+                                (step-or-pause! game dt held)
+                                (step (+ k 1) then))
+                              before)))
+                       (dropped (+ dropped (- due steps)))  ; steps a stall's backlog lost
+                       (owed (if (> due steps) 0 (- owed (* steps tick))))
+                       (alpha (min 1 (max 0 (exact->inexact (/ owed tick))))))
+                  (draw-game! game (and (game-interpolate? game) before
+                                        (list (car before) alpha (cadr before) (caddr before))))
+                  (when log
+                    (format log "~a ~a ~a ~a~%"
+                            ;; The frame's clock: the time its steps and α were taken at.
+                            (/ (round (/ (* 1000000 (- now start)) internal-time-units-per-second)) 1000.)
+                            (game-frame game) (/ (round (* 10000 alpha)) 10000.) dropped))
+                  ;; The next present is one refresh on; a loop that fell
+                  ;; behind presents at once and starts counting afresh.
+                  (let* ((next (+ next-present present))
+                         (next (if (< next (get-internal-real-time)) (get-internal-real-time) next)))
+                    (wait-until next)
+                    (loop now owed before next dropped)))))))
+        (lambda ()
+          (when log (close-port log))
+          (%display-close-window! display))))))
 
 (define* (game-run! game #:key (frames #f))
   "Run GAME at a fixed timestep (dt = frame-delay ms): input, then

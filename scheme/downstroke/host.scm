@@ -224,6 +224,9 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --scale N           the window's whole scale factor (default: fit the screen);
                       the window can be resized, the picture stays whole-scaled
   --fullscreen        open the window fullscreen
+  --frame-log FILE    with --window: write each presented frame's time (ms),
+                      step, alpha (the share of a step drawn past it) and
+                      the steps dropped after stalls so far
   --debug             start with the debug overlay on (F1 toggles it in a window)
   --capture DIR       headless, and draw every frame off-screen into
                       DIR/NNNNNN.png (NNNNNN: the frame number)
@@ -258,6 +261,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
           ((string=? (car args) "--no-auto-compile") (loop (cdr args) (acons 'no-auto-compile #t opts)))
           ((string=? (car args) "--debug") (loop (cdr args) (acons 'debug #t opts)))
           ((string=? (car args) "--fullscreen") (loop (cdr args) (acons 'fullscreen #t opts)))
+          ((string=? (car args) "--frame-log") (with-value 'frame-log string?))
           ((string=? (car args) "--scale")
            (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
           ((string=? (car args) "--capture") (with-value 'capture string?))
@@ -298,6 +302,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
            (let ((scale (assq-ref opts 'scale)))
              (when scale (window-scale (string->number scale))))
            (when (assq-ref opts 'fullscreen) (window-fullscreen #t))
+           (let ((log (assq-ref opts 'frame-log))) (when log (frame-log-file log)))
            #t)
           (else #t))))
 

@@ -2,7 +2,7 @@
 ;;; and how the host asked frames to be shown (headless, a window, captures).
 (define-module (downstroke render)
   #:use-module (downstroke native)
-  #:export (renderer-available? display-mode capture-directory window-scale window-fullscreen
+  #:export (renderer-available? display-mode capture-directory window-scale window-fullscreen frame-log-file
             debug-draw-default
             current-display default-input-map
             draw-rect draw-line draw-sprite draw-text draw-label text-width
@@ -19,6 +19,12 @@
 (define capture-directory (make-parameter #f))
 ;; --scale N: the window's whole scale factor; 0 fits the screen.
 (define window-scale (make-parameter 0))
+;; --frame-log FILE: the window loop writes a line per presented frame, "ms
+;; step alpha dropped" (the frame's clock: ms since the loop began when it
+;; took its steps and α; the game's frame counter,
+;; the share of a step drawn past it, and the steps a stall's backlog lost
+;; so far), to check its pacing.
+(define frame-log-file (make-parameter #f))
 ;; --fullscreen: the window opens fullscreen (F11 or Alt+Return toggles it).
 (define window-fullscreen (make-parameter #f))
 ;; --debug: every game starts with the debug overlay on.

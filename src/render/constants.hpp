@@ -35,6 +35,9 @@ constexpr int64_t kMaxDrawCommands = int64_t(1) << 18;
 // The largest window scale tried when fitting the screen: beyond this a
 // pixel-art game is already huge, and a 64× surface blit would be wasteful.
 constexpr int kMaxScale = 16;
+// The rate a window presents at when SDL cannot tell the display's: the
+// commonest refresh rate, and what Xvfb's displays are paced as.
+constexpr int kDefaultRefreshHz = 60;
 
 // A box for an entity with no #:sprite, and the overlay's boxes, by role.
 // Hues far apart so a glance tells them apart; alpha keeps the map visible.

@@ -103,4 +103,11 @@ void Window::set_fullscreen(bool on) {
 
 bool Window::fullscreen() const { return fullscreen_; }
 
+int Window::refresh_hz() const {
+    SDL_DisplayMode mode{};
+    const int index = SDL_GetWindowDisplayIndex(window_);
+    if (SDL_GetCurrentDisplayMode(index < 0 ? 0 : index, &mode) != 0 || mode.refresh_rate <= 0) return kDefaultRefreshHz;
+    return mode.refresh_rate;
+}
+
 }  // namespace ds::render

@@ -37,6 +37,9 @@ public:
 
     void set_fullscreen(bool on);
     bool fullscreen() const;
+    // The refresh rate of the display the window is on, in Hz; 60 when
+    // SDL does not know it (Xvfb, some drivers).
+    int refresh_hz() const;
 
 private:
     SDL_Window* window_ = nullptr;

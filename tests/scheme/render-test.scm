@@ -348,4 +348,20 @@
 (test-assert "a music name must be a symbol"
   (mentions? (error-text (lambda () (play-music "theme"))) "play-music" "name"))
 
+;;; ---------------------------------------------------------------- drawing between steps
+(define between-game (make-game width: 32 height: 8))
+(define (draw-between previous alpha)
+  ((@ (downstroke native) %display-draw!) ((@@ (downstroke engine) game-display) between-game) #f 0 0
+   (list '(#:x 10 #:y 0 #:width 4 #:height 4)) #f '() 0
+   (and previous (list previous alpha 0 0))))
+(draw-between (list '(#:x 2 #:y 0 #:width 4 #:height 4)) 0.5)
+(test-equal "between steps, a box is drawn α of the way: x 6 at α 0.5 from 2 to 10"
+  '((170 170 170) (24 28 40) (24 28 40))
+  (map (lambda (x) (list-head ((@ (downstroke native) %display-pixel) ((@@ (downstroke engine) game-display) between-game) x 0) 3)) '(6 5 10)))
+(draw-between #f 0)
+(test-equal "without the step before, where it is" '(170 170 170)
+  (list-head ((@ (downstroke native) %display-pixel) ((@@ (downstroke engine) game-display) between-game) 10 0) 3))
+(test-assert "an alpha outside 0–1 is refused"
+  (mentions? (error-text (lambda () (draw-between (list '(#:x 2 #:y 0 #:width 4 #:height 4)) 2))) "alpha" "2"))
+
 (test-end "render")

@@ -234,6 +234,35 @@
 (kill focus-game SIGKILL)
 (waitpid focus-game)
 
+;; Pacing: the loop presents at the display's rate (Xvfb: 60 Hz) while the
+;; game steps at 62.5 Hz (16 ms), drawing between steps. Two seconds of its
+;; frame log ("ms step alpha dropped" a line).
+(define frame-log (string-append dir "/frames.log"))
+(define paced (spawn host (list "--window" "--scale" "1" "--frame-log" frame-log
+                                (string-append (getenv "DS_TEST_DATA") "/scripts/focus-game.scm"))
+                     #f))
+(usleep 2500000)
+(kill paced SIGTERM)
+(waitpid paced)
+(define presented
+  (if (file-exists? frame-log)
+      (call-with-input-file frame-log
+        (lambda (port)
+          (let loop ((acc '()))
+            (let ((line (read-line port)))
+              (if (eof-object? line)
+                  (reverse acc)
+                  (let ((fields (map string->number (string-split line #\space))))
+                    (loop (if (and (= 4 (length fields)) (every number? fields)) (cons fields acc) acc))))))))
+      '()))
+(test-assert "the frame log has about 60 presents a second (at least 100 in 2 s)" (>= (length presented) 100))
+(test-equal "no present repeats a step's picture: within a step, α only grows" #t
+  (every (lambda (a b) (or (not (= (cadr a) (cadr b))) (< (caddr a) (caddr b))))
+         presented (if (pair? presented) (cdr presented) '())))
+(test-equal "α stays within [0, 1)" #t (every (lambda (p) (and (<= 0 (caddr p)) (< (caddr p) 1))) presented))
+(test-equal "the step count keeps to real time within one step (steps dropped after a stall counted)" #t
+  (every (lambda (p) (<= (abs (- (+ (cadr p) (cadddr p)) (/ (car p) 16))) 1.5)) presented))
+
 (kill xvfb SIGTERM)
 (waitpid xvfb)
 (test-end "window")
