@@ -186,6 +186,13 @@ SCM refresh_rate(SCM display) {
     return scm_from_int(d->window ? d->window->refresh_hz() : kDefaultRefreshHz);
 }
 
+SCM vsync_p(SCM display) {
+    Failure f;
+    Display* d = display_of(display, "game-run!", f);
+    if (f) raise(f);
+    return scm_from_bool(d->window && d->window->vsync());
+}
+
 SCM close_window(SCM display) {
     Failure f;
     if (Display* d = display_of(display, "game-run!", f)) guarded(f, nullptr, [&] { d->window.reset(); });
@@ -709,6 +716,8 @@ void register_render_procedures() {
     define_procedure<2, 0, 0, set_fullscreen>("%display-set-fullscreen!",
         WrapperDoc{"(display on?)", "game-fullscreen-set!", engine});
     define_procedure<1, 0, 0, fullscreen_p>("%display-fullscreen?", WrapperDoc{"(display)", "game-fullscreen?", engine});
+    define_procedure<1, 0, 0, vsync_p>("%display-vsync?",
+        "(display): whether its window presents on the display's vertical blank.");
     define_procedure<1, 0, 0, refresh_rate>("%display-refresh-rate",
         "(display): the refresh rate, in Hz, of the display its window is on (60 when unknown).");
     define_procedure<7, 2, 0, display_draw>("%display-draw!",

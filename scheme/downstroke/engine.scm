@@ -15,7 +15,7 @@
                           %display-set-background!
                           %display-clear-commands! %display-set-input-map! %display-poll!
                           %display-open-window! %display-close-window! %open-audio!
-                          %display-set-fullscreen! %display-fullscreen? %display-refresh-rate
+                          %display-set-fullscreen! %display-fullscreen? %display-refresh-rate %display-vsync?
                           %play-sound %play-music %stop-music %set-volume!
                           %note-pushed-pairs! %max-substeps))
   #:export (make-game game? game-title game-width game-height game-frame-delay
@@ -750,6 +750,9 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
     (let ((present (round (/ internal-time-units-per-second (%display-refresh-rate display))))
           (log (open-frame-log))
           (start (get-internal-real-time)))
+      (when log
+        (format log "# ~a Hz, ~a~%" (%display-refresh-rate display)
+                (if (%display-vsync? display) "presented on vsync" "paced by the loop (no vsync)")))
       (dynamic-wind
         (lambda () #t)
         (lambda ()

@@ -37,9 +37,29 @@ Window::Window(const std::string& title, int width, int height, int scale, bool 
     // Smaller than one picture pixel per pixel the picture would be cut.
     SDL_SetWindowMinimumSize(window_, width, height);
     if (fullscreen) set_fullscreen(true);
+    open_vsync_renderer();
+}
+
+void Window::open_vsync_renderer() {
+    // Only a renderer that really syncs is worth it: a software one (what
+    // SDL offers under Xvfb) copies as the surface path does, more slowly.
+    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");
+    renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_ACCELERATED | SDL_RENDERER_PRESENTVSYNC);
+    SDL_RendererInfo info{};
+    if (renderer_ && SDL_GetRendererInfo(renderer_, &info) == 0 && (info.flags & SDL_RENDERER_PRESENTVSYNC) &&
+        !(info.flags & SDL_RENDERER_SOFTWARE))
+        texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ARGB8888, SDL_TEXTUREACCESS_STREAMING, width_, height_);
+    if (texture_) {
+        vsync_ = true;
+        return;
+    }
+    if (renderer_) SDL_DestroyRenderer(renderer_);
+    renderer_ = nullptr;
 }
 
 Window::~Window() {
+    if (texture_) SDL_DestroyTexture(texture_);
+    if (renderer_) SDL_DestroyRenderer(renderer_);
     SDL_DestroyWindow(window_);
     SDL_QuitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER);
 }
@@ -51,6 +71,24 @@ PictureView Window::view() const {
 }
 
 void Window::present(const Canvas& canvas) {
+    if (renderer_) present_by_renderer(canvas);
+    else present_by_surface(canvas);
+}
+
+void Window::present_by_renderer(const Canvas& canvas) {
+    int w = 0, h = 0;
+    SDL_GetRendererOutputSize(renderer_, &w, &h);  // pixels: a high-DPI window has more than its size
+    const PictureView v = picture_view(canvas.width(), canvas.height(), w, h);
+    const SDL_Surface* s = canvas.surface();
+    SDL_UpdateTexture(texture_, nullptr, s->pixels, s->pitch);
+    SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
+    SDL_RenderClear(renderer_);
+    const SDL_Rect dst{v.x, v.y, canvas.width() * v.scale, canvas.height() * v.scale};
+    SDL_RenderCopy(renderer_, texture_, nullptr, &dst);
+    SDL_RenderPresent(renderer_);  // waits for the vertical blank
+}
+
+void Window::present_by_surface(const Canvas& canvas) {
     SDL_Surface* screen = SDL_GetWindowSurface(window_);  // a new one after a resize
     if (!screen) throw RenderError(std::string("the window has no surface: ") + SDL_GetError());
     const PictureView v = picture_view(canvas.width(), canvas.height(), screen->w, screen->h);

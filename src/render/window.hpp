@@ -28,9 +28,12 @@ public:
     // Where the picture is in the window as it is now: the largest whole
     // scale at which it fits (at least 1), centred.
     PictureView view() const;
-    // Shows the canvas scaled and centred, the rest black. Throws
-    // RenderError when the window's surface is gone.
+    // Shows the canvas scaled and centred, the rest black: through an SDL
+    // renderer on vsync when the system gives one, else by the window's
+    // surface. Throws RenderError when the window's surface is gone.
     void present(const Canvas& canvas);
+    // Whether presenting waits for the display's vertical blank.
+    bool vsync() const { return vsync_; }
     // Feeds every pending event to `input`; F11 and Alt+Return toggle
     // fullscreen here and reach no binding.
     void poll(InputState& input);
@@ -51,6 +54,15 @@ private:
     // included. `windowed_` is where to go back to.
     bool fullscreen_ = false;
     SDL_Rect windowed_{0, 0, 0, 0};
+    // The vsync path: a renderer that presents on the vertical blank and a
+    // streaming texture the canvas is copied into each frame. Null when the
+    // system has none (Xvfb, a bare framebuffer): the surface path is used.
+    SDL_Renderer* renderer_ = nullptr;
+    SDL_Texture* texture_ = nullptr;
+    bool vsync_ = false;
+    void open_vsync_renderer();
+    void present_by_renderer(const Canvas& canvas);
+    void present_by_surface(const Canvas& canvas);
 };
 
 // The largest whole scale at which width × height fits in bounds_w × bounds_h
