@@ -5,7 +5,19 @@
   #:use-module (downstroke render)
   #:use-module (ice-9 format)
   #:use-module ((srfi srfi-1) #:select (any))
-  #:export (main))
+  #:export (main script-interfaces use-script-environment!))
+
+;;; What a script run by `downstroke' (and its REPL) sees without importing
+;;; anything: the engine, and the list and multiple-value tools Scheme game
+;;; code reaches for (find, any, filter-map, fold, let-values …), so an
+;;; example copied from the docs runs as it is. The docs test evaluates
+;;; every example in exactly this environment (tests/scheme/docs-test.scm).
+(define script-interfaces '((downstroke) (srfi srfi-1) (srfi srfi-11)))
+
+(define (use-script-environment! module)
+  "Make MODULE see what a script sees (script-interfaces)."
+  (for-each (lambda (name) (module-use! module (resolve-interface name))) script-interfaces)
+  module)
 
 ;;; Guile's REPL, (downstroke repl-server) and (system vm frame) are named
 ;;; with @, which loads a module when the code naming it first runs: only
@@ -132,8 +144,7 @@
       (lambda ()
         (save-module-excursion
          (lambda ()
-           (set-current-module (resolve-module '(guile-user)))
-           (module-use! (current-module) (resolve-interface '(downstroke)))
+           (set-current-module (use-script-environment! (resolve-module '(guile-user))))
            (load-script path compile?)))
         0)
       (lambda (key . args)
@@ -150,8 +161,7 @@
         (else 1)))
 
 (define (run-repl)
-  (set-current-module (resolve-module '(guile-user)))
-  (module-use! (current-module) (resolve-interface '(downstroke)))
+  (set-current-module (use-script-environment! (resolve-module '(guile-user))))
   (false-if-exception
    (begin ((module-ref (resolve-interface '(ice-9 readline)) 'activate-readline)) #t))
   ((@ (system repl repl) start-repl))

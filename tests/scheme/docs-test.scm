@@ -3,9 +3,11 @@
 ;;; For each docs/*.org file (in name order) the `#+begin_src scheme' blocks
 ;;; are taken in order and evaluated, form by form, in one fresh module per
 ;;; file, so a later block sees what an earlier block of the same file
-;;; defined. The module imports (downstroke), (srfi srfi-1) and
-;;; (srfi srfi-11); the text is read as the host reads scripts, with postfix
-;;; keywords (`entities:' is #:entities).
+;;; defined. The module is a script's environment, made by the host's own
+;;; use-script-environment! ((downstroke), (srfi srfi-1), (srfi srfi-11)),
+;;; so an example that runs here runs in a user's script; the text is read
+;;; as the host reads scripts, with postfix keywords (`entities:' is
+;;; #:entities).
 ;;;
 ;;; Conventions for the documentation:
 ;;;
@@ -99,9 +101,9 @@
 
 ;;; ---------------------------------------------------------------- running
 (define (fresh-docs-module)
-  (let ((m (make-fresh-user-module)))
-    (for-each (lambda (name) (module-use! m (resolve-interface name)))
-              '((downstroke) (srfi srfi-1) (srfi srfi-11)))
+  ;; A script's own environment, as the host gives it (guile-user's, plus
+  ;; script-interfaces): an example that runs here runs as a user's script.
+  (let ((m ((@ (downstroke host) use-script-environment!) (make-fresh-user-module))))
     (module-define! m 'demo-map demo-map-path)
     (module-define! m 'test-data test-data-path)
     m))

@@ -89,6 +89,14 @@
   (list 1 "" (string-append "In procedure open-file: No such file or directory: \"" dir "/no-such.scm\"\n"
                             "(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n"))
   (run (string-append dir "/no-such.scm")))
+(test-equal "a script sees SRFI-1 and SRFI-11 without importing them, as the docs' examples assume"
+  '(0 "(#:id b #:x 2) 3 (b)\n" "")
+  (run (write-script "plain.scm"
+                     (string-append
+                      "(define es '((#:id a #:x 1) (#:id b #:x 2)))\n"
+                      "(let-values (((x y) (values 1 2)))\n"
+                      "  (format #t \"~s ~s ~s~%\" (find (lambda (e) (eq? (entity-ref e #:id) 'b)) es) (+ x y)\n"
+                      "          (filter-map (lambda (e) (and (> (entity-ref e #:x) 1) (entity-ref e #:id))) es)))\n"))))
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
 
