@@ -153,6 +153,25 @@
       (lambda (key . args)
         (unless (eq? key 'quit) (report-error key args path))))))
 
+(define (test-environment)
+  ;; A test file's module: a script's environment, with SRFI-64.
+  (let ((m (use-script-environment! (make-fresh-user-module))))
+    (module-use! m (resolve-interface '(srfi srfi-64)))
+    m))
+
+(define (run-test-command args)
+  ;; downstroke test [--junit FILE] [PATH…]: every *-test.scm under the
+  ;; paths (default tests/).
+  (let loop ((args args) (junit #f) (paths '()))
+    (cond ((null? args)
+           ((@ (downstroke testing) run-tests) (if (null? paths) '("tests") (reverse paths)) test-environment
+            #:junit junit #:load-file (lambda (path) (load-script path #t))))
+          ((string=? (car args) "--junit")
+           (if (pair? (cdr args))
+               (loop (cddr args) (cadr args) paths)
+               (begin (display "downstroke test: --junit needs a file\n" (current-error-port)) 2)))
+          (else (loop (cdr args) junit (cons (car args) paths))))))
+
 (define (quit-status args)
   (cond ((null? args) 0)
         ((eq? (car args) #t) 0)
@@ -247,6 +266,11 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --no-auto-compile   run FILE.scm interpreted, compiling nothing into the
                       cache (by default an edited file is compiled, quietly)
   --version           the version of downstroke
+  test [--junit FILE] [PATH...]
+                      run every *-test.scm under PATH (default: tests/), each
+                      with (downstroke) and SRFI-64; print each failed check
+                      (file:line, expected, actual) and N passed, N failed;
+                      exit 0 only when nothing failed
   --help              this text
 
 An uncaught error prints its message and the calls in FILE.scm's folder;
@@ -328,7 +352,9 @@ VERSION: the project's, for --version. Returns the exit status."
           ((not (prepare-display! (car parsed))) 2)
           (else
            (let ((opts (car parsed)) (rest (cdr parsed)))
-             (cond ((and (null? rest) (or (assq-ref opts 'repl-server) (assq-ref opts 'repl-port)))
+             (cond ((and (pair? rest) (string=? (car rest) "test"))
+                    (run-test-command (cdr rest)))
+                   ((and (null? rest) (or (assq-ref opts 'repl-server) (assq-ref opts 'repl-port)))
                     (usage))
                    ((null? rest) (run-repl))
                    (else

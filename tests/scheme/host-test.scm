@@ -97,6 +97,34 @@
                       "(let-values (((x y) (values 1 2)))\n"
                       "  (format #t \"~s ~s ~s~%\" (find (lambda (e) (eq? (entity-ref e #:id) 'b)) es) (+ x y)\n"
                       "          (filter-map (lambda (e) (and (> (entity-ref e #:x) 1) (entity-ref e #:id))) es)))\n"))))
+;;; ---------------------------------------------------------------- downstroke test
+(define suite-dir (string-append dir "/suite"))
+(mkdir suite-dir)
+(mkdir (string-append suite-dir "/more"))
+(write-script "suite/good-test.scm"
+              "(test-begin \"good\")\n(test-equal \"adds\" 4 (+ 2 2))\n(test-equal \"sees srfi-1\" 2 (find even? '(1 2 3)))\n(test-assert \"sees the engine\" (entity-ref '(#:x 1) #:x))\n(test-end \"good\")\n")
+(write-script "suite/more/bad-test.scm"
+              "(test-begin \"bad\")\n(test-equal \"wrong sum\" 5 (+ 2 2))\n(test-end \"bad\")\n")
+(write-script "suite/helpers.scm" "(error \"never loaded: not a *-test.scm\")\n")
+(test-equal "downstroke test PATH: a passing file, exit 0" '(0 "3 passed, 0 failed\n")
+  (list-head (run "test" (string-append suite-dir "/good-test.scm")) 2))
+(define suite-run (run "test" "--junit" (string-append dir "/report.xml") suite-dir))
+(test-equal "a failing check: exit 1, file:line, expected, actual, then the count"
+  (list 1 (string-append "FAIL " suite-dir "/more/bad-test.scm:2: wrong sum\n  expected: 5\n  actual:   4\n"
+                         "3 passed, 1 failed\n"))
+  (list-head suite-run 2))
+(test-assert "--junit writes a JUnit report naming the failure"
+  (let ((xml (call-with-input-file (string-append dir "/report.xml") get-string-all)))
+    (and (string-contains xml "<testsuite name=\"") (string-contains xml "failures=\"1\"")
+         (string-contains xml "<failure message=\"line 2\">expected: 5"))))
+(write-script "suite/broken-test.scm" "(test-begin \"broken\")\n(car '())\n")
+(test-assert "a file that does not load is a failure, named with its error"
+  (let ((r (run "test" (string-append suite-dir "/broken-test.scm"))))
+    (and (= 1 (first r))
+         (string-contains (second r) (string-append "FAIL " suite-dir "/broken-test.scm: (the file did not run to its end)"))
+         (string-contains (second r) "0 passed, 1 failed"))))
+(test-equal "a path that is not there is a failure" 1 (first (run "test" (string-append dir "/no-such-dir"))))
+
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
 

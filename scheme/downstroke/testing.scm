@@ -1,0 +1,126 @@
+;;; (downstroke testing) — testing a game like code: `downstroke test' runs
+;;; every *-test.scm under the paths it is given, each in a script's own
+;;; environment with SRFI-64, and says what failed, where, expected what.
+(define-module (downstroke testing)
+  #:use-module (srfi srfi-1)
+  #:use-module (srfi srfi-64)
+  #:use-module (ice-9 ftw)
+  #:use-module (ice-9 format)
+  #:export (test-files run-tests))
+
+(define (test-file? name) (string-suffix? "-test.scm" name))
+
+(define (test-files paths)
+  "The *-test.scm files under PATHS (files or folders, searched all the way
+down), each once, in name order within a folder."
+  (delete-duplicates
+   (append-map
+    (lambda (path)
+      (cond ((not (file-exists? path)) '())
+            ((eq? 'directory (stat:type (stat path)))
+             (sort (file-system-fold (lambda (name stat acc) #t)  ; enter every folder
+                                     (lambda (name stat acc) (if (test-file? (basename name)) (cons name acc) acc))
+                                     (lambda (name stat acc) acc) (lambda (name stat acc) acc)
+                                     (lambda (name stat acc) acc) (lambda (name stat errno acc) acc)
+                                     '() path)
+                   string<?))
+            (else (list path))))
+    paths)))
+
+;;; One result: (file name kind expected actual line), kind pass, fail or error.
+(define (runner-for file results)
+  (let ((runner (test-runner-null)))
+    (test-runner-on-test-end! runner
+      (lambda (r)
+        (let ((kind (test-result-kind r)))
+          (set-car! results
+                    (cons (list file (or (test-runner-test-name r) "")
+                                (if (memq kind '(pass xfail skip)) 'pass 'fail)
+                                (test-result-ref r 'expected-value) (test-result-ref r 'actual-value)
+                                (test-result-ref r 'source-line))
+                          (car results))))))
+    runner))
+
+(define (run-file file make-environment load-file)
+  "Load FILE with a runner that records each check; a file that does not
+load is one failure naming its error. Returns its results."
+  (let ((results (list '())))
+    (test-runner-factory (lambda () (runner-for file results)))
+    (test-runner-current #f)
+    (catch #t
+      (lambda ()
+        (save-module-excursion
+         (lambda ()
+           (set-current-module (make-environment))
+           (load-file (canonicalize-path file)))))
+      (lambda (key . args)
+        (set-car! results
+                  (cons (list file "(the file did not run to its end)" 'error
+                              #f (call-with-output-string
+                                   (lambda (port) (print-exception port #f key args)))
+                              #f)
+                        (car results)))))
+    (reverse (car results))))
+
+(define (report-failure port r)
+  (apply (lambda (file name kind expected actual line)
+           (if (eq? kind 'error)
+               (format port "FAIL ~a: ~a~%  ~a" file name actual)
+               (format port "FAIL ~a:~a: ~a~%  expected: ~s~%  actual:   ~s~%" file (or line "?") name
+                       expected actual)))
+         r))
+
+(define (xml-escape s)
+  (string-concatenate
+   (map (lambda (c)
+          (case c ((#\<) "&lt;") ((#\>) "&gt;") ((#\&) "&amp;") ((#\") "&quot;") (else (string c))))
+        (string->list s))))
+
+(define (write-junit file by-file)
+  (call-with-output-file file
+    (lambda (port)
+      (format port "<?xml version=\"1.0\" encoding=\"UTF-8\"?>~%<testsuites>~%")
+      (for-each
+       (lambda (entry)
+         (let* ((name (car entry)) (results (cdr entry))
+                (failures (count (lambda (r) (eq? (caddr r) 'fail)) results))
+                (errors (count (lambda (r) (eq? (caddr r) 'error)) results)))
+           (format port "  <testsuite name=\"~a\" tests=\"~a\" failures=\"~a\" errors=\"~a\">~%"
+                   (xml-escape name) (length results) failures errors)
+           (for-each
+            (lambda (r)
+              (format port "    <testcase classname=\"~a\" name=\"~a\"" (xml-escape name) (xml-escape (cadr r)))
+              (case (caddr r)
+                ((pass) (format port "/>~%"))
+                ((fail) (format port "><failure message=\"~a\">~a</failure></testcase>~%"
+                                (xml-escape (format #f "line ~a" (or (list-ref r 5) "?")))
+                                (xml-escape (format #f "expected: ~s~%actual:   ~s" (list-ref r 3) (list-ref r 4)))))
+                (else (format port "><error message=\"the file did not run to its end\">~a</error></testcase>~%"
+                              (xml-escape (list-ref r 4))))))
+            results)
+           (format port "  </testsuite>~%")))
+       by-file)
+      (format port "</testsuites>~%"))))
+
+(define* (run-tests paths make-environment #:key junit (load-file load))
+  "Run every *-test.scm under PATHS, each loaded in a module MAKE-ENVIRONMENT
+returns; print each failure (file:line, the check's name, expected and
+actual) and then `N passed, N failed'. With JUNIT, also write a JUnit XML
+report there. LOAD-FILE loads one file (the host's compiles it quietly).
+Returns the exit status: 0 only when nothing failed."
+  (let* ((missing (remove file-exists? paths))
+         (files (test-files paths))
+         (by-file (append
+                   (map (lambda (p) (cons p (list (list p "(no such file or folder)" 'error #f
+                                                         (format #f "no such file or folder: ~a~%" p) #f))))
+                        missing)
+                   (map (lambda (f) (cons f (run-file f make-environment load-file))) files)))
+         (all (append-map cdr by-file))
+         (passed (count (lambda (r) (eq? (caddr r) 'pass)) all))
+         (failed (- (length all) passed)))
+    (when (null? files)
+      (format (current-error-port) "downstroke test: no *-test.scm under ~a~%" (string-join paths " ")))
+    (for-each (lambda (r) (unless (eq? (caddr r) 'pass) (report-failure (current-output-port) r))) all)
+    (when junit (write-junit junit by-file))
+    (format #t "~a passed, ~a failed~%" passed failed)
+    (if (zero? failed) 0 1)))
