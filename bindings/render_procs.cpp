@@ -24,6 +24,7 @@
 #include "draw_list.hpp"
 #include "input.hpp"
 #include "interpolate.hpp"
+#include "frame_compare.hpp"
 #include "scene_draw.hpp"
 #include "tile_art.hpp"
 #include "window.hpp"
@@ -396,6 +397,29 @@ SCM display_save_png(SCM display, SCM path) {
     return SCM_UNSPECIFIED;
 }
 
+SCM rgba_list(Rgba c) {
+    return scm_list_4(scm_from_uint8(c.r), scm_from_uint8(c.g), scm_from_uint8(c.b), scm_from_uint8(c.a));
+}
+
+// The last frame drawn against a golden PNG: #f when they are the same;
+// (size W H) when the golden picture is another size; else (count x y
+// expected actual) for the pixels that differ, the first of them named.
+// Either way that differs, writes the frame and a diff picture.
+SCM display_compare_png(SCM display, SCM golden, SCM actual, SCM diff) {
+    Failure f;
+    Display* d = display_of(display, "check-frame", f);
+    std::string g, a, df;
+    FrameDiff r;
+    if (d && from_scm(golden, g, "golden", f) && from_scm(actual, a, "actual", f) && from_scm(diff, df, "diff", f))
+        guarded(f, nullptr, [&] { r = compare_with_png(canvas_of(*d), g, a, df); });
+    if (f) raise(f);
+    if (!r.same_size)
+        return scm_list_3(scm_from_utf8_symbol("size"), scm_from_int(r.golden_width), scm_from_int(r.golden_height));
+    if (r.differing == 0) return SCM_BOOL_F;
+    return scm_list_5(scm_from_int64(r.differing), scm_from_int(r.first_x), scm_from_int(r.first_y),
+                      rgba_list(r.expected), rgba_list(r.actual));
+}
+
 SCM display_pixel(SCM display, SCM x, SCM y) {
     Failure f;
     Display* d = display_of(display, "game-pixel", f);
@@ -725,6 +749,9 @@ void register_render_procedures() {
         "shows it in the window); time-ms, the game's clock, picks each animated tile's frame; between, "
         "(previous-entities alpha camera-x camera-y) of the step before, draws each entity and the camera "
         "alpha of the way from then to now.");
+    define_procedure<4, 0, 0, display_compare_png>("%display-compare-png",
+        "(display golden actual diff): the last frame drawn against the golden PNG: #f when the same, (size w h) "
+        "or (count x y expected actual) when not (then writing the frame to ACTUAL and a diff picture to DIFF).");
     define_procedure<2, 0, 0, display_save_png>("%display-save-png",
         "(display file): writes the last frame drawn as a PNG.");
     define_procedure<1, 0, 0, clear_commands>("%display-clear-commands!",

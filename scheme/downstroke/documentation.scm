@@ -91,6 +91,7 @@
     (capture-directory . "A parameter: the directory game-run! writes each frame to as a PNG in 'capture mode, or #f.")
     (window-scale . "A parameter: the window's whole scale factor (the host's --scale), 0 to fit the screen.")
     (window-fullscreen . "A parameter: whether the window opens fullscreen (the host's --fullscreen).")
+    (record-file . "A parameter: the file a windowed game's input is written to when it ends (the host's --record), or #f.")
     (frame-log-file . "A parameter: a file the window loop writes each presented frame's time, step and alpha to (the host's --frame-log), or #f.")
     (debug-draw-default . "A parameter, #f by default: whether every game starts with the debug overlay on (the host's --debug).")
     (current-display . "A parameter: what the running game draws into (its window or off-screen picture), or #f outside game-run!; draw-rect and the other draw- procedures draw there.")

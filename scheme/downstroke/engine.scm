@@ -492,7 +492,34 @@ every frame whose set of held actions differs from the frame before."
           ((and previous (lset= equal? previous (car log))) (loop (cdr log) (+ frame 1) previous acc))
           (else (loop (cdr log) (+ frame 1) (car log) (cons (cons frame (car log)) acc))))))
 
-(export input-held-actions input-log->script)
+(define (record-input game file)
+  "Write GAME's input so far to FILE as an input script (input-log->script
+of game-input-log), which read-input-script reads back: a session played in
+a window replays headless, frame for frame. `downstroke --window --record
+FILE' writes it when the game ends."
+  (unless (string? file)
+    (scm-error 'wrong-type-arg "record-input" "file: expected a string, got ~S" (list file) #f))
+  (let ((script (input-log->script (game-input-log game))))
+    (call-with-output-file file
+      (lambda (port)
+        (format port ";;; The input of ~s, ~a frames, as an input script (record-input).~%" (game-title game)
+                (game-frame game))
+        (write script port)
+        (newline port)))
+    script))
+
+(define (read-input-script file)
+  "The input script record-input wrote to FILE, checked as make-game checks
+one."
+  (let ((script (catch #t
+                  (lambda () (call-with-input-file file read))
+                  (lambda (key . args)
+                    (scm-error 'misc-error "read-input-script" "cannot read an input script from ~S (~a)"
+                               (list file key) #f)))))
+    (check-input-script "read-input-script" (if (eof-object? script) '() script))
+    (if (eof-object? script) '() script)))
+
+(export input-held-actions input-log->script record-input read-input-script)
 
 ;; A game played for hours must not keep every change of input: the log
 ;; keeps at least the newest 65536 changes (at a change every few frames,
@@ -796,6 +823,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
                     (loop now owed before next dropped)))))))
         (lambda ()
           (when log (close-port log))
+          (when (record-file) (record-input game (record-file)))
           (%display-close-window! display))))))
 
 (define* (game-run! game #:key (frames #f))

@@ -253,6 +253,8 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --scale N           the window's whole scale factor (default: fit the screen);
                       the window can be resized, the picture stays whole-scaled
   --fullscreen        open the window fullscreen
+  --record FILE       with --window: when the game ends, write its input to
+                      FILE as an input script a test can replay
   --frame-log FILE    with --window: write each presented frame's time (ms),
                       step, alpha (the share of a step drawn past it) and
                       the steps dropped after stalls so far
@@ -296,6 +298,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
           ((string=? (car args) "--debug") (loop (cdr args) (acons 'debug #t opts)))
           ((string=? (car args) "--fullscreen") (loop (cdr args) (acons 'fullscreen #t opts)))
           ((string=? (car args) "--frame-log") (with-value 'frame-log string?))
+          ((string=? (car args) "--record") (with-value 'record string?))
           ((string=? (car args) "--scale")
            (with-value 'scale (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (<= 1 n 64))))))
           ((string=? (car args) "--capture") (with-value 'capture string?))
@@ -337,6 +340,7 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
              (when scale (window-scale (string->number scale))))
            (when (assq-ref opts 'fullscreen) (window-fullscreen #t))
            (let ((log (assq-ref opts 'frame-log))) (when log (frame-log-file log)))
+           (let ((record (assq-ref opts 'record))) (when record (record-file record)))
            #t)
           (else #t))))
 

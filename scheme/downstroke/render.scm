@@ -3,6 +3,7 @@
 (define-module (downstroke render)
   #:use-module (downstroke native)
   #:export (renderer-available? display-mode capture-directory window-scale window-fullscreen frame-log-file
+            record-file
             debug-draw-default
             current-display default-input-map
             draw-rect draw-line draw-sprite draw-text draw-label text-width
@@ -25,6 +26,9 @@
 ;; the share of a step drawn past it, and the steps a stall's backlog lost
 ;; so far), to check its pacing.
 (define frame-log-file (make-parameter #f))
+;; --record FILE: when a windowed game ends, its input is written there as
+;; an input script (record-input), for a test to replay.
+(define record-file (make-parameter #f))
 ;; --fullscreen: the window opens fullscreen (F11 or Alt+Return toggles it).
 (define window-fullscreen (make-parameter #f))
 ;; --debug: every game starts with the debug overlay on.

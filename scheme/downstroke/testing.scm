@@ -6,7 +6,56 @@
   #:use-module (srfi srfi-64)
   #:use-module (ice-9 ftw)
   #:use-module (ice-9 format)
-  #:export (test-files run-tests))
+  #:use-module (downstroke engine)
+  #:use-module (downstroke render)
+  #:use-module ((downstroke native) #:select (%display-compare-png))
+  #:re-export (record-input read-input-script)
+  #:export (test-files run-tests play check-frame))
+
+;;; ---------------------------------------------------------------- games in tests
+
+(define* (play game #:key frames (input #f))
+  "Run GAME headless up to frame FRAMES (as game-run! counts: from where it
+stopped), with INPUT as its input script when given (a list, or the file
+record-input wrote), and return it."
+  (when input
+    ((@@ (downstroke engine) game-input-script-set!) game
+     (if (string? input) (read-input-script input) input)))
+  (parameterize ((display-mode 'headless))
+    (game-run! game #:frames frames))
+  game)
+
+(define (sibling file suffix)
+  ;; expected.png → expected.actual.png
+  (let ((dot (string-rindex file #\.)))
+    (if dot (string-append (substring file 0 dot) suffix (substring file dot)) (string-append file suffix))))
+
+(define (check-frame game file)
+  "Draw GAME's current frame and compare it, pixel by pixel, with the golden
+PNG FILE: #t when they are the same. When not, write FILE's .actual.png and
+.diff.png siblings (the frame, and it darkened with each differing pixel
+magenta) and raise an error saying how many pixels differ and the first.
+With DOWNSTROKE_UPDATE_GOLDEN=1 in the environment, write FILE instead."
+  (unless (string? file)
+    (scm-error 'wrong-type-arg "check-frame" "file: expected a string, got ~S" (list file) #f))
+  (cond ((equal? (getenv "DOWNSTROKE_UPDATE_GOLDEN") "1")
+         (game-capture game file)
+         #t)
+        ((not (file-exists? file))
+         (scm-error 'misc-error "check-frame" "no golden picture ~S (DOWNSTROKE_UPDATE_GOLDEN=1 writes it)"
+                    (list file) #f))
+        (else
+         ((@@ (downstroke engine) draw-game!) game)
+         (let* ((actual (sibling file ".actual")) (diff (sibling file ".diff"))
+                (r (%display-compare-png ((@@ (downstroke engine) game-display) game) file actual diff)))
+           (cond ((not r) #t)
+                 ((eq? (car r) 'size)
+                  (scm-error 'misc-error "check-frame" "the frame is ~Ax~A, ~S is ~Ax~A; see ~S"
+                             (list (game-width game) (game-height game) file (cadr r) (caddr r) actual) #f))
+                 (else
+                  (scm-error 'misc-error "check-frame"
+                             "~A pixel(s) differ from ~S, the first at (~A, ~A): expected ~S, got ~S; see ~S and ~S"
+                             (list (car r) file (cadr r) (caddr r) (list-ref r 3) (list-ref r 4) actual diff) #f)))))))
 
 (define (test-file? name) (string-suffix? "-test.scm" name))
 
@@ -36,7 +85,14 @@ down), each once, in name order within a folder."
           (set-car! results
                     (cons (list file (or (test-runner-test-name r) "")
                                 (if (memq kind '(pass xfail skip)) 'pass 'fail)
-                                (test-result-ref r 'expected-value) (test-result-ref r 'actual-value)
+                                (test-result-ref r 'expected-value)
+                                ;; A check that raised: the error, as it would print.
+                                (let ((err (test-result-ref r 'actual-error)))
+                                  (if err
+                                      (call-with-output-string
+                                        (lambda (port)
+                                          (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port))))
+                                      (test-result-ref r 'actual-value)))
                                 (test-result-ref r 'source-line))
                           (car results))))))
     runner))

@@ -77,11 +77,13 @@ ObjectIndex index_objects(const Tilemap& map, const ObjectLayer& layer) {
         return ix;
     }
     ix.left = all.x0, ix.top = all.y0, ix.bucket = kObjectBucketPx;
-    const auto span = [&](double lo, double hi) { return int64_t(std::floor((hi - lo) / ix.bucket)) + 1; };
-    while (span(all.x0, all.x1) * span(all.y0, all.y1) > kMaxObjectBuckets) ix.bucket *= 2;
-    ix.cols = span(all.x0, all.x1), ix.rows = span(all.y0, all.y1);
+    // In doubles until the spans are small: objects may lie ±1e300 px apart
+    // (the fuzzer's maps), far past any integer.
+    const auto span = [&](double lo, double hi) { return std::floor((hi - lo) / ix.bucket) + 1; };
+    while (span(all.x0, all.x1) * span(all.y0, all.y1) > double(kMaxObjectBuckets)) ix.bucket *= 2;
+    ix.cols = int64_t(span(all.x0, all.x1)), ix.rows = int64_t(span(all.y0, all.y1));
     const auto cell = [&](double v, double lo, int64_t n) {
-        return std::clamp<int64_t>(int64_t(std::floor((v - lo) / ix.bucket)), 0, n - 1);
+        return int64_t(std::clamp(std::floor((v - lo) / ix.bucket), 0.0, double(n - 1)));
     };
     // Counting pass, then filling: two walks over each object's buckets.
     std::vector<uint32_t> count(size_t(ix.cols * ix.rows) + 1, 0);

@@ -1,0 +1,56 @@
+;;; (downstroke testing): play, check-frame against golden pictures, and a
+;;; recorded session replayed.
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing) (downstroke hash))
+
+(load "support.scm")
+
+(test-begin "testing")
+
+(define dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-testing-XXXXXX")))
+
+(define (walker)
+  (make-game width: 32 height: 16
+             scene: (make-scene entities: '((#:id w #:x 0 #:y 4 #:width 4 #:height 4)))
+             update: (lambda (game dt)
+                       (let* ((s (game-scene game)) (e (car (scene-entities s))))
+                         (when (input-held? (game-input game) 'right)
+                           (game-scene-set! game (update-scene s entities: (list (entity-set e #:x (+ 1 (entity-ref e #:x)))))))))))
+(define (x-of game) (entity-ref (car (scene-entities (game-scene game))) #:x))
+
+;;; ---------------------------------------------------------------- play
+(define played (play (walker) #:frames 10 #:input '((0 . ()) (2 . (right)) (7 . ()))))
+(test-equal "play runs the game headless with its script, and returns it" '(10 5) (list (game-frame played) (x-of played)))
+(test-equal "… and again up to a later frame" 10 (game-frame (play played #:frames 10)))
+
+;;; ---------------------------------------------------------------- a recorded session
+(define session (string-append dir "/session.scm"))
+(test-equal "record-input writes the input as a script" '((0) (2 right) (7)) (record-input played session))
+(test-equal "read-input-script reads it back" '((0) (2 right) (7)) (read-input-script session))
+(define replayed (play (walker) #:frames 10 #:input session))
+(test-equal "the session replays exactly: the same scene, frame for frame" (scene-hash (game-scene played))
+  (scene-hash (game-scene replayed)))
+(test-assert "a file that is no input script is refused, naming it"
+  (let ((bad (string-append dir "/bad.scm")))
+    (call-with-output-file bad (lambda (p) (write '((0 . (right)) (x . ())) p)))
+    (mentions? (error-text (lambda () (read-input-script bad))) "read-input-script" "input-script")))
+
+;;; ---------------------------------------------------------------- golden frames
+(when (renderer-available?)
+  (let ((golden (string-append dir "/walker.png")))
+    (test-assert "a missing golden picture is an error that says how to make it"
+      (mentions? (error-text (lambda () (check-frame played golden))) "check-frame" "DOWNSTROKE_UPDATE_GOLDEN=1"))
+    (setenv "DOWNSTROKE_UPDATE_GOLDEN" "1")
+    (test-assert "DOWNSTROKE_UPDATE_GOLDEN=1 writes it" (and (check-frame played golden) (file-exists? golden)))
+    (unsetenv "DOWNSTROKE_UPDATE_GOLDEN")
+    (test-assert "the same frame matches it" (check-frame replayed golden))
+    (let* ((moved (play (walker) #:frames 10 #:input '((0 . (right)) (9 . ()))))
+           (text (error-text (lambda () (check-frame moved golden)))))
+      (test-assert "a different frame fails, saying how many pixels differ and the first"
+        (mentions? text "check-frame" "pixel(s) differ" "the first at (5, 4)"))
+      (test-assert "… and writes the frame and a diff picture beside the golden one"
+        (and (file-exists? (string-append dir "/walker.actual.png"))
+             (file-exists? (string-append dir "/walker.diff.png"))))
+      (test-assert "… naming the two colours there: the golden box's outline expected, the background got"
+        (mentions? text "expected (170 170 170 255)" "got (24 28 40 255)")))))
+
+(test-end "testing")
