@@ -69,30 +69,42 @@ std::string not_a_sound_file(const std::string& path) {
     return "";
 }
 
-// What SDL_mixer would allocate for the sound at `path`, from its header
-// (read before anything is decoded); "" when it is within
-// kMaxSoundDecodedBytes, else why not. `head` keeps the first bytes read:
-// the whole file when it is at most kSoundHeaderBytes long.
-std::string too_big_or_lying(const std::string& path, std::vector<uint8_t>& head, uint64_t& size) {
+// The first bytes of a sound file (up to kSoundHeaderBytes: the whole file
+// when it is no longer) and its last ones (up to kSoundTailBytes: an Ogg
+// stream's length is in its last page), what read_sound_header reads.
+struct SoundEnds {
+    std::vector<uint8_t> head, tail;
+    uint64_t size = 0;
+    // The last bytes: read again only when the head is not the whole file.
+    std::span<const uint8_t> last() const {
+        return head.size() < size ? std::span<const uint8_t>(tail)
+                                   : std::span<const uint8_t>(head).last(std::min(head.size(), kSoundTailBytes));
+    }
+};
+
+// Reads the ends of the file at `path`; "" or why it could not.
+std::string read_ends(const std::string& path, SoundEnds& e) {
     std::ifstream in(path, std::ios::binary);
     std::error_code ec;
-    size = std::filesystem::file_size(path, ec);
+    e.size = std::filesystem::file_size(path, ec);
     if (!in || ec) return "cannot be read";
-    head.resize(std::min<uint64_t>(size, kSoundHeaderBytes));
-    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
-    // The last bytes: already read when the head is the whole file.
-    std::vector<uint8_t> tail;
-    if (head.size() < size) {
-        tail.resize(std::min<uint64_t>(size, kSoundTailBytes));
-        in.seekg(std::streamoff(size - tail.size()));
-        in.read(reinterpret_cast<char*>(tail.data()), std::streamsize(tail.size()));
+    e.head.resize(std::min<uint64_t>(e.size, kSoundHeaderBytes));
+    in.read(reinterpret_cast<char*>(e.head.data()), std::streamsize(e.head.size()));
+    if (e.head.size() < e.size) {
+        e.tail.resize(std::min<uint64_t>(e.size, kSoundTailBytes));
+        in.seekg(std::streamoff(e.size - e.tail.size()));
+        in.read(reinterpret_cast<char*>(e.tail.data()), std::streamsize(e.tail.size()));
     }
-    if (!in) return "reading it failed";
-    const std::span<const uint8_t> last = head.size() < size ? std::span<const uint8_t>(tail)
-                                                             : std::span<const uint8_t>(head).last(std::min(head.size(), kSoundTailBytes));
+    return in ? "" : "reading it failed";
+}
+
+// What SDL_mixer would allocate for the sound whose ends `e` holds, from
+// its header (read before anything is decoded); "" when it is within
+// kMaxSoundDecodedBytes, else why not.
+std::string too_big_or_lying(const SoundEnds& e) {
     SoundHeader h;
     std::string why;
-    if (!read_sound_header(head, last, size, h, why)) return why;
+    if (!read_sound_header(e.head, e.last(), e.size, h, why)) return why;
     // Resampled to kFrequency, kOutputChannels of 16 bits: the decoded size.
     const double decoded = double(h.frames) * kFrequency / double(h.rate) * kOutputChannels * 2;
     if (decoded > double(kMaxSoundDecodedBytes))
@@ -102,25 +114,16 @@ std::string too_big_or_lying(const std::string& path, std::vector<uint8_t>& head
     return "";
 }
 
-// Why the music file at `path` cannot be streamed, or "": a WAV or an Ogg
-// (by its magic) must have a sound header, though not a short one; other
-// formats (MP3 …) are left to SDL_mixer, which names its own reason.
-std::string bad_music_header(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(path, ec);
-    if (!in || ec) return "cannot be read";
-    std::vector<uint8_t> head(std::min<uint64_t>(size, kSoundHeaderBytes));
-    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
-    std::vector<uint8_t> tail(std::min<uint64_t>(size, kSoundTailBytes));
-    in.seekg(std::streamoff(size - tail.size()));
-    in.read(reinterpret_cast<char*>(tail.data()), std::streamsize(tail.size()));
-    if (!in) return "reading it failed";
-    auto magic = [&](const char* m) { return head.size() >= 4 && std::memcmp(head.data(), m, 4) == 0; };
+// Why the music file whose ends `e` holds cannot be streamed, or "": a WAV
+// or an Ogg (by its magic) must have a sound header, though not a short
+// one; other formats (MP3 …) are left to SDL_mixer, which names its own
+// reason.
+std::string bad_music_header(const SoundEnds& e) {
+    auto magic = [&](const char* m) { return e.head.size() >= 4 && std::memcmp(e.head.data(), m, 4) == 0; };
     if (!magic("RIFF") && !magic("OggS")) return "";
     SoundHeader h;
     std::string why;
-    return read_sound_header(head, tail, size, h, why) ? "" : why;
+    return read_sound_header(e.head, e.last(), e.size, h, why) ? "" : why;
 }
 
 // Mix_VolumeMusic's and Mix_Volume's scale from a volume of 0–1.
@@ -156,13 +159,13 @@ SoundBank::~SoundBank() {
 void SoundBank::load(const std::string& name, const std::string& path) {
     if (const std::string why = not_a_sound_file(path); !why.empty())
         throw RenderError("sound " + path + ": " + why);
-    std::vector<uint8_t> head;
-    uint64_t size = 0;
-    if (const std::string why = too_big_or_lying(path, head, size); !why.empty())
-        throw RenderError("sound " + path + ": " + why);
+    SoundEnds e;
+    std::string why = read_ends(path, e);
+    if (why.empty()) why = too_big_or_lying(e);
+    if (!why.empty()) throw RenderError("sound " + path + ": " + why);
     // The file is read once when the header read took all of it.
-    ChunkPtr chunk(head.size() == size ? Mix_LoadWAV_RW(SDL_RWFromConstMem(head.data(), int(head.size())), 1)
-                                       : Mix_LoadWAV(path.c_str()));
+    ChunkPtr chunk(e.head.size() == e.size ? Mix_LoadWAV_RW(SDL_RWFromConstMem(e.head.data(), int(e.head.size())), 1)
+                                           : Mix_LoadWAV(path.c_str()));
     if (!chunk) throw RenderError("sound " + path + ": " + Mix_GetError());
     if (int64_t(chunk->alen) > kMaxSoundDecodedBytes)  // a decoder that outgrew the header's claim
         throw RenderError("sound " + path + ": it decoded to " + std::to_string(chunk->alen >> 20) +
@@ -181,8 +184,10 @@ bool SoundBank::has(const std::string& name) const { return sounds_.contains(nam
 void SoundBank::load_music(const std::string& name, const std::string& path) {
     if (const std::string why = not_a_sound_file(path); !why.empty())
         throw RenderError("music " + path + ": " + why);
-    if (const std::string why = bad_music_header(path); !why.empty())
-        throw RenderError("music " + path + ": " + why);
+    SoundEnds e;
+    std::string why = read_ends(path, e);
+    if (why.empty()) why = bad_music_header(e);
+    if (!why.empty()) throw RenderError("music " + path + ": " + why);
     Mix_Music* music = Mix_LoadMUS(path.c_str());
     if (!music) throw RenderError("music " + path + ": " + Mix_GetError());
     auto [it, added] = music_.try_emplace(name, music);
