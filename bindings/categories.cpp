@@ -53,20 +53,20 @@ bool CategoryTable::mask_of(SCM list, uint64_t& mask, Failure& f) {
 }
 
 bool CategoryTable::assign(SCM category, SCM collides_with, Body& b, Failure& f) {
-    b.category = {};
-    b.collides_with = {};
-    if (!SCM_UNBNDP(category) && !index_of(keys->key[kCategory], SCM_UNPACK(category), b.category.index, f))
-        return false;
-    return SCM_UNBNDP(collides_with) || mask_of(collides_with, b.collides_with.bits, f);
+    return assign_from(CategoryNames::of(category, collides_with), collides_with, b, f);
 }
 
 bool CategoryTable::assign(const CategoryNames& n, SCM entity, Body& b, Failure& f) {
+    const bool long_list = n.count == CategoryNames::kLong;
+    return assign_from(n, long_list ? plist_get(entity, keys->key[kCollidesWith], SCM_EOL) : SCM_EOL, b, f);
+}
+
+bool CategoryTable::assign_from(const CategoryNames& n, SCM long_list, Body& b, Failure& f) {
     b.category = {};
     b.collides_with = {};
     if (n.category != 0 && !index_of(keys->key[kCategory], n.category, b.category.index, f)) return false;
     if (n.count == CategoryNames::kAbsent) return true;
-    if (n.count == CategoryNames::kLong)
-        return mask_of(plist_get(entity, keys->key[kCollidesWith], SCM_EOL), b.collides_with.bits, f);
+    if (n.count == CategoryNames::kLong) return mask_of(long_list, b.collides_with.bits, f);
     uint64_t mask = 0;
     for (int i = 0; i < n.count; ++i) {
         uint8_t index = 0;

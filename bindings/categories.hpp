@@ -44,6 +44,9 @@ public:
     bool assign(const CategoryNames& names, SCM entity, Body& b, Failure& f);
 
 private:
+    // Both assigns: the names, and the #:collides-with list itself when it
+    // is too long for them (CategoryNames::kLong).
+    bool assign_from(const CategoryNames& names, SCM long_list, Body& b, Failure& f);
     bool index_of(SCM key, uint64_t name, uint8_t& index, Failure& f);
     bool mask_of(SCM list, uint64_t& mask, Failure& f);
     uint64_t names_[kMaxCategories];  // a symbol's SCM bits, by bit index; 0 is 'default
