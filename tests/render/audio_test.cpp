@@ -67,14 +67,19 @@ void write_wav(const std::string& path, int samples, int rate = 22050) {
     std::ofstream(path, std::ios::binary) << w;
 }
 
-// The message a failed load throws.
-std::string load_error(SoundBank& bank, const std::string& name, const std::string& path) {
+// The message `load` throws, or "(no error)".
+template <class Load>
+std::string error_of(Load&& load) {
     try {
-        bank.load(name, path);
+        load();
     } catch (const RenderError& e) {
         return e.what();
     }
     return "(no error)";
+}
+
+std::string load_error(SoundBank& bank, const std::string& name, const std::string& path) {
+    return error_of([&] { bank.load(name, path); });
 }
 
 bool contains(const std::string& s, const std::string& part) {
@@ -243,12 +248,7 @@ TEST_CASE("the demos' sound effects all decode") {
 // ---- music
 
 std::string music_error(SoundBank& bank, const std::string& name, const std::string& path) {
-    try {
-        bank.load_music(name, path);
-    } catch (const RenderError& e) {
-        return e.what();
-    }
-    return "(no error)";
+    return error_of([&] { bank.load_music(name, path); });
 }
 
 // A bank that really mixes, on SDL's dummy device (no sound card needed):

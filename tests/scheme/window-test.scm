@@ -99,12 +99,16 @@
 (test-assert "the window shows the game's red bar" origin)
 (define (canvas-pixel cx cy)
   (canvas-pixel-of shot cx cy))
-(define (canvas-pixel-of shot cx cy)
-  ;; The screen's 2 × 2 block for canvas pixel (cx, cy), if all four agree.
-  (let* ((x (+ (car origin) (* 2 cx))) (y (+ (cdr origin) (* 2 cy)))
-         (block (list (screen-pixel shot x y) (screen-pixel shot (+ x 1) y)
-                      (screen-pixel shot x (+ y 1)) (screen-pixel shot (+ x 1) (+ y 1)))))
+(define (canvas-pixel-at shot ox oy scale cx cy)
+  ;; The screen's scale × scale block for canvas pixel (cx, cy) of a picture
+  ;; whose top-left is at (ox, oy), if the whole block is one colour.
+  (let* ((x (+ ox (* scale cx))) (y (+ oy (* scale cy)))
+         (block (append-map (lambda (dy) (map (lambda (dx) (screen-pixel shot (+ x dx) (+ y dy))) (iota scale)))
+                            (iota scale))))
     (and (every (lambda (p) (equal? p (car block))) block) (car block))))
+(define (canvas-pixel-of shot cx cy)
+  ;; The window as it opened: ×2 at the origin found.
+  (canvas-pixel-at shot (car origin) (cdr origin) 2 cx cy))
 (when origin
   (test-equal "the window is the picture scaled ×2 and centred" '(96 . 72) origin)
   (test-equal "the red bar spans the width" '(230 60 60) (canvas-pixel 63 3))
@@ -151,12 +155,6 @@
     (close-pipe p)
     (and (string? line) line)))
 (test-assert "xdotool finds the game's window" window-id)
-(define (canvas-pixel-at shot ox oy scale cx cy)
-  ;; The screen's scale × scale block for canvas pixel (cx, cy), if uniform.
-  (let* ((x (+ ox (* scale cx))) (y (+ oy (* scale cy)))
-         (block (append-map (lambda (dy) (map (lambda (dx) (screen-pixel shot (+ x dx) (+ y dy))) (iota scale)))
-                            (iota scale))))
-    (and (every (lambda (p) (equal? p (car block))) block) (car block))))
 (when window-id
   (system* "xdotool" "windowmove" window-id "0" "0")
   (system* "xdotool" "windowsize" window-id "300" "200")
