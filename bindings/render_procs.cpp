@@ -676,9 +676,9 @@ SCM stop_music(SCM fade_out) {
 
 // Volumes (checked by the engine: reals from 0 to 1), kept for a reopened bank.
 SCM set_volume(SCM which, SCM volume) {
-    Failure f{"music-volume-set!"};
-    const double v = scm_to_double(volume);
     const bool music = scm_is_eq(which, scm_from_utf8_symbol("music"));
+    Failure f{music ? "music-volume-set!" : "sound-volume-set!"};
+    const double v = scm_to_double(volume);
     (music ? music_volume : sound_volume) = v;
     guarded(f, nullptr, [&] {
         if (bank) music ? bank->set_music_volume(v) : bank->set_sound_volume(v);

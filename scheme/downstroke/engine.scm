@@ -516,8 +516,9 @@ one."
                   (lambda (key . args)
                     (scm-error 'misc-error "read-input-script" "cannot read an input script from ~S (~a)"
                                (list file key) #f)))))
-    (check-input-script "read-input-script" (if (eof-object? script) '() script))
-    (if (eof-object? script) '() script)))
+    (let ((script (if (eof-object? script) '() script)))  ; an empty file: no input
+      (check-input-script "read-input-script" script)
+      script)))
 
 (export input-held-actions input-log->script record-input read-input-script)
 
