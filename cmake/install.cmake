@@ -50,6 +50,8 @@ install(DIRECTORY ${CMAKE_BINARY_DIR}/go/ DESTINATION ${DS_GUILE_SITE_CCACHE_DIR
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# What `downstroke new' copies (the installed host looks here, beside the demos).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/templates/ DESTINATION ${CMAKE_INSTALL_DATADIR}/downstroke/templates)
 # Each demo finds its maps and sounds next to itself: downstroke PREFIX/share/downstroke/demo/platformer.scm.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/demo/ DESTINATION ${CMAKE_INSTALL_DATADIR}/downstroke/demo
   PATTERN "CMakeLists.txt" EXCLUDE)

@@ -13,7 +13,7 @@ extern "C" void ds_init_native();
 namespace {
 
 #ifdef DS_INSTALLED_HOST
-// Installed, DS_SCHEME_DIR and DS_GO_DIR are relative to the prefix, which is
+// Installed, DS_SCHEME_DIR, DS_GO_DIR and DS_TEMPLATE_DIR are relative to the prefix, which is
 // found from this executable's own path (PREFIX/DS_BIN_DIR/downstroke), so
 // that `cmake --install --prefix P' works for any P without rebuilding.
 std::string installed_dir(const char* relative) {
@@ -31,7 +31,8 @@ std::string installed_dir(const char* relative) {
 std::string installed_dir(const char* build_tree_dir) { return build_tree_dir; }
 #endif
 
-// DOWNSTROKE_SCHEME_DIR / DOWNSTROKE_GO_DIR override the default paths,
+// DOWNSTROKE_SCHEME_DIR / DOWNSTROKE_GO_DIR (/ DOWNSTROKE_TEMPLATE_DIR)
+// override the default paths,
 // for a relocated tree.
 // The C++ string is gone before any Guile call that could longjmp past it.
 SCM dir_setting(const char* env, const char* fallback) {
@@ -54,8 +55,10 @@ void inner_main(void*, int argc, char** argv) {
     prepend("%load-compiled-path", dir_setting("DOWNSTROKE_GO_DIR", DS_GO_DIR));
     SCM args = SCM_EOL;
     for (int i = argc - 1; i >= 1; --i) args = scm_cons(scm_from_locale_string(argv[i]), args);
+    // The templates `downstroke new' copies; DOWNSTROKE_TEMPLATE_DIR overrides.
+    SCM templates = dir_setting("DOWNSTROKE_TEMPLATE_DIR", DS_TEMPLATE_DIR);
     SCM main = scm_c_public_ref("downstroke host", "main");
-    SCM status = scm_call_2(main, args, scm_from_utf8_string(DS_VERSION));
+    SCM status = scm_call_3(main, args, scm_from_utf8_string(DS_VERSION), templates);
     std::exit(scm_is_signed_integer(status, 0, 255) ? scm_to_int(status) : 1);
 }
 

@@ -26,4 +26,9 @@ expected_demo=$(XDG_CACHE_HOME="$build/cache" "$build/bin/downstroke" "$(dirname
 $demo
 instead of
 $expected_demo"
+# The installed host writes a new game from the installed templates, and the
+# game's own tests pass with nothing from this tree.
+clean "$bindir/downstroke" new "$prefix/newgame" >/dev/null || fail "downstroke new failed"
+tested=$(cd "$prefix/newgame" && clean "$bindir/downstroke" test) || fail "the new game's tests failed: $tested"
+[ "$tested" = "7 passed, 0 failed" ] || fail "the new game's tests said $tested"
 echo "install.prefix: guile and the installed host both ran from $prefix"

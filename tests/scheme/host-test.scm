@@ -1,6 +1,6 @@
 ;;; The `downstroke' executable itself: its options, its quiet compiling of
 ;;; edited scripts, and how an uncaught error in a script reads.
-(use-modules (srfi srfi-64) (ice-9 textual-ports) (srfi srfi-1))
+(use-modules (srfi srfi-64) (ice-9 textual-ports) (ice-9 ftw) (srfi srfi-1))
 
 (load "support.scm")
 
@@ -13,8 +13,12 @@
 
 (define (run . argv)
   ;; (exit-status stdout stderr) of the host run with ARGV.
+  (apply run-in "." argv))
+
+(define (run-in where . argv)
+  ;; The same, run in the folder WHERE.
   (let ((out (string-append dir "/out")) (err (string-append dir "/err")))
-    (let ((status (system (string-append "XDG_CACHE_HOME=" (quoted cache) " "
+    (let ((status (system (string-append "cd " (quoted where) " && XDG_CACHE_HOME=" (quoted cache) " "
                                          (string-join (map quoted (cons host argv)) " ")
                                          " >" (quoted out) " 2>" (quoted err)))))
       (list (status:exit-val status)
@@ -35,7 +39,7 @@
  (lambda (option)
    (test-assert (string-append "--help lists " option) (string-contains (second help) option)))
  '("--window" "--scale" "--debug" "--capture" "--repl-server" "--repl-port" "--repl-timeout"
-   "--no-auto-compile" "--version" "--help" "DOWNSTROKE_BACKTRACE=full"))
+   "--no-auto-compile" "--version" "--help" "new DIR" "test [--junit FILE]" "DOWNSTROKE_BACKTRACE=full"))
 (test-equal "--version prints the project's version" '(0 "downstroke 0.1.0\n" "") (run "--version"))
 (test-equal "an unknown option is refused with the usage, on stderr" '(2 "")
   (let ((r (run "--no-such-option"))) (list (first r) (second r))))
@@ -124,6 +128,47 @@
          (string-contains (second r) (string-append "FAIL " suite-dir "/broken-test.scm: (the file did not run to its end)"))
          (string-contains (second r) "0 passed, 1 failed"))))
 (test-equal "a path that is not there is a failure" 1 (first (run "test" (string-append dir "/no-such-dir"))))
+
+;;; ---------------------------------------------------------------- downstroke new
+(define games (string-append dir "/games"))
+(define starter (string-append games "/first"))
+(define made (run "new" starter))
+(test-equal "downstroke new DIR makes DIR (and its parents), saying what to run next"
+  (list 0 (string-append "Made " starter ": 8 files, a game that plays at once.") "")
+  (list (first made) (car (string-split (second made) #\newline)) (third made)))
+(test-equal "… its files: the game, its map and tileset, sounds, tests, a README"
+  '("README.md" "game.scm" "maps/level.tmx" "maps/tiles.png" "maps/tiles.tsx"
+    "sounds/coin.wav" "sounds/jump.wav" "tests/game-test.scm")
+  (filter (lambda (f) (file-exists? (string-append starter "/" f)))
+          '("README.md" "game.scm" "maps/level.tmx" "maps/tiles.png" "maps/tiles.tsx"
+            "sounds/coin.wav" "sounds/jump.wav" "tests/game-test.scm")))
+(test-assert "… the game is named after its folder"
+  (string-contains (call-with-input-file (string-append starter "/game.scm") get-string-all)
+                   "first, a Downstroke game."))
+(test-equal "the new game plays at once, headless, from any folder: all four coins"
+  '(0 "frame 300: 4 coins, the player at (588, 208)\n" "")
+  (run (string-append starter "/game.scm")))
+(test-equal "… and its own tests pass under downstroke test, run in its folder"
+  '(0 "7 passed, 0 failed\n" "")
+  (run-in starter "test"))
+(test-equal "a folder that is not empty is refused, named, and left as it was"
+  (list 1 "" (string-append "downstroke new: \"" starter "\" exists and is not empty: give a new folder's name\n")
+        '("README.md" "game.scm" "maps" "sounds" "tests"))
+  (append (run "new" starter) (list (cddr (scandir starter)))))
+(test-equal "a file is refused, named"
+  (list 1 (string-append "downstroke new: \"" starter "/game.scm\" exists and is not a folder\n"))
+  (let ((r (run "new" (string-append starter "/game.scm")))) (list (first r) (third r))))
+(mkdir (string-append games "/empty"))
+(test-equal "an empty folder is taken" 0 (first (run "new" (string-append games "/empty"))))
+(test-equal "downstroke new with no folder: the usage, status 2" '(2 "" "usage: downstroke new DIR\n")
+  (run "new"))
+(test-equal "missing templates are named"
+  (list 1 (string-append "downstroke new: no template folder \"" dir "/none/starter\" (the engine's templates are missing; DOWNSTROKE_TEMPLATE_DIR names another folder)\n"))
+  (begin
+    (setenv "DOWNSTROKE_TEMPLATE_DIR" (string-append dir "/none"))
+    (let ((r (run "new" (string-append games "/second"))))
+      (unsetenv "DOWNSTROKE_TEMPLATE_DIR")
+      (list (first r) (third r)))))
 
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
