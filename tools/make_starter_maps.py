@@ -97,6 +97,9 @@ GIDS = {".": 0, "#": 1, "W": 2, "-": 3, ",": 4, "T": 5, "D": 6}
 # Each object letter: (class, width, height) of its rectangle, which sits on
 # the bottom of its cell, centred across it.
 OBJECTS = {"p": ("player", 12, 16), "c": ("coin", 8, 8), "e": ("enemy", 12, 14)}
+# Custom properties each object of a class carries (Tiled: the object's
+# Custom Properties): how far an enemy walks either way of where it starts.
+OBJECT_PROPERTIES = {"enemy": {"patrol": 40}}
 BACKGROUND = "#5c7cb8"  # a daytime sky behind everything
 
 STARTER = [
@@ -188,7 +191,8 @@ def level_tmx(rows, title, properties=None, door_to=None):
         for x, c in enumerate(row):
             if c in OBJECTS:
                 kind, w, h = OBJECTS[c]
-                objects.append((kind, x * TILE + (TILE - w) // 2, (y + 1) * TILE - h, w, h, {}))
+                objects.append((kind, x * TILE + (TILE - w) // 2, (y + 1) * TILE - h, w, h,
+                                dict(OBJECT_PROPERTIES.get(kind, {}))))
                 out.append(0)
                 continue
             out.append(GIDS[c])
@@ -225,7 +229,8 @@ def level_tmx(rows, title, properties=None, door_to=None):
             continue
         lines.append(f'  <object id="{n}" name="{name}" type="{kind}" x="{x}" y="{y}" width="{w}" height="{h}">')
         lines.append('   <properties>')
-        lines += [f'    <property name="{k}" value="{v}"/>' for k, v in props.items()]
+        lines += [f'    <property name="{k}" type="int" value="{v}"/>' if isinstance(v, int)
+                  else f'    <property name="{k}" value="{v}"/>' for k, v in props.items()]
         lines.append('   </properties>')
         lines.append('  </object>')
     lines += [' </objectgroup>', '</map>']

@@ -20,6 +20,12 @@
 ;;;   claimed value goes unchecked.
 ;;; - Blocks that must not run use another language (sh, cpp, text, ...) or
 ;;;   the header argument `:eval no', e.g. `#+begin_src scheme :eval no'.
+;;; - Header arguments come from the block and from the file's
+;;;   `#+property: header-args:scheme ...' lines, as in Org. `:dir D' runs
+;;;   the block in the folder D (relative to docs/): the tutorial's game
+;;;   runs in demo/tutorial, where its maps are. A block tangled into a
+;;;   *-test.scm (`:tangle .../tests/game-test.scm') is part of a test file:
+;;;   the docs.tutorial-game test runs it under `downstroke test'.
 ;;; - Examples run with the project root as the working directory (as under
 ;;;   ctest), so they load maps by their paths in the repository:
 ;;;   (load-tilemap "demo/maps/level1.tmx"). The module also predefines
@@ -43,48 +49,29 @@
 (define test-data-path (string-append project-root "/tests/data"))
 
 ;;; ---------------------------------------------------------------- org parsing
-(define (read-lines path)
-  (let ((text (call-with-input-file path get-string-all #:encoding "UTF-8")))
-    (string-split text #\newline)))
+;;; org-blocks and header-ref: blocks as (line language headers text), with
+;;; a file's #+property: header-args before each block's own.
+(include "../../tools/org-blocks.scm")
 
-(define (string-prefix-ci*? prefix s)
-  (and (>= (string-length s) (string-length prefix))
-       (string-ci=? prefix (substring s 0 (string-length prefix)))))
-
-(define (words s)
-  (remove string-null? (string-split s #\space)))
-
-;;; A block: (line language headers text), LINE being the 1-based line of
-;;; its #+begin_src.
-(define (org-blocks path)
-  (let loop ((lines (read-lines path)) (n 1) (acc '()))
-    (if (null? lines)
-        (reverse acc)
-        (let ((line (string-trim (car lines))))
-          (if (string-prefix-ci*? "#+begin_src" line)
-              (let* ((ws (words (substring line (string-length "#+begin_src"))))
-                     (lang (if (null? ws) "" (car ws)))
-                     (headers (if (null? ws) '() (cdr ws))))
-                (let body ((rest (cdr lines)) (m (+ n 1)) (text '()))
-                  (cond ((null? rest)
-                         (error "unterminated #+begin_src" path n))
-                        ((string-prefix-ci*? "#+end_src" (string-trim (car rest)))
-                         (loop (cdr rest) (+ m 1)
-                               (cons (list n lang headers
-                                           (string-join (reverse text) "\n"))
-                                     acc)))
-                        (else (body (cdr rest) (+ m 1) (cons (car rest) text))))))
-              (loop (cdr lines) (+ n 1) acc))))))
-
-;;; Whether a block's header arguments contain `:eval no' (or `:eval never').
 (define (eval-no? headers)
-  (let loop ((h headers))
-    (cond ((or (null? h) (null? (cdr h))) #f)
-          ((and (string=? (car h) ":eval") (member (cadr h) '("no" "never"))) #t)
-          (else (loop (cdr h))))))
+  (member (header-ref headers ":eval") '("no" "never")))
+
+(define (test-file-block? headers)
+  ;; A block tangled into a *-test.scm: a test file's part, which runs under
+  ;; `downstroke test' (the docs.tutorial-game test), not here.
+  (let ((target (header-ref headers ":tangle")))
+    (and target (string-suffix? "-test.scm" target))))
 
 (define (runnable? block)
-  (and (string=? (cadr block) "scheme") (not (eval-no? (caddr block)))))
+  (and (string=? (cadr block) "scheme")
+       (not (eval-no? (caddr block)))
+       (not (test-file-block? (caddr block)))))
+
+(define (block-dir block)
+  ;; The folder a block runs in: its :dir (relative to docs/, as Org takes
+  ;; it relative to the file), else the project's root.
+  (let ((dir (header-ref (caddr block) ":dir")))
+    (if dir (string-append docs-dir "/" dir) project-root)))
 
 ;;; "  ;; ⇒ 42" → "42"; anything else → #f.
 (define (arrow-comment text)
@@ -187,7 +174,8 @@
      (for-each
       (lambda (block)
         (set! examples (+ examples 1))
-        (let ((outcome (run-block file block module)))
+        (let ((outcome (begin (chdir (block-dir block))
+                              (let ((o (run-block file block module))) (chdir project-root) o))))
           (unless (eq? outcome #t)
             (format (current-error-port) "~a:~a: ~a~%" file (car block) outcome))
           (test-equal (format #f "~a:~a" file (car block)) #t outcome)))

@@ -261,6 +261,29 @@
 (test-equal "the step count keeps to real time within one step (steps dropped after a stall counted)" #t
   (every (lambda (p) (<= (abs (- (+ (cadr p) (cadddr p)) (/ (car p) 16))) 1.5)) presented))
 
+;; A game fresh from `downstroke new' plays in a window: Right held runs the
+;; player right, Escape ends it, and it says where the player got to.
+(define starter-dir (string-append dir "/starter"))
+(system* host "new" starter-dir)
+(define starter-out (pipe))
+(define starter (spawn host (list "--window" "--scale" "1" (string-append starter-dir "/game.scm"))
+                       (port->fdes (cdr starter-out))))
+(close-port (cdr starter-out))
+(test-assert "the new game's window opens" (wait-for (lambda () (window-named "starter")) 20))
+(system* "xdotool" "mousemove" "160" "120")
+(system* "xdotool" "keydown" "Right")
+(usleep 1000000)
+(system* "xdotool" "keyup" "Right")
+(system* "xdotool" "key" "Escape")
+(define starter-line (read-line-within (car starter-out) 20))
+(test-assert "… Right ran the player right, Escape ended it"
+  (and (string? starter-line)
+       (let ((x (string->number (car (string-split (cadr (string-split starter-line #\()) #\,)))))
+         (and x (> x 18)))))
+(unless (wait-for (lambda () (> (car (waitpid starter WNOHANG)) 0)) 10)
+  (kill starter SIGKILL)
+  (waitpid starter))
+
 (kill xvfb SIGTERM)
 (waitpid xvfb)
 (test-end "window")
