@@ -134,7 +134,7 @@
 (define starter (string-append games "/first"))
 (define made (run "new" starter))
 (test-equal "downstroke new DIR makes DIR (and its parents), saying what to run next"
-  (list 0 (string-append "Made " starter ": 8 files, a game that plays at once.") "")
+  (list 0 (string-append "Made " starter ": 9 files, a game that plays at once.") "")
   (list (first made) (car (string-split (second made) #\newline)) (third made)))
 (test-equal "… its files: the game, its map and tileset, sounds, tests, a README"
   '("README.md" "game.scm" "maps/level.tmx" "maps/tiles.png" "maps/tiles.tsx"
@@ -153,7 +153,7 @@
   (run-in starter "test"))
 (test-equal "a folder that is not empty is refused, named, and left as it was"
   (list 1 "" (string-append "downstroke new: \"" starter "\" exists and is not empty: give a new folder's name\n")
-        '("README.md" "game.scm" "maps" "sounds" "tests"))
+        '(".gitignore" "README.md" "game.scm" "maps" "sounds" "tests"))
   (append (run "new" starter) (list (cddr (scandir starter)))))
 (test-equal "a file is refused, named"
   (list 1 (string-append "downstroke new: \"" starter "/game.scm\" exists and is not a folder\n"))
