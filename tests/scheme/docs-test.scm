@@ -24,8 +24,8 @@
 ;;;   `#+property: header-args:scheme ...' lines, as in Org. `:dir D' runs
 ;;;   the block in the folder D (relative to docs/): the tutorial's game
 ;;;   runs in demo/tutorial, where its maps are. A block tangled into a
-;;;   *-test.scm (`:tangle .../tests/game-test.scm') is part of a test file:
-;;;   the docs.tutorial-game test runs it under `downstroke test'.
+;;;   *-test.scm (`:tangle .../tests/game-test.scm') is part of a test file,
+;;;   which runs whole, under `downstroke test', after the file's blocks.
 ;;; - Examples run with the project root as the working directory (as under
 ;;;   ctest), so they load maps by their paths in the repository:
 ;;;   (load-tilemap "demo/maps/level1.tmx"). The module also predefines
@@ -57,8 +57,8 @@
   (member (header-ref headers ":eval") '("no" "never")))
 
 (define (test-file-block? headers)
-  ;; A block tangled into a *-test.scm: a test file's part, which runs under
-  ;; `downstroke test' (the docs.tutorial-game test), not here.
+  ;; A block tangled into a *-test.scm: a test file's part, which runs whole
+  ;; under `downstroke test' (run-test-files), not block by block.
   (let ((target (header-ref headers ":tangle")))
     (and target (string-suffix? "-test.scm" target))))
 
@@ -167,10 +167,25 @@
 ;; Examples load maps by their repository paths.
 (chdir project-root)
 
+(define host (readlink "/proc/self/exe"))
+
+(define (run-test-files file blocks)
+  ;; The test files FILE's blocks are tangled into (docs.tutorial-current
+  ;; checks they hold exactly those blocks), run as a user runs them: one
+  ;; test each, passing when `downstroke test' exits 0.
+  (for-each
+   (lambda (target)
+     (set! examples (+ examples 1))
+     (test-equal (format #f "~a: ~a passes under downstroke test" file target)
+       0 (status:exit-val (system* host "test" (string-append docs-dir "/" target)))))
+   (delete-duplicates
+    (filter-map (lambda (b) (and (test-file-block? (caddr b)) (header-ref (caddr b) ":tangle"))) blocks))))
+
 (for-each
  (lambda (file)
-   (let ((blocks (filter runnable? (org-blocks (string-append docs-dir "/" file))))
-         (module (fresh-docs-module)))
+   (let* ((all (org-blocks (string-append docs-dir "/" file)))
+          (blocks (filter runnable? all))
+          (module (fresh-docs-module)))
      (for-each
       (lambda (block)
         (set! examples (+ examples 1))
@@ -179,7 +194,9 @@
           (unless (eq? outcome #t)
             (format (current-error-port) "~a:~a: ~a~%" file (car block) outcome))
           (test-equal (format #f "~a:~a" file (car block)) #t outcome)))
-      blocks)))
+      blocks)
+     ;; A game's golden-frame check draws: a build without the renderer skips them.
+     (when (renderer-available?) (run-test-files file all))))
  (doc-files))
 
 (test-assert "the documentation has examples" (> examples 0))
