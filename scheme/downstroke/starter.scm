@@ -36,11 +36,18 @@
           (loop (+ i (string-length from)) (cons* to (substring text start i) acc))
           (string-concatenate-reverse (cons (substring text start) acc))))))
 
+(define (naming-system-errors what path thunk)
+  ;; THUNK's value; a system error (a folder that cannot be made, a file
+  ;; that cannot be written) becomes one naming WHAT is done to PATH and why.
+  (catch 'system-error thunk
+    (lambda args
+      (fail "cannot ~a ~S: ~a" what path (strerror (system-error-errno args))))))
+
 (define (make-folders! path)
   ;; mkdir -p.
   (unless (or (string-null? path) (folder? path))
     (make-folders! (dirname path))
-    (mkdir path)))
+    (naming-system-errors "make the folder" path (lambda () (mkdir path)))))
 
 (define (copy-file! from to name)
   (if (any (lambda (s) (string-suffix? s from)) text-suffixes)
@@ -74,7 +81,8 @@ list of the files written, relative to DIR."
       (for-each (lambda (rel)
                   (let ((to (string-append dir "/" rel)))
                     (make-folders! (dirname to))
-                    (copy-file! (string-append source "/" rel) to name)))
+                    (naming-system-errors "write" to
+                      (lambda () (copy-file! (string-append source "/" rel) to name)))))
                 files)
       files)))
 

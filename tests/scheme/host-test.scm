@@ -158,6 +158,9 @@
 (test-equal "a file is refused, named"
   (list 1 (string-append "downstroke new: \"" starter "/game.scm\" exists and is not a folder\n"))
   (let ((r (run "new" (string-append starter "/game.scm")))) (list (first r) (third r))))
+(test-equal "a folder that cannot be made is named, with the reason"
+  (list 1 (string-append "downstroke new: cannot make the folder \"" starter "/game.scm\": File exists\n"))
+  (let ((r (run "new" (string-append starter "/game.scm/inside")))) (list (first r) (third r))))
 (mkdir (string-append games "/empty"))
 (test-equal "an empty folder is taken" 0 (first (run "new" (string-append games "/empty"))))
 (test-equal "downstroke new with no folder: the usage, status 2" '(2 "" "usage: downstroke new DIR\n")
