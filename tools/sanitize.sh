@@ -11,8 +11,9 @@ jobs=${JOBS:-$(nproc)}
 
 # The Scheme suites worth their time under ASan: the native steps (physics),
 # scenes and frames (world), maps (tilemap), tweens and entities, and what a
-# script can do to a running game (run-limits: stack, re-entry, sizes).
-scheme_suites="physics|world|tilemap|tween|entity|run-limits"
+# script can do to a running game (run-limits: stack, re-entry, sizes), and
+# golden frames read and compared (testing).
+scheme_suites="physics|world|tilemap|tween|entity|run-limits|testing"
 tests="^(core|bindings|render)\.|^fuzz\.replay\.|^scheme\.($scheme_suites)-test$"
 
 cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDOWNSTROKE_SANITIZE=ON >/dev/null

@@ -22,7 +22,7 @@ Rgba argb_at(const SDL_Surface* s, int x, int y) {
 FrameDiff compare_with_png(const Canvas& canvas, const std::string& golden, const std::string& actual_png,
                            const std::string& diff_png) {
     TileArt art;  // reads and converts the picture, bounds checked; frees it after
-    const SDL_Surface* g = art.picture(golden, std::nullopt);
+    const SDL_Surface* g = art.picture(golden, std::nullopt, 0, 0, "the golden picture");
     FrameDiff d;
     d.golden_width = g->w;
     d.golden_height = g->h;

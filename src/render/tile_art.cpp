@@ -147,9 +147,9 @@ SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColo
 }
 
 SDL_Surface* TileArt::picture(const std::string& path, const std::optional<MapColor>& trans, int declared_w,
-                              int declared_h) {
-    SDL_Surface* img = image(path, trans, "image layer image");
-    note_size(path, img, declared_w, declared_h, "image layer image");
+                              int declared_h, const char* what) {
+    SDL_Surface* img = image(path, trans, what);
+    note_size(path, img, declared_w, declared_h, what);
     return img;
 }
 

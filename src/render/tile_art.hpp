@@ -41,8 +41,9 @@ public:
     // pixels of the colour `trans` are clear. Throws RenderError naming the
     // file when it cannot be read.
     // The map's declared size (0: none) is checked as a tileset's is.
+    // `what` names it in errors and warnings.
     SDL_Surface* picture(const std::string& path, const std::optional<MapColor>& trans, int declared_w = 0,
-                         int declared_h = 0);
+                         int declared_h = 0, const char* what = "image layer image");
 
     // What drawing found that the game should hear of, once per image: an
     // image whose real size is not the one the map declares. take_warnings

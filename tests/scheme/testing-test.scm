@@ -51,6 +51,11 @@
         (and (file-exists? (string-append dir "/walker.actual.png"))
              (file-exists? (string-append dir "/walker.diff.png"))))
       (test-assert "… naming the two colours there: the golden box's outline expected, the background got"
-        (mentions? text "expected (170 170 170 255)" "got (24 28 40 255)")))))
+        (mentions? text "expected (170 170 170 255)" "got (24 28 40 255)")))
+    (let ((broken (string-append dir "/broken.png")))
+      (call-with-output-file broken (lambda (p) (display "\x89PNG\r\n\x1a\nnot a picture" p)))
+      (test-assert "a golden file that is no picture is an error naming it as the golden picture"
+        (mentions? (error-text (lambda () (check-frame played broken)))
+                   "check-frame" "the golden picture" broken "not a PNG")))))
 
 (test-end "testing")
