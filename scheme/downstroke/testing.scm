@@ -86,12 +86,13 @@ down), each once, in name order within a folder."
                     (cons (list file (or (test-runner-test-name r) "")
                                 (if (memq kind '(pass xfail skip)) 'pass 'fail)
                                 (test-result-ref r 'expected-value)
-                                ;; A check that raised: the error, as it would print.
+                                ;; A check that raised: (raised . the error, as it would print).
                                 (let ((err (test-result-ref r 'actual-error)))
                                   (if err
-                                      (call-with-output-string
-                                        (lambda (port)
-                                          (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port))))
+                                      (cons 'raised
+                                            (call-with-output-string
+                                              (lambda (port)
+                                                (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port)))))
                                       (test-result-ref r 'actual-value)))
                                 (test-result-ref r 'source-line))
                           (car results))))))
@@ -118,12 +119,24 @@ load is one failure naming its error. Returns its results."
                         (car results)))))
     (reverse (car results))))
 
+(define (raised? actual) (and (pair? actual) (eq? (car actual) 'raised)))
+
+(define (one-line text)
+  ;; An error's text on one line: its lines joined, the last newline gone.
+  (string-join (remove string-null? (map string-trim-both (string-split text #\newline))) " "))
+
+(define (outcome-text expected actual)
+  ;; "expected 5, actual 4", or "expected 5, raised: In procedure car: …".
+  (if (raised? actual)
+      (format #f "expected ~s, raised: ~a" expected (one-line (cdr actual)))
+      (format #f "expected ~s, actual ~s" expected actual)))
+
 (define (report-failure port r)
+  ;; One line a failed check: where, its name, what was expected and what came.
   (apply (lambda (file name kind expected actual line)
            (if (eq? kind 'error)
-               (format port "FAIL ~a: ~a~%  ~a" file name actual)
-               (format port "FAIL ~a:~a: ~a~%  expected: ~s~%  actual:   ~s~%" file (or line "?") name
-                       expected actual)))
+               (format port "FAIL ~a: ~a: ~a~%" file name (one-line actual))
+               (format port "FAIL ~a:~a: ~a: ~a~%" file (or line "?") name (outcome-text expected actual))))
          r))
 
 (define (xml-escape s)
@@ -150,7 +163,7 @@ load is one failure naming its error. Returns its results."
                 ((pass) (format port "/>~%"))
                 ((fail) (format port "><failure message=\"~a\">~a</failure></testcase>~%"
                                 (xml-escape (format #f "line ~a" (or (list-ref r 5) "?")))
-                                (xml-escape (format #f "expected: ~s~%actual:   ~s" (list-ref r 3) (list-ref r 4)))))
+                                (xml-escape (outcome-text (list-ref r 3) (list-ref r 4)))))
                 (else (format port "><error message=\"the file did not run to its end\">~a</error></testcase>~%"
                               (xml-escape (list-ref r 4))))))
             results)

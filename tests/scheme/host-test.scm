@@ -105,6 +105,7 @@
 (define suite-dir (string-append dir "/suite"))
 (mkdir suite-dir)
 (mkdir (string-append suite-dir "/more"))
+(mkdir (string-append dir "/raises"))
 (write-script "suite/good-test.scm"
               "(test-begin \"good\")\n(test-equal \"adds\" 4 (+ 2 2))\n(test-equal \"sees srfi-1\" 2 (find even? '(1 2 3)))\n(test-assert \"sees the engine\" (entity-ref '(#:x 1) #:x))\n(test-end \"good\")\n")
 (write-script "suite/more/bad-test.scm"
@@ -114,13 +115,18 @@
   (list-head (run "test" (string-append suite-dir "/good-test.scm")) 2))
 (define suite-run (run "test" "--junit" (string-append dir "/report.xml") suite-dir))
 (test-equal "a failing check: exit 1, file:line, expected, actual, then the count"
-  (list 1 (string-append "FAIL " suite-dir "/more/bad-test.scm:2: wrong sum\n  expected: 5\n  actual:   4\n"
+  (list 1 (string-append "FAIL " suite-dir "/more/bad-test.scm:2: wrong sum: expected 5, actual 4\n"
                          "3 passed, 1 failed\n"))
   (list-head suite-run 2))
 (test-assert "--junit writes a JUnit report naming the failure"
   (let ((xml (call-with-input-file (string-append dir "/report.xml") get-string-all)))
     (and (string-contains xml "<testsuite name=\"") (string-contains xml "failures=\"1\"")
-         (string-contains xml "<failure message=\"line 2\">expected: 5"))))
+         (string-contains xml "<failure message=\"line 2\">expected 5, actual 4</failure>"))))
+(write-script "raises/raises-test.scm" "(test-begin \"raises\")\n(test-equal \"car of 5\" 1 (car 5))\n(test-end \"raises\")\n")
+(test-equal "a check that raises: one line, the error on it"
+  (list 1 (string-append "FAIL " dir "/raises/raises-test.scm:2: car of 5: expected 1, raised: "
+                         "In procedure car: Wrong type argument in position 1 (expecting pair): 5\n0 passed, 1 failed\n"))
+  (list-head (run "test" (string-append dir "/raises")) 2))
 (write-script "suite/broken-test.scm" "(test-begin \"broken\")\n(car '())\n")
 (test-assert "a file that does not load is a failure, named with its error"
   (let ((r (run "test" (string-append suite-dir "/broken-test.scm"))))
