@@ -185,7 +185,8 @@
 
 (define (run-new-command args templates)
   ;; downstroke new DIR: a starter game in DIR (see (downstroke starter)).
-  (if (not (and (pair? args) (null? (cdr args)) (not (string-prefix? "-" (car args)))))
+  (if (not (and (pair? args) (null? (cdr args)) (not (string-null? (car args)))
+                (not (string-prefix? "-" (car args)))))
       (begin (display "usage: downstroke new DIR\n" (current-error-port)) 2)
       (let ((dir (car args)))
         (catch 'misc-error

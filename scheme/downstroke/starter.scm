@@ -68,6 +68,7 @@ list of the files written, relative to DIR."
         (dir (if (and (> (string-length dir) 1) (string-suffix? "/" dir))
                  (string-trim-right dir #\/)
                  dir)))
+    (when (string-null? dir) (fail "the folder's name is empty"))
     (unless (folder? source)
       (fail "no template folder ~S (the engine's templates are missing; DOWNSTROKE_TEMPLATE_DIR names another folder)"
             source))

@@ -171,6 +171,8 @@
 (test-equal "an empty folder is taken" 0 (first (run "new" (string-append games "/empty"))))
 (test-equal "downstroke new with no folder: the usage, status 2" '(2 "" "usage: downstroke new DIR\n")
   (run "new"))
+(test-equal "… and with an empty name (never the root folder)" '(2 "" "usage: downstroke new DIR\n")
+  (run "new" ""))
 (test-equal "missing templates are named"
   (list 1 (string-append "downstroke new: no template folder \"" dir "/none/starter\" (the engine's templates are missing; DOWNSTROKE_TEMPLATE_DIR names another folder)\n"))
   (begin
