@@ -177,7 +177,27 @@
     (test-equal "F11: fullscreen, the picture ×5 from the screen's corner" '(230 60 60)
       (and full (canvas-pixel-at full 0 0 5 0 0)))
     (test-equal "… its last pixel at the screen's far corner" background
-      (and full (canvas-pixel-at full 0 0 5 63 47)))))
+      (and full (canvas-pixel-at full 0 0 5 63 47))))
+  ;; Alt+Return toggles the same: back to the window's size and scale (where
+  ;; SDL last saw it: with no window manager, not where xdotool moved it),
+  ;; then full again.
+  (system* "xdotool" "key" "alt+Return")
+  (usleep 700000)
+  (let* ((back (screenshot "windowed.xwd"))
+         (red (and back (let search ((y 0) (x 0))
+                          (cond ((>= y 240) #f)
+                                ((>= x 320) (search (+ y 1) 0))
+                                ((equal? (screen-pixel back x y) '(230 60 60)) (cons x y))
+                                (else (search y (+ x 1))))))))
+    (test-equal "Alt+Return: out of fullscreen, the 300 × 200 window's picture again: ×4, a black bar left of it"
+      '((80 220 100) (0 0 0))
+      (and red (list (canvas-pixel-at back (car red) (cdr red) 4 40 20)
+                     (screen-pixel back (- (car red) 12) (+ (cdr red) 96))))))
+  (system* "xdotool" "key" "alt+Return")
+  (usleep 700000)
+  (let ((full (screenshot "fullscreen-again.xwd")))
+    (test-equal "… and Alt+Return again: fullscreen, ×5" '(230 60 60)
+      (and full (canvas-pixel-at full 0 0 5 0 0)))))
 
 (system* "xdotool" "key" "Escape")
 (test-equal "Escape quits the game" "quit" (read-line-within from-game 20))
