@@ -159,13 +159,7 @@ TUTORIAL_2 = [
 
 
 def tileset_tsx():
-    rows = -(-len(TILES) // COLUMNS)
-    lines = [
-        '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<tileset version="1.10" tiledversion="1.10.2" name="tiles" tilewidth="{TILE}" '
-        f'tileheight="{TILE}" tilecount="{len(TILES)}" columns="{COLUMNS}">',
-        f' <image source="tiles.png" width="{COLUMNS * TILE}" height="{rows * TILE}"/>',
-    ]
+    lines = art.tsx_head("tiles", len(TILES), COLUMNS)
     for i, (name, _, props) in enumerate(TILES):
         if not props:
             lines.append(f' <tile id="{i}" type="{name}"/>')

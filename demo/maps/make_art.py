@@ -650,14 +650,20 @@ def backdrop():
     return rows
 
 
-def sprites_tsx():
-    rows = -(-len(SPRITES) // SHEET_COLUMNS)
-    lines = [
+def tsx_head(name, count, columns):
+    """The first lines of a tileset of COUNT TILE×TILE tiles, COLUMNS a row,
+    over NAME.png (sheet() lays it out so)."""
+    rows = -(-count // columns)
+    return [
         '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<tileset version="1.10" tiledversion="1.10.2" name="sprites" tilewidth="{TILE}" '
-        f'tileheight="{TILE}" tilecount="{len(SPRITES)}" columns="{SHEET_COLUMNS}">',
-        f' <image source="sprites.png" width="{SHEET_COLUMNS * TILE}" height="{rows * TILE}"/>',
+        f'<tileset version="1.10" tiledversion="1.10.2" name="{name}" tilewidth="{TILE}" '
+        f'tileheight="{TILE}" tilecount="{count}" columns="{columns}">',
+        f' <image source="{name}.png" width="{columns * TILE}" height="{rows * TILE}"/>',
     ]
+
+
+def sprites_tsx():
+    lines = tsx_head("sprites", len(SPRITES), SHEET_COLUMNS)
     ids = {kind: i for i, (kind, _) in enumerate(SPRITES)}
     plays = dict(ANIMATIONS)
     for i, (kind, _) in enumerate(SPRITES):
