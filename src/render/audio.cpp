@@ -126,6 +126,30 @@ std::string bad_music_header(const SoundEnds& e) {
     return read_sound_header(e.head, e.last(), e.size, h, why) ? "" : why;
 }
 
+// The ends of the `kind` ("sound", "music") file at `path`, read once it is
+// known to be a regular file of a sound's size, and passed by `check`
+// (too_big_or_lying, bad_music_header); else RenderError naming the file.
+SoundEnds checked_ends(const char* kind, const std::string& path, std::string (*check)(const SoundEnds&)) {
+    SoundEnds e;
+    std::string why = not_a_sound_file(path);
+    if (why.empty()) why = read_ends(path, e);
+    if (why.empty()) why = check(e);
+    if (!why.empty()) throw RenderError(std::string(kind) + " " + path + ": " + why);
+    return e;
+}
+
+// Puts `item` under `name`, freeing what was there only now that the new
+// one is loaded (free_item: Mix_FreeChunk, Mix_FreeMusic).
+template <typename T>
+void replace_named(std::unordered_map<std::string, T*>& items, const std::string& name, T* item,
+                   void (*free_item)(T*)) {
+    auto [it, added] = items.try_emplace(name, item);
+    if (!added) {
+        free_item(it->second);
+        it->second = item;
+    }
+}
+
 // Mix_VolumeMusic's and Mix_Volume's scale from a volume of 0–1.
 int mixer_volume(double v) { return int(std::lround(std::clamp(v, 0.0, 1.0) * MIX_MAX_VOLUME)); }
 
@@ -157,12 +181,7 @@ SoundBank::~SoundBank() {
 }
 
 void SoundBank::load(const std::string& name, const std::string& path) {
-    if (const std::string why = not_a_sound_file(path); !why.empty())
-        throw RenderError("sound " + path + ": " + why);
-    SoundEnds e;
-    std::string why = read_ends(path, e);
-    if (why.empty()) why = too_big_or_lying(e);
-    if (!why.empty()) throw RenderError("sound " + path + ": " + why);
+    const SoundEnds e = checked_ends("sound", path, too_big_or_lying);
     // The file is read once when the header read took all of it.
     ChunkPtr chunk(e.head.size() == e.size ? Mix_LoadWAV_RW(SDL_RWFromConstMem(e.head.data(), int(e.head.size())), 1)
                                            : Mix_LoadWAV(path.c_str()));
@@ -171,30 +190,17 @@ void SoundBank::load(const std::string& name, const std::string& path) {
         throw RenderError("sound " + path + ": it decoded to " + std::to_string(chunk->alen >> 20) +
                           " MiB, more than the limit of " + std::to_string(kMaxSoundDecodedBytes >> 20) + " MiB");
     // Only now, with the new sound decoded, may the old one go.
-    auto [it, added] = sounds_.try_emplace(name, chunk.get());
-    if (!added) {
-        Mix_FreeChunk(it->second);
-        it->second = chunk.get();
-    }
+    replace_named(sounds_, name, chunk.get(), Mix_FreeChunk);
     chunk.release();
 }
 
 bool SoundBank::has(const std::string& name) const { return sounds_.contains(name); }
 
 void SoundBank::load_music(const std::string& name, const std::string& path) {
-    if (const std::string why = not_a_sound_file(path); !why.empty())
-        throw RenderError("music " + path + ": " + why);
-    SoundEnds e;
-    std::string why = read_ends(path, e);
-    if (why.empty()) why = bad_music_header(e);
-    if (!why.empty()) throw RenderError("music " + path + ": " + why);
+    checked_ends("music", path, bad_music_header);
     Mix_Music* music = Mix_LoadMUS(path.c_str());
     if (!music) throw RenderError("music " + path + ": " + Mix_GetError());
-    auto [it, added] = music_.try_emplace(name, music);
-    if (!added) {
-        Mix_FreeMusic(it->second);  // stops it first if it is the one playing
-        it->second = music;
-    }
+    replace_named(music_, name, music, Mix_FreeMusic);  // Mix_FreeMusic stops it first if it is playing
 }
 
 bool SoundBank::has_music(const std::string& name) const { return music_.contains(name); }
