@@ -613,18 +613,24 @@ SCM open_audio(SCM audible) {
     return scm_from_bool(bank->audible());
 }
 
-SCM load_sound(SCM name, SCM path) {
-    Failure f{"load-sound"};
+// load-sound and load-music: NAME's file loaded by `load` into the bank
+// (made silent if none is open yet) and remembered in `files`, so that a
+// bank opened later loads it again.
+SCM load_named(const char* who, SCM name, SCM path, void (SoundBank::*load)(const std::string&, const std::string&),
+               std::unordered_map<std::string, std::string>& files) {
+    Failure f{who};
     std::string n, p;
     guarded(f, nullptr, [&] {
         if (!symbol_arg(name, "name", n, f) || !from_scm(path, p, "file", f)) return;
         if (!bank) bank = std::make_unique<SoundBank>(false);
-        bank->load(n, p);
-        sound_files[n] = p;
+        (bank.get()->*load)(n, p);
+        files[n] = p;
     });
     if (f) raise(f);
     return SCM_UNSPECIFIED;
 }
+
+SCM load_sound(SCM name, SCM path) { return load_named("load-sound", name, path, &SoundBank::load, sound_files); }
 
 SCM play_sound(SCM name) {
     Failure f{"play-sound"};
@@ -638,16 +644,7 @@ SCM play_sound(SCM name) {
 }
 
 SCM load_music(SCM name, SCM path) {
-    Failure f{"load-music"};
-    std::string n, p;
-    guarded(f, nullptr, [&] {
-        if (!symbol_arg(name, "name", n, f) || !from_scm(path, p, "file", f)) return;
-        if (!bank) bank = std::make_unique<SoundBank>(false);
-        bank->load_music(n, p);
-        music_files[n] = p;
-    });
-    if (f) raise(f);
-    return SCM_UNSPECIFIED;
+    return load_named("load-music", name, path, &SoundBank::load_music, music_files);
 }
 
 // Milliseconds of a fade: the engine has checked them (a real from 0 to
