@@ -89,13 +89,16 @@
 (test-assert "xwd takes a screenshot" shot)
 (test-equal "the display is 320 × 240" '(320 240) (list-head shot 2))
 
-;; Find the window: the picture's background, 64 × 48 scaled ×2, centred.
-(define origin
+(define (picture-origin shot)
+  ;; (x . y) on SHOT of the game's picture: its red bar's first pixel, or #f.
   (let search ((y 0) (x 0))
     (cond ((>= y 240) #f)
           ((>= x 320) (search (+ y 1) 0))
-          ((equal? (screen-pixel shot x y) '(230 60 60)) (cons x y))  ; the red bar's first pixel
+          ((equal? (screen-pixel shot x y) '(230 60 60)) (cons x y))
           (else (search y (+ x 1))))))
+
+;; Find the window: the picture's background, 64 × 48 scaled ×2, centred.
+(define origin (picture-origin shot))
 (test-assert "the window shows the game's red bar" origin)
 (define (canvas-pixel cx cy)
   (canvas-pixel-of shot cx cy))
@@ -184,11 +187,7 @@
   (system* "xdotool" "key" "alt+Return")
   (usleep 700000)
   (let* ((back (screenshot "windowed.xwd"))
-         (red (and back (let search ((y 0) (x 0))
-                          (cond ((>= y 240) #f)
-                                ((>= x 320) (search (+ y 1) 0))
-                                ((equal? (screen-pixel back x y) '(230 60 60)) (cons x y))
-                                (else (search y (+ x 1))))))))
+         (red (and back (picture-origin back))))
     (test-equal "Alt+Return: out of fullscreen, the 300 × 200 window's picture again: ×4, a black bar left of it"
       '((80 220 100) (0 0 0))
       (and red (list (canvas-pixel-at back (car red) (cdr red) 4 40 20)
