@@ -36,9 +36,16 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 TILE = 16
 
-spec = importlib.util.spec_from_file_location("make_art", os.path.join(ROOT, "demo", "maps", "make_art.py"))
-art = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(art)
+def demo_script(name):
+    """demo/maps/NAME.py, whose pictures and map-writing pieces are used here."""
+    spec = importlib.util.spec_from_file_location(name, os.path.join(ROOT, "demo", "maps", name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+art = demo_script("make_art")
+maps = demo_script("make_maps")
 
 DOOR_TOP = [  # an arched wooden door, two cells tall: the upper half
     "................",
@@ -173,62 +180,40 @@ def tileset_tsx():
     return "\n".join(lines) + "\n"
 
 
-def level_tmx(rows, title, properties=None, door_to=None):
+def level_tmx(rows, title, door_to=None):
     """A map of ROWS; DOOR_TO, when given, is the door's property `to' (the
-    map it leads to). PROPERTIES: more map properties, (name, value) strings."""
+    map it leads to)."""
     height, width = len(rows), len(rows[0])
     for y, row in enumerate(rows):
         assert len(row) == width, f"{title} row {y}: {len(row)} cells, not {width}"
-    cells, objects = [], []
+    gids, objects, counts = [], [], {}
+
+    def add(kind, x, y, w, h, props):
+        counts[kind] = counts.get(kind, 0) + 1
+        name = kind if kind in ("player", "door") else f"{kind}-{counts[kind]}"
+        objects.append((name, kind, x, y, w, h, props))
+
     for y, row in enumerate(rows):
-        out = []
         for x, c in enumerate(row):
             if c in OBJECTS:
                 kind, w, h = OBJECTS[c]
-                objects.append((kind, x * TILE + (TILE - w) // 2, (y + 1) * TILE - h, w, h,
-                                dict(OBJECT_PROPERTIES.get(kind, {}))))
-                out.append(0)
+                add(kind, x * TILE + (TILE - w) // 2, (y + 1) * TILE - h, w, h, dict(OBJECT_PROPERTIES.get(kind, {})))
+                gids.append(0)
                 continue
-            out.append(GIDS[c])
+            gids.append(GIDS[c])
             if c == "D":  # the door: the two cells of its picture, T above D
-                props = {"to": door_to} if door_to else {}
-                objects.append(("door", x * TILE, (y - 1) * TILE, TILE, 2 * TILE, props))
-        cells.append(out)
-    csv = ",\n".join(",".join(str(g) for g in row) for row in cells)
-    lines = [
-        '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<map version="1.10" tiledversion="1.10.2" orientation="orthogonal" renderorder="right-down" '
-        f'width="{width}" height="{height}" tilewidth="{TILE}" tileheight="{TILE}" infinite="0" '
-        f'backgroundcolor="{BACKGROUND}" nextlayerid="3" nextobjectid="{len(objects) + 1}">',
-        ' <properties>',
-        f'  <property name="title" value="{title}"/>',
-    ]
-    lines += [f'  <property name="{k}" value="{v}"/>' for k, v in (properties or [])]
-    lines += [
-        ' </properties>',
-        ' <tileset firstgid="1" source="tiles.tsx"/>',
-        f' <layer id="1" name="tiles" width="{width}" height="{height}">',
-        '  <data encoding="csv">',
-        csv,
-        '</data>',
-        ' </layer>',
-        ' <objectgroup id="2" name="things">',
-    ]
-    counts = {}
-    for n, (kind, x, y, w, h, props) in enumerate(objects, 1):
-        counts[kind] = counts.get(kind, 0) + 1
-        name = kind if kind in ("player", "door") else f"{kind}-{counts[kind]}"
-        if not props:
-            lines.append(f'  <object id="{n}" name="{name}" type="{kind}" x="{x}" y="{y}" width="{w}" height="{h}"/>')
-            continue
-        lines.append(f'  <object id="{n}" name="{name}" type="{kind}" x="{x}" y="{y}" width="{w}" height="{h}">')
-        lines.append('   <properties>')
-        lines += [f'    <property name="{k}" type="int" value="{v}"/>' if isinstance(v, int)
-                  else f'    <property name="{k}" value="{v}"/>' for k, v in props.items()]
-        lines.append('   </properties>')
-        lines.append('  </object>')
-    lines += [' </objectgroup>', '</map>']
-    return "\n".join(lines) + "\n"
+                add("door", x * TILE, (y - 1) * TILE, TILE, 2 * TILE, {"to": door_to} if door_to else {})
+    return f"""<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.10" tiledversion="1.10.2" orientation="orthogonal" renderorder="right-down" width="{width}" height="{height}" tilewidth="{TILE}" tileheight="{TILE}" infinite="0" backgroundcolor="{BACKGROUND}" nextlayerid="3" nextobjectid="{len(objects) + 1}">
+ <properties>
+  <property name="title" value="{title}"/>
+ </properties>
+ <tileset firstgid="1" source="tiles.tsx"/>
+ <layer id="1" name="tiles" width="{width}" height="{height}">
+{maps.data_element(gids, width, "csv")}
+ </layer>
+{maps.objects_element(objects, "things")}</map>
+"""
 
 
 def write_set(folder, maps):

@@ -195,10 +195,10 @@ def prop_element(name, value):
     return f'    <property name="{name}" type="{kind}" value="{value}"/>'
 
 
-def objects_element(objects):
+def objects_element(objects, layer="spawns"):
     if not objects:
         return ""
-    out = [' <objectgroup id="2" name="spawns">']
+    out = [f' <objectgroup id="2" name="{layer}">']
     for i, (name, kind, x, y, w, h, props) in enumerate(objects, 1):
         head = f'  <object id="{i}" name="{name}" type="{kind}" x="{x}" y="{y}" width="{w}" height="{h}"'
         if props:
