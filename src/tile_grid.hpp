@@ -164,6 +164,25 @@ inline int64_t to_cell(double c) {
     return static_cast<int64_t>(std::clamp(c, -kCellIndexLimit, kCellIndexLimit));
 }
 
+// ⌊q⌋ and ⌈q⌉ as cell indices. Most flonum positions are small (a body on a
+// 1:2 ramp stays a flonum from its first half-pixel on, semantics §12), and
+// for |q| < 2^52 truncating and correcting by one is exact, with no libm
+// call and no clamp; NaN and huge values take floor/ceil and the clamp.
+inline int64_t floor_cell(double q) {
+    if (std::fabs(q) < 0x1p52) {
+        const auto t = static_cast<int64_t>(q);
+        return t - (q < static_cast<double>(t));
+    }
+    return to_cell(std::floor(q));
+}
+inline int64_t ceil_cell(double q) {
+    if (std::fabs(q) < 0x1p52) {
+        const auto t = static_cast<int64_t>(q);
+        return t + (q > static_cast<double>(t));
+    }
+    return to_cell(std::ceil(q));
+}
+
 // Tiles are nearly always a power of two wide: a shift then does the
 // division (an arithmetic shift floors negatives too).
 inline bool power_of_two(int tile) { return (tile & (tile - 1)) == 0; }
@@ -188,7 +207,7 @@ inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
         }
         return {floor_div(p, tile), ceil_div(p + s, tile) - 1};
     }
-    return {to_cell(std::floor(pos.v / tile)), to_cell(std::ceil((pos.v + size.v) / tile)) - 1};
+    return {floor_cell(pos.v / tile), ceil_cell((pos.v + size.v) / tile) - 1};
 }
 
 [[gnu::always_inline]] inline int64_t cell_of(Num pos, int tile) {
@@ -197,7 +216,7 @@ inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
         const auto p = static_cast<int64_t>(pos.v);
         return power_of_two(tile) ? p >> std::countr_zero(static_cast<unsigned>(tile)) : floor_div(p, tile);
     }
-    return to_cell(std::floor(pos.v / tile));
+    return floor_cell(pos.v / tile);
 }
 
 }  // namespace ds

@@ -124,6 +124,29 @@ TEST_CASE("cell_of: floor of pos / tile") {
     CHECK(cell_of(F(-1e12), 16) == -62500000000LL);
 }
 
+TEST_CASE("cell_of and cells_of: flonums on both sides of 2^52 cells") {
+    // Below 2^52 a quotient is truncated and corrected by one; from 2^52 on
+    // floor/ceil and the clamp take it. Both sides give the same cells.
+    const double near = 0x1p52 * 16;  // pos / 16 == 2^52
+    CHECK(cell_of(F(near - 16), 16) == (1LL << 52) - 1);
+    CHECK(cell_of(F(near), 16) == 1LL << 52);
+    CHECK(cell_of(F(-near + 16), 16) == -(1LL << 52) + 1);
+    CHECK(cell_of(F(-near), 16) == -(1LL << 52));
+    CHECK(cell_of(F(-8.0), 16) == -1);
+    CHECK(cell_of(F(-16.0), 16) == -1);
+    CHECK(cell_of(F(-16.5), 16) == -2);
+    CHECK(range_is(cells_of(F(near - 32), F(16.0), 16), (1LL << 52) - 2, (1LL << 52) - 2));
+    CHECK(range_is(cells_of(F(-near), F(8.0), 16), -(1LL << 52), -(1LL << 52)));
+    // beyond int64 the clamp holds
+    CHECK(cell_of(F(1e300), 16) == static_cast<int64_t>(ds::kCellIndexLimit));
+    CHECK(cell_of(F(-1e300), 16) == static_cast<int64_t>(-ds::kCellIndexLimit));
+    // cells of 24 px: a quotient that is not a power-of-two scaling
+    CHECK(cell_of(F(-0.25), 24) == -1);
+    CHECK(cell_of(F(47.75), 24) == 1);
+    CHECK(range_is(cells_of(F(23.5), F(24.5), 24), 0, 1));
+    CHECK(range_is(cells_of(F(-24.0), F(24.0), 24), -1, -1));
+}
+
 TEST_CASE("TileGrid: sizes and the row-major solid mask") {
     // . # . .
     // # . . #
