@@ -159,29 +159,18 @@ namespace cell_math {
 inline int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
 inline int64_t ceil_div(int64_t a, int64_t b) { return a / b + ((a % b != 0) && (a > 0)); }
 
-// Doubles beyond int64 are clamped: such cells lie outside any grid anyway.
-inline int64_t to_cell(double c) {
-    return static_cast<int64_t>(std::clamp(c, -kCellIndexLimit, kCellIndexLimit));
-}
-
-// ⌊q⌋ and ⌈q⌉ as cell indices. Most flonum positions are small (a body on a
-// 1:2 ramp stays a flonum from its first half-pixel on, semantics §12), and
-// for |q| < 2^52 truncating and correcting by one is exact, with no libm
-// call and no clamp; NaN and huge values take floor/ceil and the clamp.
+// ⌊q⌋ and ⌈q⌉ as cell indices, clamped to ±kCellIndexLimit (beyond it
+// the conversion is undefined, and such cells lie outside any grid).
+// Truncating and correcting by one is exact for every clamped q: without
+// SSE4.1's roundsd, std::floor is a libm call, and a body on a 1:2 ramp
+// stays a flonum from its first half pixel on (semantics §12), so the tile
+// steps ask for several per body. The hashed grids use the same.
 inline int64_t floor_cell(double q) {
-    if (std::fabs(q) < 0x1p52) {
-        const auto t = static_cast<int64_t>(q);
-        return t - (q < static_cast<double>(t));
-    }
-    return to_cell(std::floor(q));
+    const double c = std::clamp(q, -kCellIndexLimit, kCellIndexLimit);
+    const auto t = static_cast<int64_t>(c);
+    return t - (c < static_cast<double>(t));
 }
-inline int64_t ceil_cell(double q) {
-    if (std::fabs(q) < 0x1p52) {
-        const auto t = static_cast<int64_t>(q);
-        return t + (q > static_cast<double>(t));
-    }
-    return to_cell(std::ceil(q));
-}
+inline int64_t ceil_cell(double q) { return -floor_cell(-q); }
 
 // Tiles are nearly always a power of two wide: a shift then does the
 // division (an arithmetic shift floors negatives too).

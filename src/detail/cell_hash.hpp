@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "constants.hpp"
+#include "../tile_grid.hpp"
 
 namespace ds {
 
@@ -23,13 +24,7 @@ struct CellBox {
 // ⌊v / cell⌋ given 1/cell. Monotone in v (a product with a positive constant
 // rounds monotonely), so overlapping intervals always share a cell; huge
 // coordinates are clamped (they only make extra candidates).
-inline int64_t cell_index(double v, double inv_cell) {
-    // ⌊c⌋ by truncation and a correction: without SSE4.1's roundsd, std::floor
-    // is a dozen instructions, and the grids take four of these per box.
-    const double c = std::clamp(v * inv_cell, -kCellIndexLimit, kCellIndexLimit);
-    const auto t = static_cast<int64_t>(c);
-    return t - (c < static_cast<double>(t));
-}
+inline int64_t cell_index(double v, double inv_cell) { return cell_math::floor_cell(v * inv_cell); }
 
 // 1 / cell size for a grid of n boxes: cells twice the median box size
 // (at least 1), so most boxes touch 1-4 cells. The median comes from at
