@@ -31,4 +31,18 @@ struct CellShape {
     bool operator==(const CellShape&) const = default;
 };
 
+// A shape's numbers as doubles, converted once when a grid takes the shape
+// (TileGrid::set_shape) rather than each time a rule places it in a cell:
+// the rules place a shape several times per body per frame.
+struct ShapeGeometry {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the box
+    double ax = 0, ay = 0;                  // the slant's first point
+    double dx = 0, dy = 0;                  // its run and rise
+
+    static ShapeGeometry of(const CellShape& s) {
+        const auto d = [](int32_t v) { return static_cast<double>(v); };
+        return {d(s.x0), d(s.y0), d(s.x1), d(s.y1), d(s.ax), d(s.ay), d(s.bx - s.ax), d(s.by - s.ay)};
+    }
+};
+
 }  // namespace ds

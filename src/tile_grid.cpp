@@ -49,6 +49,8 @@ TileGrid& TileGrid::operator=(TileGrid&& o) noexcept {
     o.shape_ids_.clear();
     shapes_ = std::move(o.shapes_);
     o.shapes_.clear();
+    geometry_ = std::move(o.geometry_);
+    o.geometry_.clear();
     steepest_ = std::exchange(o.steepest_, 0.0);
     revision_.bump();
     o.revision_.bump();
@@ -78,6 +80,7 @@ void TileGrid::set_shape(int64_t col, int64_t row, const CellShape& shape) {
         if (shapes_.size() >= kMaxGridShapes)
             throw std::length_error("tile grid: more than " + std::to_string(kMaxGridShapes) + " distinct cell shapes");
         shapes_.push_back(shape);
+        geometry_.push_back(ShapeGeometry::of(shape));
         steepest_ = std::max(steepest_, shape.steepness());
         found = std::prev(shapes_.end());
     }
@@ -97,10 +100,6 @@ bool TileGrid::solid_at(double x, double y) const {
 double CellShape::steepness() const {
     if (cut == Cut::None) return 0;
     return std::fabs(static_cast<double>(by - ay)) / static_cast<double>(bx - ax);
-}
-
-CellRange TileGrid::clip(CellRange r, int64_t origin, int count) {
-    return {std::max(r.first, origin), std::min(r.last, origin + count - 1)};
 }
 
 }  // namespace ds

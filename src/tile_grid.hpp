@@ -124,6 +124,10 @@ public:
     // none): how far a body walking at vx px/frame may snap down (§12).
     double steepest_ramp() const { return steepest_; }
     std::span<const CellShape> shape_table() const { return shapes_; }
+    // The doubles of a shape this grid's shape() gave (and of no other).
+    const ShapeGeometry& geometry(const CellShape& s) const {
+        return geometry_[static_cast<size_t>(&s - shapes_.data())];
+    }
 
     // The part of a column (row) range that lies inside the grid: physics
     // never walks cells that cannot be solid, however large the box or move.
@@ -131,7 +135,10 @@ public:
     CellRange clip_rows(CellRange r) const { return clip(r, origin_row_, rows_); }
 
 private:
-    static CellRange clip(CellRange r, int64_t origin, int count);
+    // Inline: the tile steps clip a few ranges per body.
+    static CellRange clip(CellRange r, int64_t origin, int count) {
+        return {std::max(r.first, origin), std::min(r.last, origin + count - 1)};
+    }
     // A cell's index for an edit, or std::out_of_range naming `what`.
     size_t edited_index(int64_t col, int64_t row, const char* what) const;
     size_t index(int64_t col, int64_t row) const {
@@ -145,6 +152,7 @@ private:
     // memory at all) until a cell gets a shape.
     SharedCells<uint16_t> shape_ids_;
     std::vector<CellShape> shapes_;  // distinct, in the order first met
+    std::vector<ShapeGeometry> geometry_;  // shapes_[i]'s doubles
     double steepest_ = 0;
     GridRevision revision_;
 };
