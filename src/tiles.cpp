@@ -44,36 +44,31 @@ void snap_flush(const BodyAxis& a, double edge, bool forward) {
     a.pos = forward ? Num{edge - a.size.v, exact} : Num{edge, exact};
 }
 
+// What a walk along the candidate cells met first.
+enum class Met { Nothing, Whole, Shape };
+
 // Walks candidate cells from the side the body moves from, so the first
-// solid cell met is the one it reaches first. Returns whether one stopped it.
-template <typename Solid>
-bool resolve_axis(const TileAxis& t, CellRange along, CellRange across, Solid solid) {
+// cell met is the one it reaches first. `kind(c, k)`: < 0 for a whole cell
+// that stops the move, which puts the body flush against it; > 0 for a
+// shaped cell the move may meet, which leaves the rest to the shape rules
+// (they treat every whole cell as this walk does); 0 for neither.
+template <typename Kind>
+Met walk_axis(const TileAxis& t, CellRange along, CellRange across, Kind kind) {
     const BodyAxis& a = t.body;
-    if (along.empty() || across.empty()) return false;
+    if (along.empty() || across.empty()) return Met::Nothing;
     const bool forward = a.vel.v > 0;
     for (int64_t i = 0, n = along.last - along.first + 1; i < n; ++i) {
         const int64_t c = forward ? along.first + i : along.last - i;
         for (int64_t k = across.first; k <= across.last; ++k) {
-            if (!solid(c, k)) continue;
+            const int v = kind(c, k);
+            if (v == 0) continue;
+            if (v > 0) return Met::Shape;
             snap_flush(a, static_cast<double>(forward ? c : c + 1) * t.tile, forward);
             a.vel = Num::integer(0);
-            return true;
+            return Met::Whole;
         }
     }
-    return false;
-}
-
-// Walks the cells as resolve_axis does and says whether it meets a shaped
-// cell (kind(c, k) > 0) before a cell that would stop the body (< 0).
-template <typename Kind>
-bool meets_shape_first(CellRange along, CellRange across, bool forward, Kind kind) {
-    if (along.empty() || across.empty()) return false;
-    for (int64_t i = 0, n = along.last - along.first + 1; i < n; ++i) {
-        const int64_t c = forward ? along.first + i : along.last - i;
-        for (int64_t k = across.first; k <= across.last; ++k)
-            if (const int v = kind(c, k); v != 0) return v > 0;
-    }
-    return false;
+    return Met::Nothing;
 }
 
 // A contact body's #:blocked (semantics §10): the step owns its axis's
@@ -221,10 +216,9 @@ bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
     return false;
 }
 
-bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s) {
+// `cols`: the move's candidate columns, clipped to the grid.
+bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRange cols) {
     const Num move = s.share(b.vx);
-    const TileAxis t{along_x(b), move, g.tile_width()};
-    const CellRange cols = g.clip_cols(candidates(t, mode));
     const Num x_start = b.x - move, y_start = b.y;
     XMove m{b.vx.v > 0, 0, 0, {}};
     m.lead_before = m.fwd ? (x_start + b.w).v : x_start.v;
@@ -368,17 +362,11 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
     // The shape rules give what the whole-cell walk gives until the walk
     // meets a shaped cell: most moves in a map with ramps never do.
-    if (grid->has_shapes() && meets_shape_first(cols, rows, vx.v > 0, [&](int64_t c, int64_t r) {
-            const uint8_t k = grid->cell(c, r);
-            return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
-        })) {
-        const bool stopped = shaped_x(b, *grid, mode, s);
-        if (stopped) b.vx = stop_velocity(vx, b, s);
-        note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
-        return true;
-    }
-    const bool stopped = resolve_axis(a, cols, rows,
-                                      [&](int64_t c, int64_t r) { return grid->solid(c, r); });
+    const Met met = grid->has_shapes() ? walk_axis(a, cols, rows, [&](int64_t c, int64_t r) {
+        const uint8_t k = grid->cell(c, r);
+        return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
+    }) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->solid(c, r) ? -1 : 0; });
+    const bool stopped = met == Met::Shape ? shaped_x(b, *grid, mode, s, cols) : met == Met::Whole;
     if (stopped) b.vx = stop_velocity(vx, b, s);
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
     return true;
@@ -400,11 +388,11 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     const bool may_land = b.vy.v > 0 && !b.drop_through;
     const double feet_before = (b.y - a.move + b.h).v;
     const double th = grid->tile_height();
-    auto stops = [&](int64_t r, int64_t c) {
-        const uint8_t cell = grid->cell(c, r);
+    auto stops_as = [&](uint8_t cell, int64_t r) {
         return cell == kSolidCell ||
                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th);
     };
+    auto stops = [&](int64_t r, int64_t c) { return stops_as(grid->cell(c, r), r); };
     bool stopped;
     // A shape can stop the move only if the feet (moving down) or the head
     // (up) crossed into its box's rows of px: a shape in the row a body
@@ -415,13 +403,12 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
         const double oy = static_cast<double>(r) * th, y0 = oy + sh.y0, y1 = oy + sh.y1;
         return vy.v > 0 ? feet > y0 && feet_before < y1 : head < y1 && head_before > y0;
     };
-    if (grid->has_shapes() && meets_shape_first(rows, cols, vy.v > 0, [&](int64_t r, int64_t c) {
-            return grid->cell(c, r) == kShapedCell ? (may_stop(r, c) ? 1 : 0) : stops(r, c) ? -1 : 0;
-        })) {
-        stopped = shaped_y(b, *grid, mode, s, stops);
-    } else {
-        stopped = resolve_axis(a, rows, cols, stops);
-    }
+    const Met met = grid->has_shapes() ? walk_axis(a, rows, cols, [&](int64_t r, int64_t c) {
+        const uint8_t cell = grid->cell(c, r);
+        if (cell == kShapedCell) return may_stop(r, c) ? 1 : 0;
+        return stops_as(cell, r) ? -1 : 0;
+    }) : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) { return stops(r, c) ? -1 : 0; });
+    stopped = met == Met::Shape ? shaped_y(b, *grid, mode, s, stops) : met == Met::Whole;
     if (stopped) b.vy = stop_velocity(vy, b, s);
     // Not stopped: a walker may follow a ramp down (§12), which is no hit.
     if (!stopped && grid->has_shapes() && vy.v > 0) stopped = snap_down(b, *grid, s);
