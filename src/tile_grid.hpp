@@ -113,6 +113,8 @@ public:
         if (cell(col, row) != kShapedCell) return nullptr;
         return &shapes_[shape_ids_[index(col, row)]];
     }
+    // The shape of a cell known to be kShapedCell (cell() said so).
+    const CellShape& shape_in(int64_t col, int64_t row) const { return shapes_[shape_ids_[index(col, row)]]; }
     // Whether the world point (x, y) lies in a solid part of the grid: a
     // whole solid cell, or inside a solid shape (one-way parts are not
     // solid to queries, semantics §8).

@@ -52,8 +52,9 @@ enum class Met { Nothing, Whole, Shape };
 // that stops the move, which puts the body flush against it; > 0 for a
 // shaped cell the move may meet, which leaves the rest to the shape rules
 // (they treat every whole cell as this walk does); 0 for neither.
+// `met_at`: where a shape was met along the axis (c).
 template <typename Kind>
-Met walk_axis(const TileAxis& t, CellRange along, CellRange across, Kind kind) {
+Met walk_axis(const TileAxis& t, CellRange along, CellRange across, Kind kind, int64_t& met_at) {
     const BodyAxis& a = t.body;
     if (along.empty() || across.empty()) return Met::Nothing;
     const bool forward = a.vel.v > 0;
@@ -62,7 +63,10 @@ Met walk_axis(const TileAxis& t, CellRange along, CellRange across, Kind kind) {
         for (int64_t k = across.first; k <= across.last; ++k) {
             const int v = kind(c, k);
             if (v == 0) continue;
-            if (v > 0) return Met::Shape;
+            if (v > 0) {
+                met_at = c;
+                return Met::Shape;
+            }
             snap_flush(a, static_cast<double>(forward ? c : c + 1) * t.tile, forward);
             a.vel = Num::integer(0);
             return Met::Whole;
@@ -263,16 +267,14 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRan
     return stopped;
 }
 
-// `stops(r, c)`: a whole cell that stops this move (the whole-cell walk's
-// own rule, solid or one-way).
+// `rows`: the candidate rows from the first that may stop the move (the
+// walk met nothing before it), `cols` the body's columns, both clipped;
+// `stops(cell, r)`: a whole cell that stops this move (the whole-cell
+// walk's own rule, solid or one-way).
 template <typename Stops>
-bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, Stops stops) {
+bool shaped_y(Body& b, const TileGrid& g, SubStep s, CellRange rows, CellRange cols, Stops stops) {
     const Num move = s.share(b.vy);
     const bool fwd = b.vy.v > 0;
-    const TileAxis t{along_y(b), move, g.tile_height()};
-    const CellRange rows = g.clip_rows(candidates(t, mode));
-    const CellRange cols = g.clip_cols(cells_of(b.x, b.w, g.tile_width()));
-    if (rows.empty() || cols.empty()) return false;
     const bool may_land = fwd && !b.drop_through;
     const double feet_before = (b.y - move + b.h).v, head_before = (b.y - move).v;
     const double feet = (b.y + b.h).v, head = b.y.v;
@@ -283,14 +285,14 @@ bool shaped_y(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, Stops s
         bool found = false;
         double stop = 0;
         for (int64_t c = cols.first; c <= cols.last; ++c) {
-            if (stops(r, c)) {
+            const uint8_t cell = g.cell(c, r);
+            if (stops(cell, r)) {
                 snap_flush(along_y(b), static_cast<double>(fwd ? r : r + 1) * th, fwd);
                 b.vy = Num::integer(0);
                 return true;
             }
-            const CellShape* shp = g.shape(c, r);
-            if (!shp) continue;
-            const CellShape& sh = *shp;
+            if (cell != kShapedCell) continue;
+            const CellShape& sh = g.shape_in(c, r);
             if (sh.one_way && !may_land) continue;
             const Placed p(sh, c, r, g);
             double a, z, top, under;
@@ -362,10 +364,11 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
     const CellRange rows = grid->clip_rows(cells_of(b.y, b.h, grid->tile_height()));
     // The shape rules give what the whole-cell walk gives until the walk
     // meets a shaped cell: most moves in a map with ramps never do.
+    int64_t met_at = 0;
     const Met met = grid->has_shapes() ? walk_axis(a, cols, rows, [&](int64_t c, int64_t r) {
         const uint8_t k = grid->cell(c, r);
         return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
-    }) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->solid(c, r) ? -1 : 0; });
+    }, met_at) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->solid(c, r) ? -1 : 0; }, met_at);
     const bool stopped = met == Met::Shape ? shaped_x(b, *grid, mode, s, cols) : met == Met::Whole;
     if (stopped) b.vx = stop_velocity(vx, b, s);
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
@@ -392,23 +395,28 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
         return cell == kSolidCell ||
                (may_land && cell == kOneWayCell && feet_before <= static_cast<double>(r) * th);
     };
-    auto stops = [&](int64_t r, int64_t c) { return stops_as(grid->cell(c, r), r); };
     bool stopped;
     // A shape can stop the move only if the feet (moving down) or the head
     // (up) crossed into its box's rows of px: a shape in the row a body
     // stands in, beside it, does not send it down the shape rules.
     const double feet = (b.y + b.h).v, head = b.y.v, head_before = (b.y - a.move).v;
     auto may_stop = [&](int64_t r, int64_t c) {
-        const CellShape& sh = *grid->shape(c, r);
+        const CellShape& sh = grid->shape_in(c, r);
         const double oy = static_cast<double>(r) * th, y0 = oy + sh.y0, y1 = oy + sh.y1;
         return vy.v > 0 ? feet > y0 && feet_before < y1 : head < y1 && head_before > y0;
     };
+    int64_t met_at = 0;
     const Met met = grid->has_shapes() ? walk_axis(a, rows, cols, [&](int64_t r, int64_t c) {
         const uint8_t cell = grid->cell(c, r);
         if (cell == kShapedCell) return may_stop(r, c) ? 1 : 0;
         return stops_as(cell, r) ? -1 : 0;
-    }) : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) { return stops(r, c) ? -1 : 0; });
-    stopped = met == Met::Shape ? shaped_y(b, *grid, mode, s, stops) : met == Met::Whole;
+    }, met_at) : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) { return stops_as(grid->cell(c, r), r) ? -1 : 0; }, met_at);
+    if (met == Met::Shape) {
+        const CellRange from = vy.v > 0 ? CellRange{met_at, rows.last} : CellRange{rows.first, met_at};
+        stopped = shaped_y(b, *grid, s, from, cols, stops_as);
+    } else {
+        stopped = met == Met::Whole;
+    }
     if (stopped) b.vy = stop_velocity(vy, b, s);
     // Not stopped: a walker may follow a ramp down (§12), which is no hit.
     if (!stopped && grid->has_shapes() && vy.v > 0) stopped = snap_down(b, *grid, s);
