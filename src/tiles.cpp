@@ -137,12 +137,72 @@ struct XMove {
 // shape p, which it does not overlap and does not climb.
 bool could_meet(const Placed& p, double top) { return p.s.cut != Cut::Floor || top >= p.box_bottom(); }
 
-// The nearest side of a solid in column c that the move runs into, at the
-// body's present rows; false when none. `whole`: a whole cell's.
-bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, XMove& m, double& wall, bool& whole) {
-    const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+// What the ramps of one column, scanned at the box's present rows, would
+// do to it: lift it onto the highest floor ramp top it overlaps over its
+// sweep, push it under the lowest ceiling ramp bottom.
+struct Climb {
+    double new_feet, new_head;
+    bool up = false, down = false, ceilings = false, one_way_below = false;
+};
+
+// One shaped cell's part in a climb scan of a box whose head and feet are
+// at `head` and `feet`.
+void climb_cell(const Body& b, const Placed& p, XMove& m, double head, double feet, Climb& k) {
+    const CellShape& sh = p.s;
+    if (!sh.ramp()) {
+        m.unsure = m.unsure || !sh.one_way;
+        return;
+    }
+    double a, z, t, under;
+    if (!p.over(m.sweep, a, z) || !p.extent(a, z, t, under)) return;
+    if (sh.cut == Cut::Floor) {
+        if (sh.one_way && (b.drop_through || !enters_from_above(p, m.fwd, m.lead_before, feet))) {
+            k.one_way_below = k.one_way_below || !b.drop_through;  // a lift may bring the feet above it
+            return;
+        }
+        if (head < p.box_bottom() && feet > t) {
+            k.up = true;
+            if (t < k.new_feet) k.new_feet = t;
+        }
+        m.unsure = m.unsure || (!sh.one_way && head >= p.box_bottom());
+    } else if (!sh.one_way) {
+        k.ceilings = true;
+        m.unsure = true;
+        if (feet > p.box_top() && head < under) {
+            k.down = true;
+            if (k.new_head < under) k.new_head = under;
+        }
+    }
+}
+
+enum class Climbed { Done, Again, Squeezed };
+
+// Moves the box as a climb scan says and updates `rows` to its rows:
+// Done when no ramp of the column can move it further, Again when the
+// column must be scanned again at the new rows (a fast body on a long
+// ramp), Squeezed when it cannot move (ramps push it both ways).
+Climbed apply_climb(Body& b, const TileGrid& g, XMove& m, const Climb& k, CellRange& rows) {
+    if (!k.up && !k.down) return Climbed::Done;
+    if ((k.up && k.down) || (k.up && m.lifted < 0) || (k.down && m.lifted > 0)) return Climbed::Squeezed;
+    const bool exact = box_exact(b);
+    b.y = k.up ? exact_if(exact, k.new_feet - b.h.v) : exact_if(exact, k.new_head);
+    m.lifted = k.up ? 1 : -1;
+    const CellRange now = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+    const bool same_rows = now.first == rows.first && now.last == rows.last;
+    rows = now;
+    // Over the same rows, a lift onto the highest of the floor ramps
+    // leaves none to climb; only a ceiling ramp could now push back.
+    return k.up && !k.ceilings && !k.one_way_below && same_rows ? Climbed::Done : Climbed::Again;
+}
+
+// Column c at the box's rows, in one pass: the nearest side of a solid the
+// move runs into there (true; `whole`: a whole cell's), else the first
+// climb scan, applied. `rows`: the box's rows, kept up to date.
+bool scan_column(Body& b, const TileGrid& g, int64_t c, CellRange& rows, XMove& m, double& wall, bool& whole,
+                 Climbed& climbed) {
     const double top = b.y.v, bottom = (b.y + b.h).v;
     bool found = false;
+    Climb k{bottom, top};
     for (int64_t r = rows.first; r <= rows.last; ++r) {
         const uint8_t cell = g.cell(c, r);
         if (cell == kSolidCell) {
@@ -151,71 +211,37 @@ bool wall_in_column(const Body& b, const TileGrid& g, int64_t c, XMove& m, doubl
             return true;
         }
         if (cell != kShapedCell) continue;
-        const CellShape& sh = *g.shape(c, r);
-        if (sh.one_way) continue;
-        const Placed p(sh, c, r, g);
-        if (!enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) {
-            m.unsure = m.unsure || could_meet(p, top);
-            continue;
+        const Placed p(g.shape_in(c, r), c, r, g);
+        if (!p.s.one_way) {
+            if (enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) {
+                const double side = m.fwd ? p.left() : p.right();
+                if (!found || (m.fwd ? side < wall : side > wall)) wall = side;
+                found = true;
+            } else {
+                m.unsure = m.unsure || could_meet(p, top);
+            }
         }
-        const double side = m.fwd ? p.left() : p.right();
-        if (!found || (m.fwd ? side < wall : side > wall)) wall = side;
-        found = true;
+        // Only read when no wall is met: a stopped move is checked whole.
+        if (!found) climb_cell(b, p, m, top, bottom, k);
     }
     whole = false;
+    if (!found) climbed = apply_climb(b, g, m, k, rows);
     return found;
 }
 
-// The ramps of column c that the box overlaps over its sweep move it out
-// along y: up onto a floor ramp's top, down under a ceiling ramp, again
-// while the new rows bring more (a fast body on a long ramp). False when
-// it cannot: ramps push it both ways.
-bool climb_column(Body& b, const TileGrid& g, int64_t c, XMove& m) {
-    for (int64_t guard = 0; guard <= static_cast<int64_t>(g.rows()) + 1; ++guard) {
-        const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+// The climb scans of column c after the first, while the new rows bring
+// more ramps; false when the box is squeezed or the scans do not end.
+bool climb_again(Body& b, const TileGrid& g, int64_t c, CellRange& rows, XMove& m) {
+    for (int64_t guard = 1; guard <= static_cast<int64_t>(g.rows()) + 1; ++guard) {
         const double head = b.y.v, feet = (b.y + b.h).v;
-        double new_feet = feet, new_head = head;
-        bool up = false, down = false, ceilings = false, one_way_below = false;
-        for (int64_t r = rows.first; r <= rows.last; ++r) {
-            const CellShape* shp = g.shape(c, r);
-            if (!shp) continue;
-            if (!shp->ramp()) {
-                m.unsure = m.unsure || !shp->one_way;
-                continue;
-            }
-            const CellShape& sh = *shp;
-            const Placed p(sh, c, r, g);
-            double a, z, t, under;
-            if (!p.over(m.sweep, a, z) || !p.extent(a, z, t, under)) continue;
-            if (sh.cut == Cut::Floor) {
-                if (sh.one_way && (b.drop_through || !enters_from_above(p, m.fwd, m.lead_before, feet))) {
-                    one_way_below = one_way_below || !b.drop_through;  // a lift may bring the feet above it
-                    continue;
-                }
-                if (head < p.box_bottom() && feet > t) {
-                    up = true;
-                    if (t < new_feet) new_feet = t;
-                }
-                m.unsure = m.unsure || (!sh.one_way && head >= p.box_bottom());
-            } else if (!sh.one_way) {
-                ceilings = true;
-                m.unsure = true;
-                const double u = under;
-                if (feet > p.box_top() && head < u) {
-                    down = true;
-                    if (new_head < u) new_head = u;
-                }
-            }
+        Climb k{feet, head};
+        for (int64_t r = rows.first; r <= rows.last; ++r)
+            if (const CellShape* sh = g.shape(c, r)) climb_cell(b, Placed(*sh, c, r, g), m, head, feet, k);
+        switch (apply_climb(b, g, m, k, rows)) {
+            case Climbed::Done: return true;
+            case Climbed::Squeezed: return false;
+            case Climbed::Again: break;
         }
-        if (!up && !down) return true;
-        if ((up && down) || (up && m.lifted < 0) || (down && m.lifted > 0)) return false;
-        const bool exact = box_exact(b);
-        b.y = up ? exact_if(exact, new_feet - b.h.v) : exact_if(exact, new_head);
-        m.lifted = up ? 1 : -1;
-        // Over the same rows, a lift onto the highest of the floor ramps
-        // leaves none to climb; only a ceiling ramp could now push back.
-        const CellRange now = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
-        if (up && !ceilings && !one_way_below && now.first == rows.first && now.last == rows.last) return true;
     }
     return false;
 }
@@ -232,17 +258,19 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRan
                                               : Span{b.x.v, (x_start + b.w).v};
     bool stopped = false, shape_wall = false, squeezed = false;
     const CellRange rows0 = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
+    CellRange rows = rows0;
     for (int64_t i = 0, n = cols.last - cols.first + 1; i < n && !cols.empty(); ++i) {
         const int64_t c = m.fwd ? cols.first + i : cols.last - i;
         double wall = 0;
         bool whole = false;
-        if (wall_in_column(b, g, c, m, wall, whole)) {
+        Climbed climbed = Climbed::Done;
+        if (scan_column(b, g, c, rows, m, wall, whole, climbed)) {
             snap_flush(along_x(b), wall, m.fwd);
             stopped = true;
             shape_wall = !whole;
             break;
         }
-        if (!climb_column(b, g, c, m)) {
+        if (climbed == Climbed::Squeezed || (climbed == Climbed::Again && !climb_again(b, g, c, rows, m))) {
             squeezed = true;
             break;
         }
@@ -255,7 +283,6 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRan
         // Stopped at a wall, the box is not where the scans saw it (the
         // discrete rule may even put it behind where it started).
         if (stopped) return true;
-        const CellRange rows = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
         return m.unsure || rows.first != rows0.first || rows.last != rows0.last;
     };
     if (squeezed || (must_check() && overlaps_solid(b, g))) {
