@@ -26,7 +26,7 @@ bool row_supports(const Body& b, const TileGrid& grid, bool shapes) {
         const uint8_t cell = grid.cell(c, row);
         if (cell == kSolidCell || (on_top && cell == kOneWayCell)) return true;
         if (!shapes || cell != kShapedCell) continue;
-        const CellShape& sh = *grid.shape(c, row);
+        const CellShape& sh = grid.shape_in(c, row);
         if (sh.one_way && !may_stand) continue;
         const shape_math::Placed p(sh, c, row, grid);
         double a, z, top, under;
