@@ -206,6 +206,16 @@ inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
         }
         return {floor_div(p, tile), ceil_div(p + s, tile) - 1};
     }
+    // A flonum box (a body on a 1:2 ramp stays one from its first half
+    // pixel on): on power-of-two tiles, ⌊v⌋ shifted is ⌊v/tile⌋, with no
+    // division; exact while v and the box's far edge stay below 2^52.
+    if (power_of_two(tile) && std::fabs(pos.v) < 0x1p52 && size.v < 0x1p52) {
+        const int k = std::countr_zero(static_cast<unsigned>(tile));
+        const double end = pos.v + size.v;
+        const auto t = static_cast<int64_t>(pos.v), e = static_cast<int64_t>(end);
+        const int64_t lo = t - (pos.v < static_cast<double>(t)), hi = e + (end > static_cast<double>(e));
+        return {lo >> k, ((hi + tile - 1) >> k) - 1};
+    }
     return {floor_cell(pos.v / tile), ceil_cell((pos.v + size.v) / tile) - 1};
 }
 
@@ -214,6 +224,10 @@ inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
     if (integral(pos)) {
         const auto p = static_cast<int64_t>(pos.v);
         return power_of_two(tile) ? p >> std::countr_zero(static_cast<unsigned>(tile)) : floor_div(p, tile);
+    }
+    if (power_of_two(tile) && std::fabs(pos.v) < 0x1p52) {  // as cells_of does
+        const auto t = static_cast<int64_t>(pos.v);
+        return (t - (pos.v < static_cast<double>(t))) >> std::countr_zero(static_cast<unsigned>(tile));
     }
     return floor_cell(pos.v / tile);
 }

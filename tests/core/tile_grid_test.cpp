@@ -140,6 +140,18 @@ TEST_CASE("cell_of and cells_of: flonums on both sides of 2^52 cells") {
     // beyond int64 the clamp holds
     CHECK(cell_of(F(1e300), 16) == static_cast<int64_t>(ds::kCellIndexLimit));
     CHECK(cell_of(F(-1e300), 16) == static_cast<int64_t>(-ds::kCellIndexLimit));
+    // just below 2^52 px a flonum is still shifted; at 2^52 it is divided
+    const double edge = 0x1p52;
+    CHECK(cell_of(F(edge - 0.5), 16) == (1LL << 48) - 1);
+    CHECK(cell_of(F(-edge + 0.5), 16) == -(1LL << 48));
+    CHECK(cell_of(F(edge), 16) == 1LL << 48);
+    CHECK(range_is(cells_of(F(edge - 16.5), F(0.25), 16), (1LL << 48) - 2, (1LL << 48) - 2));
+    CHECK(range_is(cells_of(F(edge - 16.5), F(0.5), 16), (1LL << 48) - 2, (1LL << 48) - 2));  // touches the next
+    CHECK(range_is(cells_of(F(edge - 16.5), F(1.0), 16), (1LL << 48) - 2, (1LL << 48) - 1));
+    CHECK(range_is(cells_of(F(-edge + 0.5), F(16.0), 16), -(1LL << 48), -(1LL << 48) + 1));
+    CHECK(range_is(cells_of(F(edge), F(16.0), 16), 1LL << 48, 1LL << 48));
+    CHECK(range_is(cells_of(F(-0.25), F(0.25), 8), -1, -1));
+    CHECK(range_is(cells_of(F(-0.25), F(0.5), 8), -1, 0));
     // cells of 24 px: a quotient that is not a power-of-two scaling
     CHECK(cell_of(F(-0.25), 24) == -1);
     CHECK(cell_of(F(47.75), 24) == 1);
