@@ -26,9 +26,10 @@ bool row_supports(const Body& b, const TileGrid& grid, bool shapes) {
         const uint8_t cell = grid.cell(c, row);
         if (cell == kSolidCell || (on_top && cell == kOneWayCell)) return true;
         if (!shapes || cell != kShapedCell) continue;
-        const CellShape& sh = grid.shape_in(c, row);
+        const uint16_t id = grid.shape_id_in(c, row);
+        const CellShape& sh = grid.shape_at(id);
         if (sh.one_way && !may_stand) continue;
-        const shape_math::Placed p(sh, c, row, grid);
+        const shape_math::Placed p(id, c, row, grid);
         double a, z, top, under;
         if (!p.over(span, a, z) || !p.extent(a, z, top, under)) continue;
         if (top <= feet && feet < under && (!sh.one_way || feet - top < kOneWayFooting)) return true;

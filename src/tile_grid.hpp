@@ -113,8 +113,12 @@ public:
         if (cell(col, row) != kShapedCell) return nullptr;
         return &shapes_[shape_ids_[index(col, row)]];
     }
-    // The shape of a cell known to be kShapedCell (cell() said so).
-    const CellShape& shape_in(int64_t col, int64_t row) const { return shapes_[shape_ids_[index(col, row)]]; }
+    // For a cell known to be kShapedCell (cell() said so): its shape's place
+    // in the grid's table, which shape_at and geometry_at read.
+    uint16_t shape_id_in(int64_t col, int64_t row) const { return shape_ids_[index(col, row)]; }
+    const CellShape& shape_at(uint16_t id) const { return shapes_[id]; }
+    const ShapeGeometry& geometry_at(uint16_t id) const { return geometry_[id]; }
+    const CellShape& shape_in(int64_t col, int64_t row) const { return shape_at(shape_id_in(col, row)); }
     // Whether the world point (x, y) lies in a solid part of the grid: a
     // whole solid cell, or inside a solid shape (one-way parts are not
     // solid to queries, semantics §8).

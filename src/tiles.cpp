@@ -211,7 +211,7 @@ bool scan_column(Body& b, const TileGrid& g, int64_t c, CellRange& rows, XMove& 
             return true;
         }
         if (cell != kShapedCell) continue;
-        const Placed p(g.shape_in(c, r), c, r, g);
+        const Placed p(g.shape_id_in(c, r), c, r, g);
         if (!p.s.one_way) {
             if (enters_side(p, m.fwd, m.lead_before, m.lead_after, top, bottom)) {
                 const double side = m.fwd ? p.left() : p.right();
@@ -319,9 +319,9 @@ bool shaped_y(Body& b, const TileGrid& g, SubStep s, CellRange rows, CellRange c
                 return true;
             }
             if (cell != kShapedCell) continue;
-            const CellShape& sh = g.shape_in(c, r);
-            if (sh.one_way && !may_land) continue;
-            const Placed p(sh, c, r, g);
+            const uint16_t id = g.shape_id_in(c, r);
+            if (g.shape_at(id).one_way && !may_land) continue;
+            const Placed p(id, c, r, g);
             double a, z, top, under;
             if (!p.over(span, a, z) || !p.extent(a, z, top, under)) continue;
             if (fwd) {
@@ -428,8 +428,8 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     // stands in, beside it, does not send it down the shape rules.
     const double feet = (b.y + b.h).v, head = b.y.v, head_before = (b.y - a.move).v;
     auto may_stop = [&](int64_t r, int64_t c) {
-        const CellShape& sh = grid->shape_in(c, r);
-        const double oy = static_cast<double>(r) * th, y0 = oy + sh.y0, y1 = oy + sh.y1;
+        const ShapeGeometry& d = grid->geometry_at(grid->shape_id_in(c, r));
+        const double oy = static_cast<double>(r) * th, y0 = oy + d.y0, y1 = oy + d.y1;
         return vy.v > 0 ? feet > y0 && feet_before < y1 : head < y1 && head_before > y0;
     };
     int64_t met_at = 0;

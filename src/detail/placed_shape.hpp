@@ -6,6 +6,8 @@
 // bits; exactness is decided once, on the value written (exact_if).
 #pragma once
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "../cell_shape.hpp"
 #include "../number.hpp"
@@ -20,7 +22,14 @@ struct Span {
 
 // The written value: exact when everything it came from was exact and it is
 // an integer (semantics §12: a ramp's height at an odd x may be a half).
-inline Num exact_if(bool exact, double v) { return {v, exact && std::floor(v) == v}; }
+// Whether v is an integer, as std::floor(v) == v says (infinities are, NaN
+// is not), without the libm call std::floor is without SSE4.1: every
+// landing and lift of an exact body asks.
+inline bool integral_value(double v) {
+    if (!(std::fabs(v) < 0x1p52)) return !std::isnan(v);  // every double this large is an integer
+    return v == static_cast<double>(static_cast<int64_t>(v));
+}
+inline Num exact_if(bool exact, double v) { return {v, exact && integral_value(v)}; }
 
 // std::clamp's own rule (lo when v < lo, hi when hi < v, else v): the
 // reference spells it the same way, so a signed zero comes out the same.
@@ -35,6 +44,9 @@ struct Placed {
     // `shape` is one g.shape() gave: its doubles come from g's table.
     Placed(const CellShape& shape, int64_t col, int64_t row, const TileGrid& g)
         : Placed(shape, g.geometry(shape), col, row, g) {}
+    // The shape of a cell known to be shaped, by its place in g's table.
+    Placed(uint16_t id, int64_t col, int64_t row, const TileGrid& g)
+        : Placed(g.shape_at(id), g.geometry_at(id), col, row, g) {}
     Placed(const CellShape& shape, const ShapeGeometry& d, int64_t col, int64_t row, const TileGrid& g)
         : s(shape), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()),
           left_(ox + d.x0), right_(ox + d.x1), top_(oy + d.y0), bottom_(oy + d.y1),

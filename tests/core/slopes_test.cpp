@@ -1,6 +1,7 @@
 // Shaped cells (semantics §12): ramps and part-tile boxes, walked on,
 // landed on, bumped into; every figure worked out by hand from the rule.
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "ground.hpp"
 #include "support.hpp"
 #include "tiles.hpp"
+#include "detail/placed_shape.hpp"
 
 using namespace dst;
 using ds::CellShape;
@@ -113,6 +115,21 @@ double hill45_feet(double x) {
 }  // namespace
 
 TEST_SUITE("slopes") {
+
+TEST_CASE("a position a shape rule writes is exact only when exact in and an integer out") {
+    using ds::shape_math::exact_if;
+    CHECK(exact_if(true, 16.0).exact);
+    CHECK(exact_if(true, -3.0).exact);
+    CHECK(exact_if(true, -0.0).exact);
+    CHECK_FALSE(exact_if(true, 16.5).exact);
+    CHECK_FALSE(exact_if(true, -0.5).exact);
+    CHECK_FALSE(exact_if(false, 16.0).exact);
+    CHECK(exact_if(true, 0x1p52 - 1).exact);
+    CHECK_FALSE(exact_if(true, 0x1p52 - 0.5).exact);
+    CHECK(exact_if(true, 0x1p52).exact);  // every double from 2^52 on is an integer
+    CHECK(exact_if(true, -1e300).exact);
+    CHECK_FALSE(exact_if(true, std::nan("")).exact);
+}
 
 TEST_CASE("walking up a 45° ramp moves y by exactly vx each frame and stays on the ground") {
     Walker w(kHill45, walker(60, 64));  // feet on the floor at y = 80
