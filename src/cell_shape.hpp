@@ -38,10 +38,16 @@ struct ShapeGeometry {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the box
     double ax = 0, ay = 0;                  // the slant's first point
     double dx = 0, dy = 0;                  // its run and rise
+    // 1/dx when dx is a power of two, so multiplying by it gives the very
+    // bits dividing by dx does (a division's latency, in every ramp height
+    // a rule asks for); 0 for any other run.
+    double inv_dx = 0;
 
     static ShapeGeometry of(const CellShape& s) {
         const auto d = [](int32_t v) { return static_cast<double>(v); };
-        return {d(s.x0), d(s.y0), d(s.x1), d(s.y1), d(s.ax), d(s.ay), d(s.bx - s.ax), d(s.by - s.ay)};
+        const int32_t run = s.bx - s.ax;
+        const double inv = run > 0 && (run & (run - 1)) == 0 ? 1.0 / run : 0.0;
+        return {d(s.x0), d(s.y0), d(s.x1), d(s.y1), d(s.ax), d(s.ay), d(run), d(s.by - s.ay), inv};
     }
 };
 

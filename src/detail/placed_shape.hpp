@@ -40,6 +40,7 @@ struct Placed {
     double ox, oy;  // the cell's top-left corner, col·tw and row·th
     double left_, right_, top_, bottom_;  // the box in the world
     double ax, dx, dy, base;  // the line's first x, run and rise, and (oy + ay)·dx
+    double inv_dx;            // ShapeGeometry::inv_dx
 
     // `shape` is one g.shape() gave: its doubles come from g's table.
     Placed(const CellShape& shape, int64_t col, int64_t row, const TileGrid& g)
@@ -50,7 +51,7 @@ struct Placed {
     Placed(const CellShape& shape, const ShapeGeometry& d, int64_t col, int64_t row, const TileGrid& g)
         : s(shape), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()),
           left_(ox + d.x0), right_(ox + d.x1), top_(oy + d.y0), bottom_(oy + d.y1),
-          ax(d.ax), dx(d.dx), dy(d.dy), base((oy + d.ay) * dx) {}
+          ax(d.ax), dx(d.dx), dy(d.dy), base((oy + d.ay) * dx), inv_dx(d.inv_dx) {}
 
     double left() const { return left_; }
     double right() const { return right_; }
@@ -59,7 +60,10 @@ struct Placed {
 
     // The slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
     // one division, so exact integers give the correctly rounded value.
-    double line(double x) const { return (base + ((x - ox) - ax) * dy) / dx; }
+    double line(double x) const {
+        const double n = base + ((x - ox) - ax) * dy;
+        return inv_dx != 0 ? n * inv_dx : n / dx;
+    }
     // The top and bottom of the solid in the column at x (top == bottom: none).
     double top(double x) const {
         return s.cut == Cut::Floor ? clamp(line(x), box_top(), box_bottom()) : box_top();

@@ -131,6 +131,36 @@ TEST_CASE("a position a shape rule writes is exact only when exact in and an int
     CHECK_FALSE(exact_if(true, std::nan("")).exact);
 }
 
+TEST_CASE("a 1:3 ramp on 12 px tiles (a run that is no power of two) is walked exactly") {
+    // Three 12 px tiles rise 4 px each, from the floor (top 24) at x = 24 to
+    // the flat top (12) at x = 60: the slant's heights are thirds, exact
+    // every third pixel, where a 6 px box walking at vx 3 always has its
+    // leading edge.
+    const auto ramp13 = [](int y_low, int y_high) {
+        return ramp(0, std::min(y_high, 12), 12, 12, Cut::Floor, 0, y_low, 12, y_high);
+    };
+    ds::TileGrid g = grid({"........", ".....###", "########"}, 12, 12);
+    g.set_shape(2, 1, ramp13(12, 8));
+    g.set_shape(3, 1, ramp13(8, 4));
+    g.set_shape(4, 1, ramp13(4, 0));
+    ds::World world;
+    Body b = box(12, 12, 6, 12);
+    b.gravity = b.on_ground = true;
+    world.bodies = {b};
+    world.grid = &g;
+    ds::Frame frame;
+    for (int f = 0; f < 20; ++f) {
+        world.bodies[0].vx = I(3);
+        frame.step(world, ds::FrameOptions{});
+        const Body& w = world.bodies[0];
+        const double lead = w.x.v + 6;
+        const double feet = lead <= 24 ? 24 : lead <= 60 ? 24 - (lead - 24) / 3 : 12;
+        CHECK_EXACT(w.x, 15 + 3 * f);
+        CHECK_EXACT(w.y, feet - 12);
+        CHECK(w.on_ground);
+    }
+}
+
 TEST_CASE("walking up a 45° ramp moves y by exactly vx each frame and stays on the ground") {
     Walker w(kHill45, walker(60, 64));  // feet on the floor at y = 80
     for (int f = 0; f < 40; ++f) {
