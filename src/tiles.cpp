@@ -246,8 +246,9 @@ bool climb_again(Body& b, const TileGrid& g, int64_t c, CellRange& rows, XMove& 
     return false;
 }
 
-// `cols`: the move's candidate columns, clipped to the grid.
-bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRange cols) {
+// `cols`: the move's candidate columns, `rows0` the box's rows, both
+// clipped to the grid.
+bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRange cols, CellRange rows0) {
     const Num move = s.share(b.vx);
     const Num x_start = b.x - move, y_start = b.y;
     XMove m{b.vx.v > 0, 0, 0, {}};
@@ -257,7 +258,6 @@ bool shaped_x(Body& b, const TileGrid& g, CollisionMode mode, SubStep s, CellRan
               : m.fwd                         ? Span{x_start.v, (b.x + b.w).v}
                                               : Span{b.x.v, (x_start + b.w).v};
     bool stopped = false, shape_wall = false, squeezed = false;
-    const CellRange rows0 = g.clip_rows(cells_of(b.y, b.h, g.tile_height()));
     CellRange rows = rows0;
     for (int64_t i = 0, n = cols.last - cols.first + 1; i < n && !cols.empty(); ++i) {
         const int64_t c = m.fwd ? cols.first + i : cols.last - i;
@@ -396,7 +396,7 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
         const uint8_t k = grid->cell(c, r);
         return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
     }, met_at) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->solid(c, r) ? -1 : 0; }, met_at);
-    const bool stopped = met == Met::Shape ? shaped_x(b, *grid, mode, s, cols) : met == Met::Whole;
+    const bool stopped = met == Met::Shape ? shaped_x(b, *grid, mode, s, cols, rows) : met == Met::Whole;
     if (stopped) b.vx = stop_velocity(vx, b, s);
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
     return true;
