@@ -146,8 +146,9 @@ struct Climb {
 };
 
 // One shaped cell's part in a climb scan of a box whose head and feet are
-// at `head` and `feet`.
-void climb_cell(const Body& b, const Placed& p, XMove& m, double head, double feet, Climb& k) {
+// at `head` and `feet`. Always inlined, as apply_climb is: both run for
+// every shaped column a walker crosses, and a call cost about as much.
+[[gnu::always_inline]] inline void climb_cell(const Body& b, const Placed& p, XMove& m, double head, double feet, Climb& k) {
     const CellShape& sh = p.s;
     if (!sh.ramp()) {
         m.unsure = m.unsure || !sh.one_way;
@@ -181,7 +182,7 @@ enum class Climbed { Done, Again, Squeezed };
 // Done when no ramp of the column can move it further, Again when the
 // column must be scanned again at the new rows (a fast body on a long
 // ramp), Squeezed when it cannot move (ramps push it both ways).
-Climbed apply_climb(Body& b, const TileGrid& g, XMove& m, const Climb& k, CellRange& rows) {
+[[gnu::always_inline]] inline Climbed apply_climb(Body& b, const TileGrid& g, XMove& m, const Climb& k, CellRange& rows) {
     if (!k.up && !k.down) return Climbed::Done;
     if ((k.up && k.down) || (k.up && m.lifted < 0) || (k.down && m.lifted > 0)) return Climbed::Squeezed;
     const bool exact = box_exact(b);
