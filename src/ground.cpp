@@ -19,11 +19,12 @@ bool row_supports(const Body& b, const TileGrid& grid, bool shapes) {
     const double feet = (b.y + b.h).v;
     const int64_t row = cell_of(b.y + b.h, grid.tile_height());
     const CellRange cols = grid.clip_cols(cells_of(b.x, b.w, grid.tile_width()));
+    if (grid.clip_rows({row, row}).empty()) return false;  // no cells there: nothing holds it up
     const bool may_stand = b.vy.v >= 0 && !b.drop_through;
     const bool on_top = may_stand && feet - static_cast<double>(row) * grid.tile_height() < kOneWayFooting;
     const shape_math::Span span{b.x.v, (b.x + b.w).v};
     for (int64_t c = cols.first; c <= cols.last; ++c) {
-        const uint8_t cell = grid.cell(c, row);
+        const uint8_t cell = grid.cell_in(c, row);
         if (cell == kSolidCell || (on_top && cell == kOneWayCell)) return true;
         if (!shapes || cell != kShapedCell) continue;
         const uint16_t id = grid.shape_id_in(c, row);

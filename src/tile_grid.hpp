@@ -104,6 +104,10 @@ public:
         if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return kEmptyCell;
         return solid_[static_cast<size_t>(row * cols_ + col)];
     }
+    // cell() for a cell known to lie in the grid, as every cell of ranges
+    // clip_cols and clip_rows gave does: the tile steps' loops read a few
+    // per body, and the bounds test cost as much as the read.
+    uint8_t cell_in(int64_t col, int64_t row) const { return solid_[index(col, row)]; }
     // A whole solid block (a shaped cell is not: see shape()).
     bool solid(int64_t col, int64_t row) const { return cell(col, row) == kSolidCell; }
     // A one-way platform (semantics §9): it stops bodies only from above.

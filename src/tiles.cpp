@@ -205,7 +205,7 @@ bool scan_column(Body& b, const TileGrid& g, int64_t c, CellRange& rows, XMove& 
     bool found = false;
     Climb k{bottom, top};
     for (int64_t r = rows.first; r <= rows.last; ++r) {
-        const uint8_t cell = g.cell(c, r);
+        const uint8_t cell = g.cell_in(c, r);
         if (cell == kSolidCell) {
             wall = static_cast<double>(m.fwd ? c : c + 1) * g.tile_width();
             whole = true;
@@ -313,7 +313,7 @@ bool shaped_y(Body& b, const TileGrid& g, SubStep s, CellRange rows, CellRange c
         bool found = false;
         double stop = 0;
         for (int64_t c = cols.first; c <= cols.last; ++c) {
-            const uint8_t cell = g.cell(c, r);
+            const uint8_t cell = g.cell_in(c, r);
             if (stops(cell, r)) {
                 snap_flush(along_y(b), static_cast<double>(fwd ? r : r + 1) * th, fwd);
                 b.vy = Num::integer(0);
@@ -355,7 +355,7 @@ bool snap_down(Body& b, const TileGrid& g, SubStep s) {
         bool found = false;
         double ground = 0;
         for (int64_t c = cols.first; c <= cols.last; ++c) {
-            const uint8_t cell = g.cell(c, r);
+            const uint8_t cell = g.cell_in(c, r);
             double top;
             if (cell == kSolidCell || (cell == kOneWayCell && !b.drop_through)) {
                 top = static_cast<double>(r) * g.tile_height();
@@ -394,9 +394,9 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
     // meets a shaped cell: most moves in a map with ramps never do.
     int64_t met_at = 0;
     const Met met = grid->has_shapes() ? walk_axis(a, cols, rows, [&](int64_t c, int64_t r) {
-        const uint8_t k = grid->cell(c, r);
+        const uint8_t k = grid->cell_in(c, r);
         return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
-    }, met_at) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->solid(c, r) ? -1 : 0; }, met_at);
+    }, met_at) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->cell_in(c, r) == kSolidCell ? -1 : 0; }, met_at);
     const bool stopped = met == Met::Shape ? shaped_x(b, *grid, mode, s, cols, rows) : met == Met::Whole;
     if (stopped) b.vx = stop_velocity(vx, b, s);
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
@@ -435,10 +435,10 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
     };
     int64_t met_at = 0;
     const Met met = grid->has_shapes() ? walk_axis(a, rows, cols, [&](int64_t r, int64_t c) {
-        const uint8_t cell = grid->cell(c, r);
+        const uint8_t cell = grid->cell_in(c, r);
         if (cell == kShapedCell) return may_stop(r, c) ? 1 : 0;
         return stops_as(cell, r) ? -1 : 0;
-    }, met_at) : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) { return stops_as(grid->cell(c, r), r) ? -1 : 0; }, met_at);
+    }, met_at) : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) { return stops_as(grid->cell_in(c, r), r) ? -1 : 0; }, met_at);
     if (met == Met::Shape) {
         const CellRange from = vy.v > 0 ? CellRange{met_at, rows.last} : CellRange{rows.first, met_at};
         stopped = shaped_y(b, *grid, s, from, cols, stops_as);
