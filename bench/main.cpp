@@ -11,6 +11,7 @@
 //   downstroke-bench query [--frames F] [--org FILE]
 //   downstroke-bench tile-edit [--rounds R] [--org FILE]
 //   downstroke-bench map-load [--rounds R] [--org FILE]
+//   downstroke-bench slopes [--n N[,N…]] [--rounds R] [--frames F] [--org FILE]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -21,6 +22,7 @@
 #include "draw/draw.hpp"
 #include "map_load/map_loads.hpp"
 #include "query/queries.hpp"
+#include "slopes/slope_cost.hpp"
 #include "soak/soak.hpp"
 #include "speed/isolate.hpp"
 #include "speed/options.hpp"
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
         if (argc > 1 && std::string(argv[1]) == "query") return bench::query_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "tile-edit") return bench::tile_edit_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "map-load") return bench::map_load_main(argc, argv);
+        if (argc > 1 && std::string(argv[1]) == "slopes") return bench::slopes_main(argc, argv);
         if (argc > 1 && std::string(argv[1]) == "draw") {
 #if DS_BENCH_HAVE_RENDER
             return bench::draw_main(argc, argv);
@@ -49,7 +52,7 @@ int main(int argc, char** argv) {
         }
         if (opts.mode == "soak") return bench::soak(opts);
         if (opts.mode != "speed") {
-            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw query tile-edit map-load)\n", opts.mode.c_str());
+            std::fprintf(stderr, "downstroke-bench: unknown mode '%s' (modes: speed soak accuracy draw query tile-edit map-load slopes)\n", opts.mode.c_str());
             return 2;
         }
         return bench::speed(opts);

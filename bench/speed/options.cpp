@@ -38,6 +38,7 @@ std::string usage() {
            "       downstroke-bench draw [--frames F] [--warmup W] [--rounds R] [--org FILE]   one drawn frame\n"
            "       downstroke-bench query [--frames F] [--org FILE]   spatial queries per frame\n"
            "       downstroke-bench tile-edit [--rounds R] [--org FILE]   one tile edit\n"
+           "       downstroke-bench slopes [--n N[,N…]] [--rounds R] [--frames F] [--org FILE]   ramps against flat tiles, in turn\n"
            "speed options:\n"
            "  --scene S[,S…]   rain crowd rest bullets platformer ramps ramps-flat\n"
            "                   crowd-categories crowd-sensors (default: all)\n"

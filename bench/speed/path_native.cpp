@@ -13,6 +13,8 @@ namespace {
 
 ds::Num exact(int64_t v) { return ds::Num::integer(static_cast<double>(v)); }
 
+}  // namespace
+
 std::vector<ds::Body> to_bodies(const Scene& s) {
     std::vector<ds::Body> out;
     out.reserve(s.bodies.size());
@@ -37,6 +39,8 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
     }
     return out;
 }
+
+namespace {
 
 // The untimed bounce update, as (bench driver) does it on plists: an axis
 // whose velocity a collision zeroed turns round.

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "speed/scenes.hpp"
+#include "tile_grid.hpp"
 
 namespace bench {
 
@@ -45,6 +47,11 @@ struct PathResult {
     double spent_ms = 0;           // all frames stepped, warm-up included
     FrameSplit split;              // the guile path's timed frames
 };
+
+// The scene's bodies as the native path steps them (exact integers), and
+// its shaped cells added to a grid made from its solid mask.
+std::vector<ds::Body> to_bodies(const Scene& scene);
+void add_shapes(ds::TileGrid& grid, const Scene& scene);
 
 // ds::World + ds::Frame::step, one call per frame.
 PathResult run_native(const Scene& scene, const RunConfig& cfg);
