@@ -186,10 +186,11 @@ each body goes through the same motion whatever N is.
   tiles; all have landed by frame ~25. Boxes do not collide with each
   other, so the landed boxes of a column share a spot.
 - ramps :: rain over hills: the platforms' ends are 45° ramps and the floor
-  rises and falls in 1:2 ramps every 12 tiles, so most boxes land on a ramp
-  and walk up and down it (semantics §12). ramps-flat :: the same map with
-  every ramp cell a whole block; ramps ÷ ramps-flat is what shapes cost.
-  (The Box2D path has no ramps and skips ramps.)
+  rises and falls in 1:2 ramps every 12 tiles, so about 44 % of the boxes
+  stand or walk on a ramp (semantics §12). ramps-flat :: the same map with
+  every ramp cell empty, so its walkers walk as far on flat ground; ramps ÷
+  ramps-flat is what shapes cost (=downstroke-bench slopes= measures it with
+  the two stepped in turn). (The Box2D path has no ramps and skips ramps.)
 - crowd :: N solid gravity boxes (8×8) in stacks 8 high from the floor up,
   touching vertically and 1 px apart horizontally, in a walled arena, with
   a solid immovable 16×32 pillar after every 16 stacks. Every frame gravity
