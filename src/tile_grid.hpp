@@ -122,7 +122,6 @@ public:
     uint16_t shape_id_in(int64_t col, int64_t row) const { return shape_ids_[index(col, row)]; }
     const CellShape& shape_at(uint16_t id) const { return shapes_[id]; }
     const ShapeGeometry& geometry_at(uint16_t id) const { return geometry_[id]; }
-    const CellShape& shape_in(int64_t col, int64_t row) const { return shape_at(shape_id_in(col, row)); }
     // Whether the world point (x, y) lies in a solid part of the grid: a
     // whole solid cell, or inside a solid shape (one-way parts are not
     // solid to queries, semantics §8).
@@ -216,7 +215,8 @@ inline bool integral(Num n) { return n.exact && std::fabs(n.v) < 2.3e18; }
     }
     // A flonum box (a body on a 1:2 ramp stays one from its first half
     // pixel on): on power-of-two tiles, ⌊v⌋ shifted is ⌊v/tile⌋, with no
-    // division; exact while v and the box's far edge stay below 2^52.
+    // division; the same cells as dividing (below, with the same rounded
+    // far edge) while the position and size stay below 2^52.
     if (power_of_two(tile) && std::fabs(pos.v) < 0x1p52 && size.v < 0x1p52) {
         const int k = std::countr_zero(static_cast<unsigned>(tile));
         const double end = pos.v + size.v;

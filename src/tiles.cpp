@@ -148,7 +148,8 @@ struct Climb {
 // One shaped cell's part in a climb scan of a box whose head and feet are
 // at `head` and `feet`. Always inlined, as apply_climb is: both run for
 // every shaped column a walker crosses, and a call cost about as much.
-[[gnu::always_inline]] inline void climb_cell(const Body& b, const Placed& p, XMove& m, double head, double feet, Climb& k) {
+[[gnu::always_inline]] inline void climb_cell(const Body& b, const Placed& p, XMove& m, double head, double feet,
+                                               Climb& k) {
     const CellShape& sh = p.s;
     if (!sh.ramp()) {
         m.unsure = m.unsure || !sh.one_way;
@@ -182,7 +183,8 @@ enum class Climbed { Done, Again, Squeezed };
 // Done when no ramp of the column can move it further, Again when the
 // column must be scanned again at the new rows (a fast body on a long
 // ramp), Squeezed when it cannot move (ramps push it both ways).
-[[gnu::always_inline]] inline Climbed apply_climb(Body& b, const TileGrid& g, XMove& m, const Climb& k, CellRange& rows) {
+[[gnu::always_inline]] inline Climbed apply_climb(Body& b, const TileGrid& g, XMove& m, const Climb& k,
+                                                  CellRange& rows) {
     if (!k.up && !k.down) return Climbed::Done;
     if ((k.up && k.down) || (k.up && m.lifted < 0) || (k.down && m.lifted > 0)) return Climbed::Squeezed;
     const bool exact = box_exact(b);
@@ -396,7 +398,10 @@ bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode
     const Met met = grid->has_shapes() ? walk_axis(a, cols, rows, [&](int64_t c, int64_t r) {
         const uint8_t k = grid->cell_in(c, r);
         return k == kShapedCell ? 1 : k == kSolidCell ? -1 : 0;
-    }, met_at) : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) { return grid->cell_in(c, r) == kSolidCell ? -1 : 0; }, met_at);
+    }, met_at)
+                                       : walk_axis(a, cols, rows, [&](int64_t c, int64_t r) {
+        return grid->cell_in(c, r) == kSolidCell ? -1 : 0;
+    }, met_at);
     const bool stopped = met == Met::Shape ? shaped_x(b, *grid, mode, s, cols, rows) : met == Met::Whole;
     if (stopped) b.vx = stop_velocity(vx, b, s);
     note_blocked(b, kSidesX, side(stopped, vx, kSideRight, kSideLeft), s);
@@ -438,7 +443,10 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
         const uint8_t cell = grid->cell_in(c, r);
         if (cell == kShapedCell) return may_stop(r, c) ? 1 : 0;
         return stops_as(cell, r) ? -1 : 0;
-    }, met_at) : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) { return stops_as(grid->cell_in(c, r), r) ? -1 : 0; }, met_at);
+    }, met_at)
+                                       : walk_axis(a, rows, cols, [&](int64_t r, int64_t c) {
+        return stops_as(grid->cell_in(c, r), r) ? -1 : 0;
+    }, met_at);
     if (met == Met::Shape) {
         const CellRange from = vy.v > 0 ? CellRange{met_at, rows.last} : CellRange{rows.first, met_at};
         stopped = shaped_y(b, *grid, s, from, cols, stops_as);

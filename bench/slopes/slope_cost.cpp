@@ -157,7 +157,8 @@ int slopes_main(int argc, char** argv) {
       << " untimed frames of each, then " << opts.frames
       << " timed ones;\nits ratio is Σ ramps ÷ Σ ramps-flat. The figures are the median round's; the\n"
          "steps are ms per frame, ramps / ramps-flat, from =ds::Frame='s step timers.\n\n"
-      << "| N | ramps ÷ ramps-flat | range | ramps ms | ramps-flat ms | tile-collisions-x | tile-collisions-y | on-solid |\n|-\n"
+      << "| N | ramps ÷ ramps-flat | range | ramps ms | ramps-flat ms "
+         "| tile-collisions-x | tile-collisions-y | on-solid |\n|-\n"
       << rows << "\nWhole run: " << sig3(info.total_s) << " s.\n"
       << kEnd << "\n";
     std::fputs(o.str().c_str(), stdout);

@@ -20,8 +20,6 @@ struct Span {
     double lo, hi;
 };
 
-// The written value: exact when everything it came from was exact and it is
-// an integer (semantics §12: a ramp's height at an odd x may be a half).
 // Whether v is an integer, as std::floor(v) == v says (infinities are, NaN
 // is not), without the libm call std::floor is without SSE4.1: every
 // landing and lift of an exact body asks.
@@ -29,6 +27,8 @@ inline bool integral_value(double v) {
     if (!(std::fabs(v) < 0x1p52)) return !std::isnan(v);  // every double this large is an integer
     return v == static_cast<double>(static_cast<int64_t>(v));
 }
+// The written value: exact when everything it came from was exact and it is
+// an integer (semantics §12: a ramp's height at an odd x may be a half).
 inline Num exact_if(bool exact, double v) { return {v, exact && integral_value(v)}; }
 
 // std::clamp's own rule (lo when v < lo, hi when hi < v, else v): the
@@ -59,7 +59,8 @@ struct Placed {
     double box_bottom() const { return bottom_; }
 
     // The slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
-    // one division, so exact integers give the correctly rounded value.
+    // one division (for a power-of-two run, the multiplication by 1/dx that
+    // gives the same bits), so exact integers give the correctly rounded value.
     double line(double x) const {
         const double n = base + ((x - ox) - ax) * dy;
         return inv_dx != 0 ? n * inv_dx : n / dx;
