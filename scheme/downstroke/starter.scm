@@ -19,6 +19,10 @@
 (define (folder? path)
   (and (file-exists? path) (eq? (stat:type (stat path)) 'directory)))
 
+(define (folder-entries dir)
+  ;; The names in DIR but "." and "..", in name order (none if unreadable).
+  (or (scandir dir (lambda (n) (not (member n '("." ".."))))) '()))
+
 (define (template-files root)
   ;; The files under ROOT, as paths relative to it, in name order.
   (define (walk dir rel)
@@ -26,7 +30,7 @@
                   (let ((path (string-append dir "/" name))
                         (r (if (string-null? rel) name (string-append rel "/" name))))
                     (if (folder? path) (walk path r) (list r))))
-                (or (scandir dir (lambda (n) (not (member n '("." ".."))))) '())))
+                (folder-entries dir)))
   (walk root ""))
 
 (define (string-replace-all text from to)
@@ -74,7 +78,7 @@ list of the files written, relative to DIR."
             source))
     (cond ((not (file-exists? dir)))
           ((not (folder? dir)) (fail "~S exists and is not a folder" dir))
-          ((pair? (or (scandir dir (lambda (n) (not (member n '("." ".."))))) '()))
+          ((pair? (folder-entries dir))
            (fail "~S exists and is not empty: give a new folder's name" dir)))
     (let ((files (template-files source))
           (name (basename (canonical-or-as-is dir))))
