@@ -94,6 +94,13 @@ constexpr int kMaxPropertyDepth = 32;
 // inside classes; the bound keeps the JSON readers' recursion shallow.
 constexpr int kMaxJsonDepth = 4 * kMaxGroupDepth;
 
+// Points of one collision polygon (a tileset tile's shape): the engine
+// collides a shape that simplifies to a box, or a box cut by one slant (at
+// most 5 corners), and the real tilesets we read draw at most 10 points;
+// 256 leaves room for outlines drawn with many points along their edges,
+// while a forged polygon of 10^6 points is refused as its tileset is read.
+constexpr size_t kMaxShapePoints = 256;
+
 // Class members a Tiled project file fills into one map's properties (the
 // defaults a map leaves out). A class whose members are classes multiplies
 // at each level, so a hostile project of a few lines could ask for billions;

@@ -129,8 +129,8 @@ std::pair<MapObject, ObjectFields> read_object(const Node& n) {
     o.type = type_or_class(n);
     o.x = json::number_or(n, "x", 0);
     o.y = json::number_or(n, "y", 0);
-    o.width = json::number_or(n, "width", 0);
-    o.height = json::number_or(n, "height", 0);
+    o.width = json::extent_or(n, "width", 0);
+    o.height = json::extent_or(n, "height", 0);
     o.rotation = json::number_or(n, "rotation", 0);
     o.gid = json::uint_or(n, "gid", 0u);
     o.visible = json::bool_or(n, "visible", true);
@@ -172,7 +172,7 @@ std::vector<AnimationFrame> read_animation(const Node& list) {
     return frames;
 }
 
-TileInfo read_tile(const JsonFile& f, const Node& n) {
+TileInfo read_tile(const JsonFile& f, const Node& n, const Tileset& ts) {
     n.object();
     TileInfo t;
     t.id = json::uint_or(n, "id", std::nullopt);
@@ -187,6 +187,7 @@ TileInfo read_tile(const JsonFile& f, const Node& n) {
         const Node list{&objects, group.path + ".objects"};
         // No map: a template's gid stays as its template has it.
         for (size_t i = 0; i < objects.size(); ++i) t.objects.push_back(read_map_object(f, list[i], nullptr));
+        check_shape_points(f.where, ts, t);
     }
     if (n.has("image")) {
         t.image = n["image"].string();
@@ -249,7 +250,7 @@ void read_tileset_body(const JsonFile& f, const Node& n, Tileset& ts) {
     ts.properties = read_properties(n);
     if (n.has("tiles")) {
         const Node tiles = n["tiles"];
-        for (size_t i = 0; i < tiles.array().size(); ++i) ts.tiles.push_back(read_tile(f, tiles[i]));
+        for (size_t i = 0; i < tiles.array().size(); ++i) ts.tiles.push_back(read_tile(f, tiles[i], ts));
     }
     sort_tiles(ts);
 }

@@ -78,9 +78,7 @@ std::string describe(const Json& v) {
     case Json::value_t::binary: return "an array";  // a packed gid array (json_dom.hpp)
     case Json::value_t::boolean: return v.get<bool>() ? "true" : "false";
     case Json::value_t::string: {
-        std::string s = v.get<std::string>();
-        if (s.size() > 40) s = s.substr(0, 40) + "…";
-        return "a string (\"" + s + "\")";
+        return "a string (\"" + tmx::quoted_prefix(v.get_ref<const std::string&>(), 40) + "\")";
     }
     default:
         return "the number " + v.dump();  // never throws: no strings inside
@@ -165,6 +163,12 @@ std::string string_or(const Node& n, const char* key, std::string_view fallback)
 
 double number_or(const Node& n, const char* key, double fallback) {
     return n.has(key) ? n[key].number() : fallback;
+}
+
+double extent_or(const Node& n, const char* key, double fallback) {
+    const double v = number_or(n, key, fallback);
+    if (v < 0) n[key].fail("is " + describe(*n[key].value) + ", expected a number of at least 0");
+    return v;
 }
 
 bool bool_or(const Node& n, const char* key, bool fallback) {

@@ -64,6 +64,7 @@ std::string describe(const Json& v);
 // value with the type asked for.
 std::string string_or(const Node& n, const char* key, std::string_view fallback = "");
 double number_or(const Node& n, const char* key, double fallback);
+double extent_or(const Node& n, const char* key, double fallback);  // a number ≥ 0: an object's width, height
 bool bool_or(const Node& n, const char* key, bool fallback);
 int int_or(const Node& n, const char* key, std::optional<int> fallback);  // any int
 int size_or(const Node& n, const char* key, std::optional<int> fallback);  // 0 … INT_MAX

@@ -76,6 +76,14 @@ void check_tile_size(const Where& w, const Tileset& ts) {
         w.fail("tileset '" + ts.name + "' " + tile_size_problem(ts.tile_width, ts.tile_height));
 }
 
+void check_shape_points(const Where& w, const Tileset& ts, const TileInfo& t) {
+    for (const MapObject& o : t.objects)
+        if (o.points.size() > kMaxShapePoints)
+            w.fail("tileset '" + ts.name + "', tile " + std::to_string(t.id) + ": a collision shape of " +
+                   std::to_string(o.points.size()) + " points, more than the " + std::to_string(kMaxShapePoints) +
+                   " a shape may have");
+}
+
 void check_gid_range(const Where& w, const Tileset& ts) {
     if (ts.tile_count > 0 && static_cast<uint32_t>(ts.tile_count - 1) > kGidMask - ts.firstgid)
         w.fail("tileset '" + ts.name + "' firstgid=" + std::to_string(ts.firstgid) +

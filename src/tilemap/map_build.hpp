@@ -76,6 +76,8 @@ void check_map_header(const Where& w, const LoadState& s, const Tilemap& map,
 void check_firstgid(const Where& w, uint32_t firstgid, const std::string& written);
 // Tile sizes of a tileset within kMaxTileSize.
 void check_tile_size(const Where& w, const Tileset& ts);
+// Each collision shape of tile `t` has at most kMaxShapePoints points.
+void check_shape_points(const Where& w, const Tileset& ts, const TileInfo& t);
 // Its gids, firstgid … firstgid+tilecount−1 (and, in an image collection,
 // firstgid + its largest tile id), must all be gids.
 void check_gid_range(const Where& w, const Tileset& ts);

@@ -42,7 +42,10 @@ Bounds drawn_bounds(const Tilemap& map, const MapObject& o) {
             for (const double y : {y0, y1}) r = std::max(r, std::hypot(x - b.pivot_x, y - b.pivot_y));
         x0 = b.pivot_x - r, y0 = b.pivot_y - r, x1 = b.pivot_x + r, y1 = b.pivot_y + r;
     }
-    return {x0 - 1, y0 - 1, x1 + 1, y1 + 1};
+    // Ordered, whatever the box's signs: the index sizes its grid of buckets
+    // from these, and a box upside down would give it none (the loader
+    // refuses negative sizes; the index does not rely on it).
+    return {std::min(x0, x1) - 1, std::min(y0, y1) - 1, std::max(x0, x1) + 1, std::max(y0, y1) + 1};
 }
 
 bool finite(const Bounds& b) { return std::isfinite(b.x0) && std::isfinite(b.y0) && std::isfinite(b.x1) && std::isfinite(b.y1); }

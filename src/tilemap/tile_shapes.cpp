@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "../constants.hpp"
+
 namespace ds {
 
 namespace {
@@ -38,21 +40,31 @@ Pt turned(Pt p, int64_t tw, int64_t th, uint32_t flips) {
 
 int64_t cross(Pt o, Pt a, Pt b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
-// The outline with repeated points and points on a straight run dropped.
-std::vector<Pt> simplified(std::vector<Pt> pts) {
-    bool changed = true;
-    while (changed && pts.size() >= 3) {
-        changed = false;
-        for (size_t i = 0; i < pts.size(); ++i) {
-            const Pt prev = pts[(i + pts.size() - 1) % pts.size()], next = pts[(i + 1) % pts.size()];
-            if (pts[i] == next || cross(prev, pts[i], next) == 0) {
-                pts.erase(pts.begin() + static_cast<std::ptrdiff_t>(i));
-                changed = true;
-                break;
-            }
+// The outline with repeated points and points on a straight run dropped:
+// no point left lies on the line through its two neighbours. One pass with
+// a stack, then the seam where the outline closes: linear in the points, as
+// a shape is met once per distinct gid and flip, not once per cell.
+std::vector<Pt> simplified(const std::vector<Pt>& pts) {
+    std::vector<Pt> out;
+    out.reserve(pts.size());
+    for (const Pt& p : pts) {
+        while (out.size() >= 2 && cross(out[out.size() - 2], out.back(), p) == 0) out.pop_back();
+        out.push_back(p);
+    }
+    // Every point between the first and the last has its final neighbours;
+    // those two are tried against the neighbours across the seam.
+    size_t first = 0;
+    while (out.size() - first >= 3) {
+        if (cross(out[out.size() - 2], out.back(), out[first]) == 0) {
+            out.pop_back();
+        } else if (cross(out.back(), out[first], out[first + 1]) == 0) {
+            ++first;
+        } else {
+            break;
         }
     }
-    return pts;
+    out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(first));
+    return out;
 }
 
 bool same_points(std::vector<Pt> a, std::vector<Pt> b) {
@@ -134,6 +146,11 @@ TileSolidPart tile_solid_part(const std::vector<MapObject>& objects, int tile_w,
         if (o.points.size() < 3) {
             part.problem = "a collision polygon of " + std::to_string(o.points.size()) + " point" +
                            (o.points.size() == 1 ? "" : "s") + " (3 at least make a shape)";
+            return part;
+        }
+        if (o.points.size() > kMaxShapePoints) {
+            part.problem = "a collision polygon of " + std::to_string(o.points.size()) + " points, more than the " +
+                           std::to_string(kMaxShapePoints) + " a shape may have";
             return part;
         }
         for (const ObjectPoint& p : o.points) raw.push_back({o.x + p.x, o.y + p.y});

@@ -211,19 +211,31 @@ CellPart Tilemap::gid_part(uint32_t raw) const {
     return none;
 }
 
-CellPart Tilemap::cell_part(int64_t col, int64_t row) const {
+namespace {
+
+// A cell's part over its layers, with `part_of(raw)` giving a gid's part in
+// a layer whose tiles decide: gid_part itself, or a table of the parts
+// already found (a shape is classified once per gid and flip, not per cell).
+template <class PartOf>
+CellPart compose_cell(const Tilemap& map, int64_t col, int64_t row, PartOf&& part_of) {
     Composer c;
-    for (const TileLayer& layer : layers) {
+    for (const TileLayer& layer : map.layers) {
         if (layer.solidity == LayerSolidity::None) continue;
         const uint32_t raw = layer.raw_gid(col, row);
         if ((raw & kGidMask) == 0) continue;
         if (layer.solidity == LayerSolidity::All) {
-            if (gid_known(raw)) c.add({kSolidCell, {}});
+            if (map.gid_known(raw)) c.add({kSolidCell, {}});
             continue;
         }
-        c.add(gid_part(raw));
+        c.add(part_of(raw));
     }
     return c.result();
+}
+
+}  // namespace
+
+CellPart Tilemap::cell_part(int64_t col, int64_t row) const {
+    return compose_cell(*this, col, row, [&](uint32_t raw) { return gid_part(raw); });
 }
 
 bool Tilemap::gid_known(uint32_t gid) const {
@@ -266,12 +278,17 @@ TileGrid Tilemap::solid_grid() const {
         throw std::length_error("tilemap: solid grid wider or taller than an int");
     const size_t n = static_cast<size_t>(cols) * static_cast<size_t>(rows);
     std::vector<uint8_t> solid(n, 0);
-    // Cells that a shaped tile touched are composed again with cell_part,
+    // Cells that a shaped tile touched are composed again (compose_cell),
     // which knows every rule; the rest take the fast way below.
     std::vector<size_t> shaped;
     // Layer by layer rather than cell_part per cell: one pass over each
     // layer's own cells, with each distinct raw gid's part looked up once.
     std::unordered_map<uint32_t, CellPart> gid_cache;
+    const auto cached_part = [&](uint32_t raw) {
+        auto [it, fresh] = gid_cache.try_emplace(raw);
+        if (fresh) it->second = gid_part(raw);
+        return it->second;
+    };
     constexpr uint8_t kShapeSeen = 0x80;  // marks a cell in `solid` for `shaped`
     for (const TileLayer& l : layers) {
         if (l.solidity == LayerSolidity::None) continue;
@@ -283,9 +300,7 @@ TileGrid Tilemap::solid_grid() const {
                 if (l.solidity == LayerSolidity::All) {
                     kind = gid_known(raw) ? kSolidCell : kEmptyCell;  // unknown gids are never solid
                 } else {
-                    auto [it, fresh] = gid_cache.try_emplace(raw);
-                    if (fresh) it->second = gid_part(raw);
-                    kind = it->second.kind;
+                    kind = cached_part(raw).kind;
                 }
                 if (kind == kEmptyCell) continue;
                 const int64_t gc = l.origin_col + c - b.col0, gr = l.origin_row + r - b.row0;
@@ -302,8 +317,8 @@ TileGrid Tilemap::solid_grid() const {
     }
     std::vector<std::pair<size_t, CellPart>> parts;
     for (const size_t i : shaped) {
-        const CellPart p = cell_part(b.col0 + static_cast<int64_t>(i % static_cast<size_t>(cols)),
-                                     b.row0 + static_cast<int64_t>(i / static_cast<size_t>(cols)));
+        const CellPart p = compose_cell(*this, b.col0 + static_cast<int64_t>(i % static_cast<size_t>(cols)),
+                                        b.row0 + static_cast<int64_t>(i / static_cast<size_t>(cols)), cached_part);
         solid[i] = p.kind == kShapedCell ? kEmptyCell : p.kind;
         if (p.kind == kShapedCell) parts.push_back({i, p});
     }

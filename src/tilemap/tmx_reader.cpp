@@ -21,6 +21,7 @@
 #include "map_objects.hpp"
 #include "readers.hpp"
 #include "tilemap.hpp"
+#include "utf8.hpp"
 #include "xml_encoding.hpp"
 
 namespace ds::build {
@@ -130,6 +131,15 @@ double double_attr(const XmlFile& f, const XMLElement* e, const char* name, doub
     return number_attr<double>(f, e, name, fallback);
 }
 
+// An object's width or height: a number that must not be negative (Tiled
+// never writes one; a box that reaches back past its own corner has no
+// meaning for drawing, indexing or a game's spawn rectangles).
+double extent_attr(const XmlFile& f, const XMLElement* e, const char* name) {
+    const double v = double_attr(f, e, name, 0);
+    if (v < 0) f.fail(e, tag(e) + " attribute " + name + "='" + str_attr(e, name) + "' is negative");
+    return v;
+}
+
 uint32_t uint_attr(const XmlFile& f, const XMLElement* e, const char* name,
                    std::optional<uint32_t> fallback) {
     return number_attr<uint32_t>(f, e, name, fallback);
@@ -236,7 +246,7 @@ void read_image_size(const XmlFile& f, const XMLElement* img, int& w, int& h) {
     h = bounded_attr(f, img, "height", kMaxImageSide);
 }
 
-TileInfo read_tile(const XmlFile& f, const XMLElement* e) {
+TileInfo read_tile(const XmlFile& f, const XMLElement* e, const Tileset& ts) {
     TileInfo t;
     t.id = uint_attr(f, e, "id", std::nullopt);
     t.type = type_or_class(e);
@@ -248,6 +258,7 @@ TileInfo read_tile(const XmlFile& f, const XMLElement* e) {
         each_child(shapes, "object", [&](const XMLElement* o) {
             t.objects.push_back(read_object(f, o, nullptr, nullptr));
         });
+    if (shapes) check_shape_points(f.at(shapes), ts, t);
     if (const XMLElement* img = e->FirstChildElement("image")) {
         t.image = str_attr(img, "source");
         read_image_size(f, img, t.image_width, t.image_height);
@@ -289,7 +300,7 @@ void read_tileset_body(const XmlFile& f, const XMLElement* e, Tileset& ts) {
                                 "tile, grid");
     ts.fill_mode = named_attr(f, e, "fillmode", FillMode::Stretch, parse_fill_mode,
                               "stretch, preserve-aspect-fit");
-    each_child(e, "tile", [&](const XMLElement* t) { ts.tiles.push_back(read_tile(f, t)); });
+    each_child(e, "tile", [&](const XMLElement* t) { ts.tiles.push_back(read_tile(f, t, ts)); });
     sort_tiles(ts);
 }
 
@@ -428,9 +439,9 @@ std::vector<ObjectPoint> read_points(const XmlFile& f, const XMLElement* e) {
         const size_t comma = pair.find(',');
         const auto x = comma == std::string_view::npos ? std::nullopt : parse_number<double>(pair.substr(0, comma));
         const auto y = x ? parse_number<double>(pair.substr(comma + 1)) : std::nullopt;
-        if (!y)
-            f.fail(e, tag(e) + " points='" + written + "' has '" + std::string(pair) +
-                          "', not an x,y pair of numbers");
+        if (!y)  // quoted in part: the list may hold a million points
+            f.fail(e, tag(e) + " points='" + tmx::quoted_prefix(written, 40) + "' has '" +
+                          tmx::quoted_prefix(pair, 40) + "', not an x,y pair of numbers");
         points.push_back({*x, *y});
     }
     return points;
@@ -495,8 +506,8 @@ MapObject read_object(const XmlFile& f, const XMLElement* e, Tilemap* map, Objec
     o.type = type_or_class(e);
     o.x = double_attr(f, e, "x", 0);
     o.y = double_attr(f, e, "y", 0);
-    o.width = double_attr(f, e, "width", 0);
-    o.height = double_attr(f, e, "height", 0);
+    o.width = extent_attr(f, e, "width");
+    o.height = extent_attr(f, e, "height");
     o.rotation = double_attr(f, e, "rotation", 0);
     o.gid = uint_attr(f, e, "gid", 0u);
     o.visible = flag_attr(f, e, "visible", true);

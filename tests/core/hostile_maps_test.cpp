@@ -75,6 +75,13 @@ std::string small_map(const std::string& data, const std::string& tileset) {
            "\n </layer>\n</map>\n";
 }
 
+// small_map with an object layer after the tile layer: its first object on line 8.
+std::string map_with_object(const std::string& data, const std::string& tileset, const std::string& object) {
+    std::string text = small_map(data, tileset);
+    text.insert(text.rfind("</map>"), " <objectgroup id=\"2\" name=\"things\">\n  " + object + "\n </objectgroup>\n");
+    return text;
+}
+
 const std::string kCsv = "<data encoding=\"csv\">1,2,3,4</data>";
 const std::string kTileset =
     "<tileset firstgid=\"1\" name=\"t\" tilewidth=\"16\" tileheight=\"16\" tilecount=\"8\" "
@@ -144,6 +151,9 @@ TEST_CASE("each hostile map is refused, naming the file, the line and the value"
          "<tileset> attribute spacing='2147483647' is larger than the limit of 65536 px"},
         {"tileset_huge_tile.tmx", 3,
          "tileset 't' tile size 2147483647x16 is larger than the limit of 16777216 px"},
+        {"object_negative_height.tmx", 8, "<object> attribute height='-50' is negative"},
+        {"polygon_bomb.tmx", 3,
+         "tileset 't', tile 0: a collision shape of 6000 points, more than the 256 a shape may have"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.file);
@@ -317,6 +327,70 @@ TEST_CASE("make_tilemap keeps the loader's sizes") {
     CHECK(extent_problem(-(int64_t{1} << 30), 1, 1 << 24, "column") ==
           "column cells -1073741824 to -1073741824 of 16777216 px reach beyond 2^53 px, where "
           "coordinates stop being exact");
+}
+
+TEST_CASE("objects are never upside down: a negative width or height is refused, at any size") {
+    // The heap was corrupted from -20 px (the drawing index sized at no rows);
+    // at -1000 the load failed naming no file.
+    const TempDir dir;
+    for (const char* h : {"-1", "-20", "-50", "-1000", "-1e300"}) {
+        CAPTURE(h);
+        const std::string object = std::string(R"(<object id="1" gid="1" x="0" y="32" width="16" height=")") + h + "\"/>";
+        const std::string tmx = dir.write("o.tmx", map_with_object(kCsv, kTileset, object));
+        CHECK(failure_of(tmx).what == tmx + ":8: <object> attribute height='" + h + "' is negative");
+    }
+    const std::string head = R"({"width":2,"height":2,"tilewidth":16,"tileheight":16,)"
+                             R"("tilesets":[{"firstgid":1,"name":"t","tilewidth":16,"tileheight":16,"tilecount":8,"columns":4}],)";
+    const std::string tmj = dir.write("o.tmj", head + R"("layers":[{"type":"objectgroup","name":"things","objects":[)"
+                                                      R"({"id":1,"gid":1,"x":0,"y":32,"width":-20,"height":16}]}]})");
+    CHECK(failure_of(tmj).what == tmj + ": layers[0].objects[0].width is the number -20, expected a number of at least 0");
+    // Zero is a size (a point, or a tile object drawn at its tile's size).
+    const std::string zero = dir.write(
+        "z.tmx", map_with_object(kCsv, kTileset, R"(<object id="1" gid="1" x="0" y="32" width="0" height="0"/>)"));
+    CHECK(load_tilemap(zero).object_layers.at(0).objects.at(0).height == 0);
+}
+
+TEST_CASE("collision shapes hold at most kMaxShapePoints points, and each is classified once") {
+    const TempDir dir;
+    // JSON too, naming the tileset and the tile.
+    std::string points;
+    for (int i = 0; i < 257; ++i) points += std::string(i ? "," : "") + R"({"x":0,"y":)" + std::to_string(i % 17) + "}";
+    const std::string tmj = dir.write(
+        "p.tmj", R"({"width":2,"height":2,"tilewidth":16,"tileheight":16,"tilesets":[{"firstgid":1,"name":"walls",)"
+                 R"("tilewidth":16,"tileheight":16,"tilecount":8,"columns":4,"tiles":[{"id":3,"objectgroup":)"
+                 R"({"type":"objectgroup","objects":[{"id":1,"x":0,"y":0,"polygon":[)" + points + "]}]}}]}]}");
+    CHECK(failure_of(tmj).what ==
+          tmj + ": tileset 'walls', tile 3: a collision shape of 257 points, more than the 256 a shape may have");
+    // 256 points (a 1:2 ramp's three corners, the rest on its edges), on
+    // every cell of a 1024 x 1024 map: classified once per gid and flip, so
+    // it loads in about the time of a map of boxes (it was simplified again,
+    // in quadratic time, for every cell).
+    std::string outline = "0,16";
+    for (int x = 1; x <= 16; ++x) outline += " " + std::to_string(x) + ",16";  // the floor: 17 points
+    for (int k = 0; k < 238; ++k) outline += " 16,12";                       // the right side, over and over
+    outline += " 16,8";  // the 256th: the ramp's top, whence the slant goes back to (0, 16)
+    const int side = 1024;
+    const std::string csv = std::string("<data encoding=\"csv\">") + [&] {
+        std::string cells;
+        cells.reserve(size_t(side) * side * 2);
+        for (int i = 0; i < side * side; ++i) cells += i ? ",1" : "1";
+        return cells;
+    }() + "</data>";
+    const std::string big = dir.write(
+        "big.tmx", "<?xml version=\"1.0\"?>\n<map version=\"1.10\" orientation=\"orthogonal\" width=\"" +
+                       std::to_string(side) + "\" height=\"" + std::to_string(side) +
+                       "\" tilewidth=\"16\" tileheight=\"16\">\n <tileset firstgid=\"1\" name=\"t\" tilewidth=\"16\" "
+                       "tileheight=\"16\" tilecount=\"8\" columns=\"4\"><tile id=\"0\"><objectgroup><object id=\"1\">"
+                       "<polygon points=\"" + outline + "\"/></object></objectgroup></tile></tileset>\n"
+                       " <layer id=\"1\" name=\"ground\">\n  " + csv + "\n </layer>\n</map>\n");
+    const Tilemap map = load_tilemap(big);
+    CHECK(map.tilesets.at(0).tiles.at(0).objects.at(0).points.size() == 256);
+    const TileGrid grid = map.solid_grid();
+    const CellPart part = map.cell_part(side - 1, side - 1);
+    REQUIRE(part.kind == kShapedCell);
+    CHECK(part.shape.cut == Cut::Floor);
+    CHECK((part.shape.ax == 0 && part.shape.ay == 16 && part.shape.bx == 16 && part.shape.by == 8));
+    CHECK(grid.cols() == side);
 }
 
 TEST_CASE("JSON maps: their tilesets, templates and project file keep every limit") {

@@ -122,7 +122,24 @@ def maps():
             ok, tileset=TILESET_LINE.replace('tilewidth="16"', 'tilewidth="2147483647"')),
         "tile_huge_image.tmx": small_map(
             ok, tileset=tileset_with("", '<tile id="0"><image source="a.png" width="16" height="99999999"/></tile>')),
+        # A tile object upside down: its height reached back past its corner,
+        # which once sized the drawing index at no rows and corrupted the heap.
+        # Its <object> on line 8.
+        "object_negative_height.tmx": with_objects(
+            ok, '<object id="1" gid="1" x="0" y="32" width="16" height="-50"/>'),
+        # A collision polygon of 6000 points (its <objectgroup> on line 3): each
+        # cell showing the tile once simplified it again, in quadratic time.
+        "polygon_bomb.tmx": small_map(ok, tileset=tileset_with(
+            "", '<tile id="0"><objectgroup><object id="1" x="0" y="0"><polygon points="' +
+            " ".join(f"{i % 17},{i % 13}" for i in range(6000)) + '"/></object></objectgroup></tile>')),
     }
+
+
+def with_objects(data, objects):
+    """small_map with an object layer after the tile layer: its <objectgroup>
+    on line 7, its first object on 8."""
+    return small_map(data).replace(
+        '</map>\n', f' <objectgroup id="2" name="things">\n  {objects}\n </objectgroup>\n</map>\n')
 
 
 def main():

@@ -45,6 +45,13 @@
   (in-load-tilemap (hostile "tileset_urandom.tmx") 3
                    "cannot open tileset '/dev/urandom': is not a regular file (a character device)")
   (load-failure (hostile "tileset_urandom.tmx")))
+(test-equal "a tile object upside down (it corrupted the heap)"
+  (in-load-tilemap (hostile "object_negative_height.tmx") 8 "<object> attribute height='-50' is negative")
+  (load-failure (hostile "object_negative_height.tmx")))
+(test-equal "a collision polygon of 6000 points (it took 39 s)"
+  (in-load-tilemap (hostile "polygon_bomb.tmx") 3
+                   "tileset 't', tile 0: a collision shape of 6000 points, more than the 256 a shape may have")
+  (load-failure (hostile "polygon_bomb.tmx")))
 (let* ((dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-hostile-XXXXXX")))
        (fifo (string-append dir "/pipe.tsx"))
        (tmx (string-append dir "/pipe.tmx")))

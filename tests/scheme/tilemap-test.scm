@@ -423,6 +423,10 @@
 (test-equal "make-tilemap: a polygon of 2 points"
   "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 2 points (3 at least make a shape)\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . 1))))))))
+(test-equal "make-tilemap: a polygon of more points than a shape may have (a million: refused at once)"
+  "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 1000000 points, more than the 256 a shape may have\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '()
+                                       `((1 . (polygon ,@(map (lambda (i) (cons (modulo i 17) 16)) (iota 1000000)))))))))
 (test-equal "make-tilemap: a point outside the tile"
   "In procedure make-tilemap: shapes: the shape of gid 1: collision point (20, 16) lies outside the 16x16 tile\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 16) (20 . 16) (20 . 0))))))))
