@@ -86,6 +86,7 @@
     (game-debug-draw? . "Whether GAME is drawn with the debug overlay (see game-debug-draw-set!).")
     (frame-pacing . "A parameter, #f by default: when true, game-run! waits so that each frame lasts its frame delay in real time, as a game someone watches must; when #f it runs as fast as it can. The host sets it for a window or a REPL server.")
     (hook-error-reporter . "A parameter, #f by default: a procedure given the text of each error raised by a frame hook or a frame, which then pauses the game instead of ending the run. The host sets it when it serves a REPL.")
+    (hook-time-limit . "A parameter, #f by default: a procedure (what thunk) each hook call runs through — engine-update:, update:, render: and frame hooks, WHAT naming it. The host sets one that interrupts a hook with an error past --repl-timeout when it serves a REPL.")
     ;; (downstroke render)
     (display-mode . "A parameter: how game-run! shows frames, 'headless (the default), 'window or 'capture. The host sets it from --window and --capture.")
     (capture-directory . "A parameter: the directory game-run! writes each frame to as a PNG in 'capture mode, or #f.")

@@ -28,7 +28,7 @@
             input-mouse mouse-world-position game-fullscreen-set! game-fullscreen?
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
-            frame-pacing hook-error-reporter main-script? script-number-argument engine-stats
+            frame-pacing hook-error-reporter hook-time-limit main-script? script-number-argument engine-stats
             gc-space-divisor set-gc-space-divisor!
             game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log))
 
@@ -618,13 +618,19 @@ game-capture, a capture run or a window)."
 (define (call-bounded game what thunk)
   ;; (THUNK) with at most the game's stack-limit of stack: past it, a
   ;; stack-overflow error naming WHAT (the hook) instead of growing on.
-  (call-with-stack-overflow-handler
-   (quotient (game-stack-limit game) 8)  ; in words of 8 bytes
-   thunk
-   (lambda ()
-     (scm-error 'stack-overflow what
-                "the hook used up its ~a MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?"
-                (list (quotient (game-stack-limit game) (* 1024 1024))) #f))))
+  ;; And within the host's time limit, when it sets one: around the stack
+  ;; bound, since an overflow leaves the frames under it without running
+  ;; their dynamic-wind exits (the limit's would stay armed).
+  (define (bounded)
+    (call-with-stack-overflow-handler
+     (quotient (game-stack-limit game) 8)  ; in words of 8 bytes
+     thunk
+     (lambda ()
+       (scm-error 'stack-overflow what
+                  "the hook used up its ~a MiB of Scheme stack (make-game stack-limit:): a recursion that never ends?"
+                  (list (quotient (game-stack-limit game) (* 1024 1024))) #f))))
+  (let ((limit (hook-time-limit)))
+    (if limit (limit what bounded) (bounded))))
 
 (define (check-frames frames)
   (unless (or (not frames) (and (real? frames) (not (nan? frames))))
@@ -655,6 +661,12 @@ game-capture, a capture run or a window)."
 
 (define hook-error-reporter (make-parameter #f))
 
+;; A served game's hooks are also bounded in time: the host sets this to a
+;; procedure (WHAT THUNK) that runs the hook WHAT ("update:" …) and
+;; interrupts it with an error past the REPL's limit, so an endless hook
+;; pauses the game instead of freezing it and the REPL.
+(define hook-time-limit (make-parameter #f))
+
 ;; game → what it failed with: its hooks and scene then (see game-levers)
 (define paused-on (make-object-property))
 
@@ -678,7 +690,7 @@ game-capture, a capture run or a window)."
          (call-with-output-string
           (lambda (port)
             (format port "downstroke: ~a:~%" (what))
-            (when frames ((@ (system repl debug) print-frames) frames port))
+            (display (frames-text frames) port)
             (print-exception port #f key args))))
         (on-error))
       (lambda (key . args)
@@ -689,6 +701,17 @@ game-capture, a capture run or a window)."
         (unless (memq key '(quit stack-overflow))
           (let ((tag (cdr (fluid-ref %stacks))))
             (set! frames ((@ (system repl debug) narrow-stack->vector) (make-stack #t) 3 tag 0 1))))))))
+
+(define (frames-text frames)
+  ;; FRAMES printed, or "" — also when Guile cannot print them: those of a
+  ;; hook interrupted by a signal (hook-time-limit) fail in frame-local-ref.
+  (if frames
+      (catch #t
+        (lambda ()
+          (call-with-output-string
+           (lambda (port) ((@ (system repl debug) print-frames) frames port))))
+        (lambda _ ""))
+      ""))
 
 (define (step-or-pause! game dt held)
   ;; #t when the frame ran.

@@ -230,6 +230,9 @@
        (display text (current-error-port))
        (force-output (current-error-port))
        ((@ (downstroke repl-server) repl-server-broadcast!) server text)))
+    ;; … and so does a hook that never ends: the REPL's time limit covers
+    ;; the hooks as it covers evaluations.
+    (hook-time-limit (@ (downstroke repl-server) call-with-hook-time-limit))
     (frame-pacing #t)
     (remove-socket-on-signals! socket)))
 

@@ -16,12 +16,15 @@
   #:use-module ((system syntax) #:select (syntax?))
   #:use-module (ice-9 suspendable-ports)
   #:use-module (rnrs bytevectors)
+  #:use-module ((ice-9 iconv) #:select (bytevector->string))
+  #:use-module (ice-9 regex)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
   #:use-module ((system vm vm) #:select (call-with-stack-overflow-handler))
   #:export (default-repl-timeout open-unix-repl-socket open-tcp-repl-socket
             remove-unix-repl-socket!
-            make-repl-server repl-server-poll! repl-server-broadcast!))
+            make-repl-server repl-server-poll! repl-server-broadcast!
+            call-with-hook-time-limit))
 
 ;;; ---------------------------------------------------------------- tunables
 
@@ -41,6 +44,13 @@
 ;; sent by an editor, and small enough that a runaway sender (a 16 MB string)
 ;; cannot make the game hold it in memory.
 (define *max-line-bytes* (* 1024 1024))
+
+;; Text fed to a client's REPL since it last began reading an expression at
+;; its prompt: an unfinished expression (an unclosed string or list) is held
+;; by Guile's reader, which took about 27 bytes of memory per byte (10 MB
+;; in an open string grew the game by 271 MB). As much as one line may
+;; hold, which is far beyond any form typed or pasted.
+(define *max-pending-bytes* (* 1024 1024))
 
 ;; Bytes read from a client's socket per frame: a fast sender gets 4 MB/s
 ;; at 60 frames a second, and a frame's work stays bounded however many
@@ -138,7 +148,11 @@ arbitrary code execution."
   (outbox-bytes client-outbox-bytes set-client-outbox-bytes!)
   (cont client-cont set-client-cont!)         ; the suspended REPL, or #f
   (eof? client-eof? set-client-eof!)          ; the client sent all it will send
-  (closing client-closing set-client-closing!)) ; #f, or why it is dropped
+  (closing client-closing set-client-closing!) ; #f, or why it is dropped
+  (vetted? client-vetted? set-client-vetted!) ; its first line was checked (not HTTP)
+  (pending client-pending set-client-pending!) ; bytes fed since its REPL's last prompt
+  (evaluating? client-evaluating? set-client-evaluating!) ; an expression of its runs
+  (exit client-exit set-client-exit!))        ; #f, or the arguments of its (exit)
 
 (define (make-client sock)
   (let* ((pair (socketpair PF_UNIX SOCK_STREAM 0))
@@ -149,6 +163,8 @@ arbitrary code execution."
     (set-client-ready! c '()) (set-client-ready-bytes! c 0)
     (set-client-outbox! c '()) (set-client-outbox-bytes! c 0)
     (set-client-cont! c #f) (set-client-eof! c #f) (set-client-closing! c #f)
+    (set-client-vetted! c #f) (set-client-pending! c 0)
+    (set-client-evaluating! c #f) (set-client-exit! c #f)
     (set-client-out! c (output-port-for c))
     c))
 
@@ -225,12 +241,60 @@ arbitrary code execution."
           (if (not last)
               (begin (set-client-partial! c (cons (sub bv 0 n) (client-partial c)))
                      (set-client-partial-bytes! c (+ (client-partial-bytes c) n)))
-              (let ((lines (apply bytevector-append
-                                  (reverse (cons (sub bv 0 (+ last 1)) (client-partial c))))))
-                (set-client-ready! c (append (client-ready c) (list lines)))
-                (set-client-ready-bytes! c (+ (client-ready-bytes c) (bytevector-length lines)))
+              (begin
+                (make-ready! c (apply bytevector-append
+                                      (reverse (cons (sub bv 0 (+ last 1)) (client-partial c)))))
                 (set-client-partial! c (list (sub bv (+ last 1) n)))
                 (set-client-partial-bytes! c (- n last 1))))))))
+
+(define (make-ready! c lines)
+  ;; LINES (whole lines, or the last text the client sent) may go to the
+  ;; REPL: unless the client's first line is an HTTP request, or they are
+  ;; not UTF-8 — which Guile's reader on a suspendable port does not
+  ;; replace but failed on (a surrogate, past U+10FFFF), ending the REPL.
+  ;; Whole lines are whole characters: a newline is never inside one.
+  (cond ((and (not (client-vetted? c)) (http-first-line lines))
+         => (lambda (line) (refuse-http! c line)))
+        ((not (false-if-exception (utf8->string lines)))
+         (drop! c "input that is not valid UTF-8 discarded"))
+        (else
+         (set-client-vetted! c #t)
+         (set-client-ready! c (append (client-ready c) (list lines)))
+         (set-client-ready-bytes! c (+ (client-ready-bytes c) (bytevector-length lines))))))
+
+;;; A web page can make a browser send an HTTP request to any port on
+;;; 127.0.0.1 (an HTML form, or fetch with mode "no-cors"); the request's
+;;; body would be evaluated. So, as Guile's own REPL server since 2.0.13
+;;; (CVE-2016-8606), a client whose first line looks like HTTP is closed
+;;; before anything it sent reaches the REPL. No REPL input is either: a
+;;; request line ends in " HTTP/1.1" (whatever its method), a header line
+;;; is "Name: value" (a proxy or a browser may put one first).
+
+(define http-request-line (make-regexp " HTTP/[0-9]+\\.[0-9]+$"))
+(define http-header-line (make-regexp "^[A-Za-z][A-Za-z0-9]*(-[A-Za-z0-9]+)*:[ \t]*[^ \t]"))
+
+(define (http-first-line bytes)
+  ;; The first line of BYTES (up to a CR or LF), non-ASCII shown as ?, if
+  ;; it looks like an HTTP request's; else #f.
+  (let* ((end (let loop ((i 0))
+                (if (or (= i (bytevector-length bytes)) (memv (bytevector-u8-ref bytes i) '(10 13)))
+                    i
+                    (loop (+ i 1)))))
+         (line (string-map (lambda (ch) (if (char<=? #\space ch #\~) ch #\?))
+                           (bytevector->string (sub bytes 0 end) "ISO-8859-1"))))
+    (and (or (regexp-exec http-request-line line) (regexp-exec http-header-line line))
+         line)))
+
+;; What of a refused first line the console shows: enough to recognise it.
+(define *shown-line-chars* 100)
+
+(define (refuse-http! c line)
+  (format *console* "downstroke: refused a REPL client whose first line looks like HTTP (a web page reaching the REPL?); nothing it sent was evaluated: ~s~%"
+          (if (> (string-length line) *shown-line-chars*)
+              (string-append (substring line 0 *shown-line-chars*) "...")
+              line))
+  (force-output *console*)
+  (drop! c "the first line looks like an HTTP request, not Scheme; nothing was evaluated"))
 
 (define (bytevector-append . bvs)
   (let ((out (make-bytevector (apply + (map bytevector-length bvs)))))
@@ -265,12 +329,14 @@ arbitrary code execution."
         (begin
           (when (and (client-eof? c) (pair? (client-partial c)))
             ;; the last line had no newline: it is whole now
-            (set-client-ready! c (list (apply bytevector-append (reverse (client-partial c)))))
-            (set-client-partial! c '()) (set-client-partial-bytes! c 0))
-          (if (null? (client-ready c)) fed? (loop fed?)))
+            (let ((last (apply bytevector-append (reverse (client-partial c)))))
+              (set-client-partial! c '()) (set-client-partial-bytes! c 0)
+              (make-ready! c last)))
+          (if (or (null? (client-ready c)) (client-closing c)) fed? (loop fed?)))
         (let* ((bv (car (client-ready c)))
                (sent (or (send-some (client-feed c) bv) 0)))
           (set-client-ready-bytes! c (- (client-ready-bytes c) sent))
+          (set-client-pending! c (+ (client-pending c) sent))
           (cond ((= sent (bytevector-length bv))
                  (set-client-ready! c (cdr (client-ready c)))
                  (loop #t))
@@ -314,6 +380,7 @@ arbitrary code execution."
 (define *active* #f)                 ; the client whose slice runs, or #f
 (define *timeout* default-repl-timeout)
 (define *strikes* 0)                 ; timer expiries in this slice's evaluation
+(define *watched* #f)                ; the game hook running under the limit, or #f
 
 ;; An evaluation's Scheme stack, in bytes: as a game's hooks have by default
 ;; (make-game stack-limit:), so a recursion that never ends fails in about a
@@ -335,19 +402,59 @@ arbitrary code execution."
 (define (disarm-timer!) (setitimer ITIMER_REAL 0 0 0 0))
 
 (define (on-alarm signal)
-  (when *active*
-    (set! *strikes* (+ *strikes* 1))
-    (if (= *strikes* 1)
-        (scm-error 'misc-error "repl"
-                   "evaluation ran past the ~a s limit (--repl-timeout): interrupted"
-                   (list *timeout*) #f)
-        (abort-to-prompt repl-tag 'runaway))))
+  (cond (*active*
+         (set! *strikes* (+ *strikes* 1))
+         (if (= *strikes* 1)
+             (scm-error 'misc-error "repl"
+                        "evaluation ran past the ~a s limit (--repl-timeout): interrupted"
+                        (list *timeout*) #f)
+             (abort-to-prompt repl-tag 'runaway)))
+        (*watched*
+         (set! *strikes* (+ *strikes* 1))
+         (if (= *strikes* 1)
+             (scm-error 'misc-error *watched*
+                        "the hook ran past the ~a s limit (--repl-timeout): interrupted"
+                        (list *timeout*) #f)
+             (abort-to-prompt hook-tag)))))
 
 (define (on-read)
-  ;; Each new prompt starts a new evaluation's time.
+  ;; Each new prompt starts a new evaluation's time, and a new expression's
+  ;; text.
   (when *active*
+    (set-client-pending! *active* 0)
+    (set-client-evaluating! *active* #f)
     (load-geiser-when-found!)
     (arm-timer!)))
+
+(define (on-eval expression)
+  ;; What ends the REPL from here on is the expression's (exit), not ,q.
+  (when *active* (set-client-evaluating! *active* #t)))
+
+;;; ---------------------------------------------------------------- game hooks
+;;; The limit covers the game's hooks too while it is served: an endless
+;;; update hook set from the REPL (game-update-set!) froze the game and,
+;;; with it, the REPL that could have replaced it. The engine calls each
+;;; hook through call-with-hook-time-limit (its hook-time-limit parameter,
+;;; set by the host); the interrupt is an error in that hook, reported and
+;;; pausing the game as any other.
+
+(define hook-tag (make-prompt-tag "downstroke-hook"))
+
+(define (call-with-hook-time-limit what thunk)
+  "(THUNK) — the game hook WHAT (\"update:\" …) — interrupted by an error
+once it has run the REPL's time limit, and cut off (an error too) one more
+limit later if it caught that error and ran on."
+  (if (or *active* *watched*)
+      (thunk)                           ; already under the limit
+      (dynamic-wind
+        (lambda () (set! *watched* what) (arm-timer!))
+        (lambda ()
+          (call-with-prompt hook-tag thunk
+            (lambda (k)
+              (scm-error 'misc-error what
+                         "the hook still ran ~a s after its interrupt (--repl-timeout): cut off"
+                         (list *timeout*) #f))))
+        (lambda () (disarm-timer!) (set! *watched* #f)))))
 
 ;;; ---------------------------------------------------------------- Geiser
 ;;; Geiser (geiser-guile) puts its Scheme directory on the load path, then
@@ -448,8 +555,9 @@ Meta-command used by Geiser to evaluate and compile code."))))
         (save-module-excursion
          (lambda ()
            (set-current-module module)
-           (run-repl (served-repl))))))
-    #t))
+           (let ((status (run-repl (served-repl))))
+             ;; #t: it ended (,q or end of input); (exit ARGS …): by (exit)
+             (if (client-evaluating? c) (cons 'exit status) #t))))))))
 
 (define (served-repl)
   ;; Guile's REPL, but an error reports its backtrace and returns to the
@@ -491,22 +599,31 @@ Meta-command used by Geiser to evaluate and compile code."))))
   (dynamic-wind
     (lambda () (set! *active* c) (install-suspendable-ports!) (arm-timer!))
     (lambda ()
-      (let ((ended? (catch #t
-                      (lambda ()
-                        (with-continuation-barrier
-                         (lambda ()
-                           (call-with-bounded-stack
-                            (lambda ()
-                              (call-with-prompt repl-tag thunk
-                                (lambda (k why)
-                                  (if (eq? why 'read)
-                                      (set-client-cont! c k)
-                                      (drop! c (format #f "evaluation still running ~a s after its interrupt" *timeout*)))
-                                  #f)))))))
-                      (lambda (key . args)
-                        (drop! c (format #f "REPL failed: ~a ~s" key args))
-                        #f))))
-        (when ended? (set-client-cont! c #f) (set-client-closing! c (or (client-closing c) "ended")))))
+      ;; The barrier would catch an error itself, print it on the console
+      ;; and return #f: the error is caught inside it, and said to the client.
+      (let ((ended (with-continuation-barrier
+                    (lambda ()
+                      (catch #t
+                        (lambda ()
+                          (call-with-bounded-stack
+                           (lambda ()
+                             (call-with-prompt repl-tag thunk
+                               (lambda (k why)
+                                 (if (eq? why 'read)
+                                     (set-client-cont! c k)
+                                     (drop! c (format #f "evaluation still running ~a s after its interrupt" *timeout*)))
+                                 #f)))))
+                        (lambda (key . args)
+                          (drop! c (format #f "REPL failed: ~a ~s" key args))
+                          #f))))))
+        (cond ((client-cont c))                 ; waiting for input
+              ((client-closing c))              ; dropped
+              ((pair? ended)                    ; (exit): the poll ends the game
+               (set-client-exit! c (cdr ended))
+               (drop! c "(exit) ends the game (,q leaves only this REPL)"))
+              (ended (set-client-closing! c "ended"))
+              ;; Whatever else ended it, a client no REPL serves is closed.
+              (else (drop! c "REPL ended")))))
     (lambda () (disarm-timer!) (uninstall-suspendable-ports!) (set! *active* #f))))
 
 (define (resume! c)
@@ -536,6 +653,7 @@ per frame."
   (sigaction SIGPIPE SIG_IGN)
   (sigaction SIGALRM on-alarm)
   (add-hook! before-read-hook on-read)
+  (add-hook! before-eval-hook on-eval)
   (%make-repl-server socket module '()))
 
 (define (accept-all! server)
@@ -562,13 +680,20 @@ per frame."
 
 (define (serve-client! c readable)
   (when (memq (client-sock c) readable) (receive! c))
-  (unless (client-closing c) (serve-input! c)))
+  (unless (client-closing c) (serve-input! c))
+  (when (client-exit c)
+    ;; As (exit) in a hook or the script does: what the client was told
+    ;; goes first, as far as its socket takes it now.
+    (flush! c)
+    (apply throw 'quit (client-exit c))))
 
 (define (serve-input! c)
   (when (and (feed! c) (client-cont c)) (resume! c))
   (when (and (client-eof? c) (null? (client-ready c)) (client-cont c))
     (end-input! c)
-    (resume! c)))
+    (resume! c))
+  (when (and (> (client-pending c) *max-pending-bytes*) (not (client-closing c)))
+    (drop! c (format #f "unfinished expression longer than ~a bytes discarded" *max-pending-bytes*))))
 
 (define (still-open? c)
   ;; #f once the client is closed: it is gone, or its REPL ended or it was

@@ -1,6 +1,7 @@
 ;;; The live REPL: run a game under `downstroke --repl-server PATH`, connect to
 ;;; the socket, move an entity from the REPL, and see the running game notice.
-(use-modules (srfi srfi-64) (ice-9 popen) (ice-9 rdelim) (ice-9 textual-ports) (srfi srfi-1))
+(use-modules (srfi srfi-64) (ice-9 popen) (ice-9 rdelim) (ice-9 textual-ports) (ice-9 binary-ports)
+             (srfi srfi-1))
 
 (load "support.scm")
 
@@ -285,6 +286,57 @@
 (usleep 100000)
 (test-assert "and the game goes on" (< after-frame-hook (value m "(game-frame game)")))
 
+;;; A hook that never ends, set from the REPL, is interrupted after
+;;; --repl-timeout like an evaluation: reported as any hook error, the game
+;;; paused on the frame, the REPL answering (issue 45).
+(define (report-frame report)
+  ;; The number after "in frame " (read would take "12:" for a keyword).
+  (let ((at (string-contains report "in frame ")))
+    (and at (let ((from (+ at 9)))
+              (string->number (substring report from (or (string-skip report char-numeric? from)
+                                                         (string-length report))))))))
+(define (from-report report)
+  ;; REPORT from the server's "downstroke: " line on (the prompt and the
+  ;; setter's value before it left out).
+  (let ((at (string-contains report "downstroke: ")))
+    (if at (substring report at) report)))
+(define endless-report
+  (begin (send! m "(game-update-set! game (lambda (g dt) (let loop () (loop))))")
+         (read-until m "interrupted\n")))
+(define endless-frame (report-frame endless-report))
+(test-equal "an endless update hook is interrupted after --repl-timeout, reported as a hook error"
+  (format #f "downstroke: a hook raised an error in frame ~a; the game is paused on it until \
+a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced:
+In procedure update:: the hook ran past the 2 s limit (--repl-timeout): interrupted\n" endless-frame)
+  (from-report endless-report))
+(test-equal "the REPL answers meanwhile" "3\n" (answer m "(+ 1 2)"))
+(test-equal "and the game is paused on that frame" endless-frame (value m "(game-frame game)"))
+(reply m "(game-update-set! game (lambda (g dt) #t))")
+(usleep 100000)
+(test-assert "a fixed hook lets it go on" (< endless-frame (value m "(game-frame game)")))
+
+(define endless-frame-hook-report
+  (begin (send! m "(add-frame-hook! (lambda () (let loop () (loop))))")
+         (read-until m "interrupted\n")))
+(test-equal "an endless frame hook is interrupted, reported and removed"
+  (format #f "downstroke: a frame hook (now removed) raised an error in frame ~a:
+In procedure frame hook: the hook ran past the 2 s limit (--repl-timeout): interrupted\n"
+          (report-frame endless-frame-hook-report))
+  (from-report endless-frame-hook-report))
+(define after-endless-frame-hook (value m "(game-frame game)"))
+(usleep 100000)
+(test-assert "and the game goes on without it" (< after-endless-frame-hook (value m "(game-frame game)")))
+
+(define stubborn-report
+  (begin (send! m "(game-update-set! game (lambda (g dt) (let loop () (catch #t (lambda () (let spin () (spin))) (lambda _ (loop))))))")
+         (read-until m "cut off\n")))
+(test-assert "a hook that catches its interrupt and runs on is cut off one limit later"
+  (and (string-contains stubborn-report "downstroke: a hook raised an error in frame ")
+       (string-suffix? "In procedure update:: the hook still ran 2 s after its interrupt (--repl-timeout): cut off\n"
+                       stubborn-report)))
+(test-equal "… and the REPL still answers" "5\n" (answer m "(+ 2 3)"))
+(reply m "(game-update-set! game (lambda (g dt) #t))")
+
 ;;; The socket path: a live socket, a file that is not one, a stale one.
 (test-equal "a socket a game is serving on is refused"
   (cons 2 (format #f "downstroke: --repl-server ~a: another server is listening on it\n" served-path))
@@ -345,6 +397,70 @@
 (close-port moved-client)
 (for-each delete-file (list moved-path (string-append dir "/elsewhere.sock")))
 
+;;; ------------------------------------------------------------ issue 45
+;;; A fresh game, so that its peak memory is this section's alone.
+(define fresh-path (string-append dir "/fresh.sock"))
+(define fresh (start-served fresh-path "--repl-timeout" "2"))
+(define f (open-client fresh-path))
+(define (peak-kib)
+  (value f "(call-with-input-file \"/proc/self/status\" (lambda (p) (let loop () (let ((l ((@ (ice-9 rdelim) read-line) p))) (if (string-prefix? \"VmHWM:\" l) (read (open-input-string (substring l 6))) (loop))))))"))
+(define peak-before (peak-kib))
+
+;; An unfinished expression: 10 MB inside an open string, in lines of
+;; 64 KiB (each under the line bound). Without a bound the game grew by
+;; over 300 MB holding it.
+(define unclosed (open-client fresh-path))
+(catch 'system-error
+  (lambda ()
+    (display "(define big \"" unclosed)
+    (do ((i 0 (+ i 1))) ((= i 160))
+      (display (make-string 65535 #\x) unclosed) (newline unclosed) (force-output unclosed)))
+  (lambda _ #f))                        ; the server closes the connection at its bound
+(test-equal "an unfinished expression past 1 MiB is discarded and its client closed"
+  "\ndownstroke: unfinished expression longer than 1048576 bytes discarded; closing the connection\n"
+  (read-until unclosed "closing the connection\n"))
+(close-port unclosed)
+(test-assert "and the game's peak memory grew by less than 96 MiB (not the 300 MB it took)"
+  (< (- (peak-kib) peak-before) (* 96 1024)))
+(test-equal "an expression over several lines is still read whole" "2\n"
+  (answer f "(string-length\n \"ab\"\n)"))
+
+;; Bytes that are not UTF-8 (a surrogate's encoding) ended the client's
+;; REPL and left its descriptors open: after 64 such clients no one could
+;; connect.
+(define (fresh-fd-count) (value f "(length (scandir \"/proc/self/fd\"))"))
+(reply f ",use (ice-9 ftw)")
+(define fresh-fds (fresh-fd-count))
+(define not-utf-8-replies
+  (map (lambda (i)
+         (let ((c (open-client fresh-path)))
+           (put-bytevector c #vu8(#x28 #x64 #x69 #x73 #x70 #x6c #x61 #x79 #x20 #x22 #xed #xa0 #x80 #x22 #x29 #x0a))
+           (force-output c)
+           (let ((r (read-until c "no such marker"))) (close-port c) r)))
+       (iota 70)))
+(test-equal "70 clients sending bytes that are not UTF-8 are each told so and closed"
+  (make-list 70 "\ndownstroke: input that is not valid UTF-8 discarded; closing the connection\n")
+  not-utf-8-replies)
+(test-equal "then a new client is served" "4\n"
+  (let* ((c (open-client fresh-path)) (r (answer c "(+ 2 2)"))) (close-port c) r))
+(answer f "#t")                         ; by now the server saw every close
+(test-equal "and the descriptors are back where they were" fresh-fds (fresh-fd-count))
+
+;; ,q leaves the REPL and the game runs on; (exit) ends the game, as it
+;; does from a hook or the script, and says so.
+(define leaver (open-client fresh-path))
+(send! leaver ",q")
+(test-equal ",q closes only that connection" "" (read-until leaver "no such marker"))
+(close-port leaver)
+(test-equal "the game runs on" "6\n" (answer f "(* 2 3)"))
+(send! f "(exit 4)")
+(test-equal "(exit) at the REPL says that it ends the game"
+  "\ndownstroke: (exit) ends the game (,q leaves only this REPL); closing the connection\n"
+  (read-until f "no such marker"))
+(test-equal "and ends it with its status" 4 (status:exit-val (close-pipe fresh)))
+(test-assert "removing its socket" (not (file-exists? fresh-path)))
+(close-port f)
+
 ;;; --repl-port serves the same REPL on 127.0.0.1 (a port some other
 ;;; program holds is refused, exit 2: then the next one is tried).
 (define (start-tcp-served tries)
@@ -360,6 +476,35 @@
     (read-until s prompt)
     s))
 (test-equal "--repl-port serves on loopback" "12\n" (answer tcp-client "(* 3 4)"))
+
+;; A web page can make a browser POST to 127.0.0.1:PORT (fetch, mode
+;; "no-cors"): a first line that looks like HTTP closes the connection
+;; before anything reaches the REPL (as Guile's own server, CVE-2016-8606).
+(define (tcp-send text)
+  ;; What the server answers TEXT with, up to its closing the connection.
+  (let ((s (socket PF_INET SOCK_STREAM 0)))
+    (connect s AF_INET INADDR_LOOPBACK (cdr tcp-game))
+    (display text s)
+    (force-output s)
+    (let ((r (read-until s "no such marker"))) (close-port s) r)))
+(define http-witness (string-append dir "/written-by-a-web-page"))
+(define refused-http
+  "\ndownstroke: the first line looks like an HTTP request, not Scheme; nothing was evaluated; closing the connection\n")
+(define (after-banner r)
+  ;; R past the banner and first prompt a client is sent on connecting.
+  (let ((at (string-contains r prompt))) (if at (substring r (+ at (string-length prompt))) r)))
+(test-equal "an HTTP POST is refused, its body not evaluated"
+  refused-http
+  (after-banner
+   (tcp-send (format #f "POST / HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: text/plain\r\n\r\n(call-with-output-file ~s (lambda (p) (display 1 p)))\n" http-witness))))
+(test-equal "a first line that is a header is refused too"
+  refused-http
+  (after-banner (tcp-send (format #f "Host: 127.0.0.1\r\n\r\n(call-with-output-file ~s (lambda (p) (display 1 p)))\n" http-witness))))
+(test-equal "as is any request line ending in HTTP/x.y"
+  refused-http
+  (after-banner (tcp-send (format #f "PROPFIND /x HTTP/1.0\r\n\r\n(call-with-output-file ~s (lambda (p) (display 1 p)))\n" http-witness))))
+(test-equal "an ordinary client is still served" "20\n" (answer tcp-client "(* 4 5)"))
+(test-assert "and nothing a request carried was evaluated" (not (file-exists? http-witness)))
 (test-equal "that game ends by itself as well" 0 (stop-served (car tcp-game) tcp-client))
 (close-port tcp-client)
 
