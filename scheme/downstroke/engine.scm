@@ -136,7 +136,19 @@ collision mode, substeps and resting contacts."
     (when bad
       (scm-error 'wrong-type-arg who
                  "input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got ~S"
-                 (list bad) #f))))
+                 (list bad) #f)))
+  ;; Entries are key frames, replayed in order: one for an earlier frame
+  ;; than the entry before it would be held from that entry's frame on, not
+  ;; its own, and of two for one frame only the later would count. Both are
+  ;; refused, naming the two frames; entries are counted from 0.
+  (let loop ((s script) (i 0) (before #f))
+    (when (pair? s)
+      (let ((frame (caar s)))
+        (when (and before (<= frame before))
+          (scm-error 'wrong-type-arg who
+                     "input-script: entry ~a is for frame ~a, after an entry for frame ~a: frames must increase"
+                     (list i frame before) #f))
+        (loop (cdr s) (+ i 1) frame)))))
 
 (define (game-scene-set! game scene)
   "Make SCENE (a scene, or #f for none) GAME's scene from now on."

@@ -19,8 +19,9 @@
 stopped), with INPUT as its input script when given (a list, or the file
 record-input wrote), and return it."
   (when input
-    ((@@ (downstroke engine) game-input-script-set!) game
-     (if (string? input) (read-input-script input) input)))
+    (let ((script (if (string? input) (read-input-script input) input)))
+      ((@@ (downstroke engine) check-input-script) "play" script)
+      ((@@ (downstroke engine) game-input-script-set!) game script)))
   (parameterize ((display-mode 'headless))
     (game-run! game #:frames frames))
   game)

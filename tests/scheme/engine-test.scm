@@ -401,6 +401,12 @@
   (list "an input-script entry whose actions are not a list"
         "In procedure make-game: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got (0 . a)\n"
         (lambda () (make-game input-script: '((0 . a)))))
+  (list "an input-script entry for an earlier frame than the one before it, naming both"
+        "In procedure make-game: input-script: entry 4 is for frame 10, after an entry for frame 12: frames must increase\n"
+        (lambda () (make-game input-script: '((0 . ()) (3 . (a)) (5 . (b)) (12 . (a)) (10 . (b))))))
+  (list "… and one for the frame of the one before it"
+        "In procedure make-game: input-script: entry 1 is for frame 0, after an entry for frame 0: frames must increase\n"
+        (lambda () (make-game input-script: '((0 . (a)) (0 . (b))))))
   (list "make-game scene: a list" "In procedure make-game: scene: expected a scene (make-scene) or #f, got (1)\n"
         (lambda () (make-game scene: '(1))))
   (list "make-game update: a number" "In procedure make-game: update: expected a procedure or #f, got 1\n"

@@ -34,6 +34,17 @@
     (call-with-output-file bad (lambda (p) (write '((0 . (right)) (x . ())) p)))
     (mentions? (error-text (lambda () (read-input-script bad))) "read-input-script" "input-script")))
 
+(test-equal "a recorded script out of frame order is refused, naming the file's reader and both frames"
+  "In procedure read-input-script: input-script: entry 2 is for frame 1, after an entry for frame 5: frames must increase\n"
+  (let ((unordered (string-append dir "/unordered.scm")))
+    (call-with-output-file unordered (lambda (p) (write '((0 . ()) (5 . (right)) (1 . ())) p)))
+    (error-text (lambda () (read-input-script unordered)))))
+(test-equal "… and so is a list given to play, which then runs nothing"
+  '("In procedure play: input-script: entry 1 is for frame 2, after an entry for frame 2: frames must increase\n" 0)
+  (let* ((game (walker))
+         (text (error-text (lambda () (play game #:frames 10 #:input '((2 . (right)) (2 . ())))))))
+    (list text (game-frame game))))
+
 ;;; ---------------------------------------------------------------- golden frames
 (when (renderer-available?)
   (let ((golden (string-append dir "/walker.png")))
