@@ -64,7 +64,7 @@ picture (or there is no window, and the input script holds no mouse)."
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
-              input input-script frame sounds music history-size history
+              input input-script script-cursor frame sounds music history-size history
               display debug-draw input-log stack-limit pause-when-unfocused interpolate)
   game?
   (title game-title)
@@ -80,6 +80,7 @@ picture (or there is no window, and the input script holds no mouse)."
   (resting-contacts game-resting-contacts? game-resting-contacts-set!)
   (input game-input game-input-set!)
   (input-script game-input-script game-input-script-set!)
+  (script-cursor game-script-cursor game-script-cursor-set!)  ; where the replay is (scripted-held!), or #f
   (frame game-frame game-frame-set!)
   (sounds game-sound-log game-sound-log-set!)  ; (count . ((frame . name) …)), newest first
   (music game-music-log game-music-log-set!)   ; a bounded log of (frame . event), newest first
@@ -128,7 +129,7 @@ collision mode, substeps and resting contacts."
        (<= (count pair? (cdr entry)) 1)))
 
 (define (check-input-script who script)
-  ;; scripted-held walks it every frame: a circular script would hang the game.
+  ;; A replay walks it (scripted-held!): a circular script would hang the game.
   (unless (list? script)
     (scm-error 'wrong-type-arg who "input-script: expected a list of (frame . actions), got ~S"
                (list script) #f))
@@ -236,7 +237,7 @@ runs and captures draw the stepped state."
       (%display-set-background! display background))
     (let ((game (%make-game title width height frame-delay scene update render engine-update
                             collision-mode substeps (and resting-contacts? #t)
-                            (make-input '() '()) input-script 0 (make-bounded-log) (make-bounded-log)
+                            (make-input '() '()) input-script #f 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
                             display #f (make-bounded-log) stack-limit (and pause-when-unfocused? #t)
                             (and interpolate? #t))))
@@ -485,10 +486,38 @@ has a tilemap — never past the map's right or bottom edge."
                                  (/ (game-height game) 2))
                               (limit tilemap-height tilemap-tile-height (game-height game))))))))
 
-(define (scripted-held script frame)
-  ;; The actions of the last entry at or before FRAME: entries are key frames.
-  (let loop ((s script) (held '()))
-    (if (or (null? s) (> (caar s) frame)) held (loop (cdr s) (cdar s)))))
+;;; Replaying: a cursor into the script, kept from frame to frame, so a
+;;; replay walks its script once. Walking it from its head every frame made
+;;; a replay quadratic: 10^5 key frames took 27 s (docs/limits.org,
+;;; "Recordings").
+(define-record-type <script-cursor>
+  (make-script-cursor script ahead held since)
+  script-cursor?
+  (script cursor-script)                  ; the script it walks
+  (ahead cursor-ahead cursor-ahead-set!)  ; the entries not passed yet
+  (held cursor-held cursor-held-set!)     ; the actions of the last entry passed; () before the first
+  (since cursor-since cursor-since-set!)) ; that entry's frame; -1 before the first
+
+(define (scripted-held! game frame)
+  ;; The actions of the last script entry at or before FRAME: entries are
+  ;; key frames, in increasing order (check-input-script). The cursor holds
+  ;; for any frame from its last key frame on; an earlier frame (a rewind)
+  ;; or another script (play input:) starts a walk from the head.
+  (let* ((script (game-input-script game))
+         (kept (game-script-cursor game))
+         (cursor (if (and kept (eq? (cursor-script kept) script) (>= frame (cursor-since kept)))
+                     kept
+                     (let ((fresh (make-script-cursor script script '() -1)))
+                       (game-script-cursor-set! game fresh)
+                       fresh))))
+    (let pass ()
+      (let ((ahead (cursor-ahead cursor)))
+        (when (and (pair? ahead) (<= (caar ahead) frame))
+          (cursor-held-set! cursor (cdar ahead))
+          (cursor-since-set! cursor (caar ahead))
+          (cursor-ahead-set! cursor (cdr ahead))
+          (pass))))
+    (cursor-held cursor)))
 
 ;;; Recording input, to replay a run exactly (a bug report, a determinism test).
 (define (input-held-actions input)
@@ -774,7 +803,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
     (let loop ((ticks 0))
       (run-frame-hooks! game)
       (let* ((frame (game-frame game))
-             (held (scripted-held (game-input-script game) frame)))
+             (held (scripted-held! game frame)))
         (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
           (when (and (step-or-pause! game dt held) capture-dir)
             (draw-game! game)
