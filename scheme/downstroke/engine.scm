@@ -88,7 +88,7 @@ picture (or there is no window, and the input script holds no mouse)."
   (history game-history-log game-history-log-set!)  ; a bounded log of (frame . scene)
   (display game-display)            ; the renderer's, or #f in a build without it
   (debug-draw game-debug-draw? %game-debug-draw-set!)
-  (input-log %game-input-log %game-input-log-set!)  ; a bounded log of (frame . held) at each change
+  (input-log %game-input-log %game-input-log-set!)  ; an <input-log>: (frame . held) at each change
   (stack-limit game-stack-limit)    ; bytes of Scheme stack each hook may use
   (pause-when-unfocused game-pause-when-unfocused?)
   (interpolate game-interpolate?))
@@ -239,7 +239,7 @@ runs and captures draw the stepped state."
                             collision-mode substeps (and resting-contacts? #t)
                             (make-input '() '()) input-script #f 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
-                            display #f (make-bounded-log) stack-limit (and pause-when-unfocused? #t)
+                            display #f empty-input-log stack-limit (and pause-when-unfocused? #t)
                             (and interpolate? #t))))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       game)))
@@ -520,6 +520,81 @@ has a tilemap — never past the map's right or bottom edge."
     (cursor-held cursor)))
 
 ;;; Recording input, to replay a run exactly (a bug report, a determinism test).
+
+;;; The input log: each change of the actions held, as (frame . held) from
+;;; that frame on, newest first. Every change is kept, from frame 0 on, up
+;;; to a bound; a log that reaches it stops there and says so, and a
+;;; recording of it replays up to that frame and quits. (It used to keep the
+;;; newest 65536 changes, cut from 131072: a long session was then recorded
+;;; from its middle and replayed as if that were frame 0.)
+(define-record-type <input-log>
+  (make-input-log count changes full-at)
+  input-log?
+  (count input-log-count)        ; how many changes it holds
+  (changes input-log-changes)    ; (frame . held) at each change, newest first
+  (full-at input-log-full-at))   ; the first frame it did not record, once at the bound; else #f
+
+(define empty-input-log (make-input-log 0 '() #f))
+
+;; The bound is for memory: a change of a key or two keeps about 70 bytes,
+;; one with the pointer (its (mouse x y buttons) entry) about 150. Moving
+;; the pointer changes the input every frame, so 2^21 changes are 9.7 hours
+;; of it at 60 frames a second, in about 320 MB; keys alone change a few
+;; times a second, days of play. (Figures: docs/limits.org, "Recordings".)
+(define *max-input-changes* (expt 2 21))
+
+(define (forget-from log frame)
+  ;; A rewind replays from an earlier frame: forget what was recorded from
+  ;; it on (and that the log was full, if it filled there or later).
+  (let ((changes (input-log-changes log)) (full-at (input-log-full-at log)))
+    (if (or (and (pair? changes) (>= (caar changes) frame)) (and full-at (>= full-at frame)))
+        (let forget ((changes changes) (count (input-log-count log)))
+          (if (and (pair? changes) (>= (caar changes) frame))
+              (forget (cdr changes) (- count 1))
+              (make-input-log count changes #f)))
+        log)))
+
+(define (record-input! game frame held)
+  (let* ((log (forget-from (%game-input-log game) frame))
+         (changes (input-log-changes log)))
+    (%game-input-log-set!
+     game
+     (cond ((and (pair? changes) (lset= equal? (cdar changes) held)) log)
+           ((input-log-full-at log) log)
+           ((< (input-log-count log) *max-input-changes*)
+            (make-input-log (+ (input-log-count log) 1) (cons (cons frame held) changes) #f))
+           (else
+            (format (current-error-port)
+                    "downstroke: the input log holds ~a changes, its bound: the input from frame ~a on is not recorded, and a recording (record-input, --record) replays frames 0 to ~a and quits~%"
+                    *max-input-changes* frame (- frame 1))
+            (make-input-log (input-log-count log) changes frame))))))
+
+(define (game-input-log game)
+  "The actions held in each frame played so far, one list per frame, from
+frame 0 on: give it to input-log->script to replay a played session
+headless, frame for frame. A log that reached its bound (2^21 changes of
+input) ends at the frame before the first it did not record."
+  (let* ((log (%game-input-log game))
+         (end (if (input-log-full-at log) (min (input-log-full-at log) (game-frame game)) (game-frame game))))
+    (let loop ((changes (input-log-changes log)) (frame end) (acc '()))
+      ;; CHANGES is newest first: each (start . held) holds from START on.
+      (if (null? changes)
+          acc
+          (let* ((start (caar changes)) (n (max 0 (- frame start))))
+            (loop (cdr changes) (min frame start) (append (make-list n (cdar changes)) acc)))))))
+
+(define (recorded-script game)
+  ;; input-log->script of game-input-log, straight from the changes, in
+  ;; time and memory proportional to their number (game-input-log takes a
+  ;; pair a frame played). Changes at or after the game's frame were undone
+  ;; by a rewind. A full log's script ends in quit at the first frame it did
+  ;; not record, so its replay stops where the recording did.
+  (let* ((log (%game-input-log game))
+         (full-at (input-log-full-at log))
+         (end (if full-at (min full-at (game-frame game)) (game-frame game)))
+         (kept (drop-while (lambda (c) (>= (car c) end)) (input-log-changes log))))
+    (reverse (if (and full-at (< full-at (game-frame game))) (cons (list full-at 'quit) kept) kept))))
+
 (define (input-held-actions input)
   "The list of actions held in INPUT's frame: what an input log records."
   (input-held-list input))
@@ -537,16 +612,35 @@ every frame whose set of held actions differs from the frame before."
   "Write GAME's input so far to FILE as an input script (input-log->script
 of game-input-log), which read-input-script reads back: a session played in
 a window replays headless, frame for frame. `downstroke --window --record
-FILE' writes it when the game ends."
+FILE' writes it when the game ends. Every change of input is kept up to
+2^21; a session with more is written up to the frame the bound was reached,
+where the script quits, and record-input says so on the error port."
+  (check-game "record-input" game)
   (unless (string? file)
     (scm-error 'wrong-type-arg "record-input" "file: expected a string, got ~S" (list file) #f))
-  (let ((script (input-log->script (game-input-log game))))
+  (let* ((script (recorded-script game))
+         (full-at (input-log-full-at (%game-input-log game)))
+         (cut (and full-at (< full-at (game-frame game)) full-at)))  ; where the script quits
     (call-with-output-file file
       (lambda (port)
         (format port ";;; The input of ~s, ~a frames, as an input script (record-input).~%" (game-title game)
                 (game-frame game))
-        (write script port)
-        (newline port)))
+        (when cut
+          (format port ";;; Frames 0 to ~a only: the input log reached its bound of ~a changes, and the script quits at frame ~a.~%"
+                  (- cut 1) *max-input-changes* cut))
+        ;; An entry a line: Guile's write of the whole list takes time
+        ;; quadratic in its length (8.5 s for 10^5 entries).
+        (display "(" port)
+        (let write-entries ((entries script) (first? #t))
+          (when (pair? entries)
+            (unless first? (display "\n " port))
+            (write (car entries) port)
+            (write-entries (cdr entries) #f)))
+        (display ")\n" port)))
+    (when cut
+      (format (current-error-port)
+              "downstroke: record-input: ~s holds frames 0 to ~a of ~a: the input log reached its bound of ~a changes, and the script quits at frame ~a~%"
+              file (- cut 1) (game-frame game) *max-input-changes* cut))
     script))
 
 (define (read-input-script file)
@@ -562,36 +656,6 @@ one."
       script)))
 
 (export input-held-actions input-log->script record-input read-input-script)
-
-;; A game played for hours must not keep every change of input: the log
-;; keeps at least the newest 65536 changes (at a change every few frames,
-;; an hour or more of play), so a long run stays in bounded memory.
-(define *input-changes-kept* 65536)
-
-(define (game-input-log game)
-  "The actions held in each frame played so far, one list per frame, from
-frame 0 on (or, after a very long run, from the oldest change still kept):
-give it to input-log->script to replay a played session headless, frame
-for frame."
-  (let loop ((changes (bounded-log-items (%game-input-log game))) (frame (game-frame game)) (acc '()))
-    ;; CHANGES is newest first: each (start . held) holds from START on.
-    ;; The first change is frame 0's, unless the oldest were dropped.
-    (cond ((null? changes) acc)
-          (else
-           (let* ((start (caar changes)) (n (max 0 (- frame start))))
-             (loop (cdr changes) (min frame start) (append (make-list n (cdar changes)) acc)))))))
-
-(define (record-input! game frame held)
-  (let* ((log (%game-input-log game))
-         (items (bounded-log-items log))
-         ;; A rewind replays from an earlier frame: forget what came after it.
-         (log (if (and (pair? items) (>= (caar items) frame))
-                  (list->bounded-log (drop-while (lambda (e) (>= (car e) frame)) items))
-                  log))
-         (newest (bounded-log-items log)))
-    (%game-input-log-set! game (if (and (pair? newest) (lset= equal? (cdar newest) held))
-                                   log
-                                   (bounded-log-push log (cons frame held) *input-changes-kept*)))))
 
 ;;; ---------------------------------------------------------------- drawing
 

@@ -1,5 +1,6 @@
 ;;; Long recordings (issue 45): a replay walks its script once, however many
-;;; key frames it has.
+;;; key frames it has; a recording keeps every change of input from frame 0
+;;; on, up to its bound, and past it says so and quits where it stopped.
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
 
 (load "support.scm")
@@ -55,6 +56,68 @@
   '((0 a) (1 a) (2 b) (3 b) (4 c) (5 c) (6 d) (7 d) (2 b) (3 b) (4 c) (5 c) (6 d) (7 d) (8 d))
   (reverse rewound-seen))
 
+;;; ---------------------------------------------------------------- a long recording
+;; More changes than the log once kept (131072, when it cut back to the
+;; newest 65536 and the recording began at frame 65537, numbered 0).
+(define long-frames 140000)
+(define long-script (map (lambda (f) (cons f (moving f))) (iota long-frames)))
+(define played (make-game engine-update: #f input-script: long-script))
+(game-run! played #:frames long-frames)
+(define session (string-append dir "/long.scm"))
+(define written (record-input played session))
+(test-equal "record-input writes every one of 140000 changes, from frame 0" long-script written)
+(test-equal "… as input-log->script of game-input-log says" written (input-log->script (game-input-log played)))
+(define read-back (read-input-script session))
+(test-equal "read-input-script reads them all back" long-script read-back)
+(define long-samples '(0 1 65535 65536 65537 65538 131071 131072 131073 139999))
+(define long-seen (list '()))
+(game-run! (sampler read-back long-samples long-seen) #:frames long-frames)
+(test-equal "… and the replay holds what the session held, at the start, around the old cuts and at the end"
+  (map (lambda (f) (cons f (moving f))) long-samples)
+  (reverse (car long-seen)))
+
+;;; ---------------------------------------------------------------- the bound
+;; 2^21 changes (docs/limits.org, "Recordings"). Playing that many takes
+;; seconds and hundreds of MB, so the log is told it already holds all but
+;; one of them: the count, not the changes, is what the bound is checked on.
+(define bound (@@ (downstroke engine) *max-input-changes*))
+(test-equal "the bound is 2^21 changes" 2097152 bound)
+(define full (make-game engine-update: #f input-script: '((0 . (a)) (1 . (b)) (2 . (c)) (3 . (d)) (4 . (e)) (5 . (f)))))
+(game-run! full #:frames 3)
+(let ((log ((@@ (downstroke engine) %game-input-log) full)))
+  ((@@ (downstroke engine) %game-input-log-set!)
+   full ((@@ (downstroke engine) make-input-log) (- bound 1) ((@@ (downstroke engine) input-log-changes) log) #f)))
+(define filling
+  (call-with-output-string
+   (lambda (port) (with-error-to-port port (lambda () (game-run! full #:frames 8))))))
+(test-equal "the change past the bound is not recorded, and the game says so once, naming the frame"
+  "downstroke: the input log holds 2097152 changes, its bound: the input from frame 4 on is not recorded, and a recording (record-input, --record) replays frames 0 to 3 and quits\n"
+  filling)
+(test-equal "… the game runs on" 8 (game-frame full))
+(test-equal "game-input-log ends at the last frame recorded" '((a) (b) (c) (d)) (game-input-log full))
+(define cut-file (string-append dir "/cut.scm"))
+(define cut-script #f)
+(define writing
+  (call-with-output-string
+   (lambda (port) (with-error-to-port port (lambda () (set! cut-script (record-input full cut-file)))))))
+(test-equal "record-input writes frames 0 to 3 and quit at frame 4"
+  '((0 a) (1 b) (2 c) (3 d) (4 quit)) cut-script)
+(test-equal "… says so where it is run"
+  (format #f "downstroke: record-input: ~s holds frames 0 to 3 of 8: the input log reached its bound of 2097152 changes, and the script quits at frame 4\n"
+          cut-file)
+  writing)
+(test-equal "… and in the file"
+  (string-append ";;; The input of \"Downstroke\", 8 frames, as an input script (record-input).\n"
+                 ";;; Frames 0 to 3 only: the input log reached its bound of 2097152 changes, and the script quits at frame 4.\n"
+                 "((0 a)\n (1 b)\n (2 c)\n (3 d)\n (4 quit))\n")
+  (call-with-input-file cut-file (lambda (p) ((@ (ice-9 textual-ports) get-string-all) p))))
+(define cut-seen (list '()))
+(define cut-replay (sampler (read-input-script cut-file) '(0 3 4) cut-seen))
+(game-run! cut-replay #:frames 8)
+(test-equal "its replay holds what was recorded and stops where the recording did"
+  '(4 ((0 a) (3 d))) (list (game-frame cut-replay) (reverse (car cut-seen))))
+
+(for-each delete-file (list session cut-file))
 (rmdir dir)
 
 (test-end "recording")
