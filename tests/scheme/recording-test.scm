@@ -117,6 +117,10 @@
 (test-equal "its replay holds what was recorded and stops where the recording did"
   '(4 ((0 a) (3 d))) (list (game-frame cut-replay) (reverse (car cut-seen))))
 
+(test-equal "record-input refuses what is not a game, naming it"
+  "In procedure record-input: game: expected a game (make-game), got 5\n"
+  (error-text (lambda () (record-input 5 (string-append dir "/never.scm")))))
+
 (for-each delete-file (list session cut-file))
 (rmdir dir)
 
