@@ -1,7 +1,7 @@
 ;;; Long recordings (issue 45): a replay walks its script once, however many
 ;;; key frames it has; a recording keeps every change of input from frame 0
 ;;; on, up to its bound, and past it says so and quits where it stopped.
-(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing))
 
 (load "support.scm")
 
@@ -82,11 +82,16 @@
 ;; one of them: the count, not the changes, is what the bound is checked on.
 (define bound (@@ (downstroke engine) *max-input-changes*))
 (test-equal "the bound is 2^21 changes" 2097152 bound)
-(define full (make-game engine-update: #f input-script: '((0 . (a)) (1 . (b)) (2 . (c)) (3 . (d)) (4 . (e)) (5 . (f)))))
-(game-run! full #:frames 3)
-(let ((log ((@@ (downstroke engine) %game-input-log) full)))
-  ((@@ (downstroke engine) %game-input-log-set!)
-   full ((@@ (downstroke engine) make-input-log) (- bound 1) ((@@ (downstroke engine) input-log-changes) log) #f)))
+;; A game played 3 frames (3 changes), its log then told it holds one
+;; change less than the bound.
+(define (almost-full script)
+  (let ((game (make-game engine-update: #f history: 10 input-script: script)))
+    (game-run! game #:frames 3)
+    (let ((log ((@@ (downstroke engine) %game-input-log) game)))
+      ((@@ (downstroke engine) %game-input-log-set!)
+       game ((@@ (downstroke engine) make-input-log) (- bound 1) ((@@ (downstroke engine) input-log-changes) log) #f)))
+    game))
+(define full (almost-full '((0 . (a)) (1 . (b)) (2 . (c)) (3 . (d)) (4 . (e)) (5 . (f)))))
 (define filling
   (call-with-output-string
    (lambda (port) (with-error-to-port port (lambda () (game-run! full #:frames 8))))))
@@ -117,11 +122,37 @@
 (test-equal "its replay holds what was recorded and stops where the recording did"
   '(4 ((0 a) (3 d))) (list (game-frame cut-replay) (reverse (car cut-seen))))
 
+;; A rewind to the frame the log filled at forgets that it filled: with
+;; frame 4 now holding what frame 3 held, there is no change until frame 5.
+(define refilled (almost-full '((0 . (a)) (1 . (b)) (2 . (c)) (3 . (d)) (4 . (e)))))
+(define refilled-file (string-append dir "/refilled.scm"))
+(define refilled-script #f)
+(define refilling
+  (call-with-output-string
+   (lambda (port)
+     (with-error-to-port port
+       (lambda ()
+         (game-run! refilled #:frames 6)                ; fills at frame 4
+         (game-rewind! refilled 2)                      ; back to frame 4
+         (play refilled #:frames 7 #:input '((0 . (a)) (1 . (b)) (2 . (c)) (3 . (d)) (5 . (f))))
+         (set! refilled-script (record-input refilled refilled-file)))))))
+(test-equal "a rewind to the frame the log filled at records from there again, up to the bound"
+  '((0 a) (1 b) (2 c) (3 d) (5 quit))
+  refilled-script)
+(test-equal "… game-input-log with it" '((a) (b) (c) (d) (d)) (game-input-log refilled))
+(test-equal "… and each filling is said"
+  (string-append
+   "downstroke: the input log holds 2097152 changes, its bound: the input from frame 4 on is not recorded, and a recording (record-input, --record) replays frames 0 to 3 and quits\n"
+   "downstroke: the input log holds 2097152 changes, its bound: the input from frame 5 on is not recorded, and a recording (record-input, --record) replays frames 0 to 4 and quits\n"
+   (format #f "downstroke: record-input: ~s holds frames 0 to 4 of 7: the input log reached its bound of 2097152 changes, and the script quits at frame 5\n"
+           refilled-file))
+  refilling)
+
 (test-equal "record-input refuses what is not a game, naming it"
   "In procedure record-input: game: expected a game (make-game), got 5\n"
   (error-text (lambda () (record-input 5 (string-append dir "/never.scm")))))
 
-(for-each delete-file (list session cut-file))
+(for-each delete-file (list session cut-file refilled-file))
 (rmdir dir)
 
 (test-end "recording")
