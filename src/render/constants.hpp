@@ -19,6 +19,12 @@ constexpr Rgba kBackground{24, 28, 40, 255};
 // 30000 × 30000 px would otherwise decode to 3.6 GB.
 constexpr int64_t kMaxImageSidePx = 16384;
 constexpr int64_t kMaxImageDecodedBytes = int64_t(256) << 20;
+// The largest image file read (whole, before decoding): the decoded bound
+// and 1 MiB more. No format taken stores a picture in more bytes than it
+// decodes to (a BMP, at most 4 bytes a pixel, is the largest) beyond its
+// headers and metadata (EXIF, ICC: a JPEG's frame header may follow up to
+// a MiB of them), so a larger file is padding or a lie.
+constexpr int64_t kMaxImageFileBytes = kMaxImageDecodedBytes + (int64_t(1) << 20);
 
 // The most a sound may take decoded, at the mixer's 44.1 kHz, stereo, 16
 // bits: 64 MiB is about six minutes, where a sound effect lasts seconds; a

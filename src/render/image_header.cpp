@@ -39,14 +39,34 @@ bool png(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
     return sized(out, "PNG", w, h, why);
 }
 
-// GIF: "GIF87a"/"GIF89a", then the logical screen's width and height,
-// little-endian 16-bit.
+// GIF: "GIF87a"/"GIF89a", the logical screen (width, height, flags: a
+// global colour table of 3 × 2^(n+1) bytes follows when the top bit is
+// set), then blocks: extensions ('!', a label, sub-blocks of a length byte
+// and that many bytes, up to an empty one), image descriptors (',', left,
+// top, width, height) and the trailer (';'). SDL_image decodes the first
+// image alone, at its descriptor's size, whatever the screen's (a 35-byte
+// GIF with a 4x4 screen and a 65535x65535 image reached 4.1 GB); it skips
+// any other byte between blocks, and so does this walk.
 bool gif(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
-    if (b.size() < 10) {
+    if (b.size() < 13) {
         why = "its GIF header is cut short";
         return false;
     }
-    return sized(out, "GIF", le16(b.data() + 6), le16(b.data() + 8), why);
+    size_t i = 13 + (b[10] & 0x80 ? 3 * (size_t(2) << (b[10] & 7)) : 0);
+    while (i < b.size()) {
+        const uint8_t c = b[i++];
+        if (c == ';') break;
+        if (c == '!') {
+            ++i;  // the label
+            while (i < b.size() && b[i] != 0) i += 1 + size_t(b[i]);
+            ++i;  // the empty sub-block
+        } else if (c == ',') {
+            if (i + 8 > b.size()) break;
+            return sized(out, "GIF", le16(b.data() + i + 4), le16(b.data() + i + 6), why);
+        }
+    }
+    why = "its GIF data has no image (or is cut short before it)";
+    return false;
 }
 
 // BMP: "BM", a 14-byte file header, then the DIB header: BITMAPCOREHEADER

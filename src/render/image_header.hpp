@@ -12,17 +12,14 @@ namespace ds::render {
 
 struct ImageHeader {
     const char* format = "";  // "PNG", "JPEG", "GIF" or "BMP"
-    int64_t width = 0, height = 0;
+    int64_t width = 0, height = 0;  // of the picture SDL_image decodes (a GIF's first image)
 };
 
-// The header of the image whose file starts with `bytes` (as much of it as
-// was read: a JPEG's size may come after its metadata). False, with `why`
+// The header of the image whose file is `bytes` (the loader reads it whole;
+// a JPEG's size may come after its metadata, a GIF's first image after its
+// extensions). False, with `why`
 // saying what is wrong, for a file that is none of the four formats, is cut
 // short before its size, or declares a size that is not positive.
 bool read_image_header(std::span<const uint8_t> bytes, ImageHeader& out, std::string& why);
-
-// How many bytes read_image_header may need from the start of a file: a
-// JPEG's frame header can follow up to this much metadata (EXIF, ICC).
-constexpr size_t kImageHeaderBytes = size_t(1) << 20;
 
 }  // namespace ds::render

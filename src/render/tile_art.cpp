@@ -3,9 +3,9 @@
 #include <SDL_image.h>
 
 #include <filesystem>
-#include <fstream>
-#include <vector>
+#include <span>
 
+#include "bounded_file.hpp"
 #include "constants.hpp"
 #include "image_header.hpp"
 #include "render_error.hpp"
@@ -68,21 +68,17 @@ void clear_key(SDL_Surface* img, const MapColor& c) {
 }
 
 // The file's header, read before anything is decoded, within the bounds:
-// a RenderError naming the file otherwise (not a file, unreadable, not an
-// image, cut short, or larger than kMaxImageSidePx / kMaxImageDecodedBytes).
-// `head` keeps the bytes read: the whole file when it is shorter than
-// kImageHeaderBytes, as most tilesets are.
-ImageHeader checked_header(const std::string& path, const char* what, std::vector<uint8_t>& head) {
+// a RenderError naming the file otherwise (not a file, unreadable, larger
+// than kMaxImageFileBytes, not an image, cut short, or larger than
+// kMaxImageSidePx / kMaxImageDecodedBytes). `file` keeps the bytes read:
+// the whole file, which is what is decoded.
+ImageHeader checked_header(const std::string& path, const char* what, std::string& file) {
     const std::string named = std::string(what) + " '" + path + "'";
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) throw RenderError("cannot read " + named + ": no such file");
-    if (!std::filesystem::is_regular_file(status)) throw RenderError("cannot read " + named + ": not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    head.resize(kImageHeaderBytes);
-    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
-    if (in.bad()) throw RenderError("cannot read " + named + ": reading it failed");
-    head.resize(size_t(in.gcount()));
+    std::string error;
+    auto bytes = read_bounded_file(path, kMaxImageFileBytes, "an image file may hold", error);
+    if (!bytes) throw RenderError("cannot read " + named + ": " + error);
+    file = std::move(*bytes);
+    const std::span<const uint8_t> head(reinterpret_cast<const uint8_t*>(file.data()), file.size());
     ImageHeader h;
     std::string why;
     if (!read_image_header(head, h, why)) throw RenderError("cannot read " + named + ": " + why);
@@ -125,12 +121,11 @@ TileArt::~TileArt() {
 SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColor>& trans, const char* what) {
     const std::string key = trans ? path + '\x1f' + key_text(*trans) : path;
     if (auto it = images_.find(key); it != images_.end()) return it->second;
-    std::vector<uint8_t> head;
-    const ImageHeader header = checked_header(path, what, head);
-    // The file is read once when the header read took all of it.
-    SDL_Surface* raw = head.size() < kImageHeaderBytes
-                           ? IMG_Load_RW(SDL_RWFromConstMem(head.data(), int(head.size())), 1)
-                           : IMG_Load(path.c_str());
+    std::string file;
+    const ImageHeader header = checked_header(path, what, file);
+    // Decoded from the bytes checked: the file is read once, and SDL_image
+    // cannot read more of it than was.
+    SDL_Surface* raw = IMG_Load_RW(SDL_RWFromConstMem(file.data(), int(file.size())), 1);
     if (!raw) throw RenderError(std::string("cannot read ") + what + " '" + path + "': " + IMG_GetError());
     if (raw->w != header.width || raw->h != header.height) {  // a decoder that disagrees with the header
         const std::string got = std::to_string(raw->w) + "x" + std::to_string(raw->h);

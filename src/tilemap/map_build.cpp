@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bounded_file.hpp"
 #include "map_objects.hpp"
-#include "read_file.hpp"
 #include "readers.hpp"
 
 namespace ds::build {
@@ -32,7 +32,7 @@ void check_limits(const std::string& path, const MapLimits& limits) {
 
 std::optional<std::string> read_counted(LoadState& s, const std::string& path, std::string& error) {
     const char* limit = s.bytes_left < s.limits().max_bytes ? "max-bytes leaves" : "max-bytes allows";
-    auto text = tmx::read_regular_file(path, s.bytes_left, limit, error);
+    auto text = read_bounded_file(path, s.bytes_left, limit, error);
     if (text) s.bytes_left -= static_cast<int64_t>(text->size());
     return text;
 }

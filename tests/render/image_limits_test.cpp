@@ -6,6 +6,7 @@
 // size with a warning naming both.
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -113,9 +114,14 @@ TEST_CASE("read_image_header reads each format's declared size") {
     CHECK(std::string(h.format) == "PNG");
     CHECK(h.width == 30000);
     CHECK(h.height == 20000);
-    REQUIRE(read_image_header(bytes({'G', 'I', 'F', '8', '9', 'a', 0x34, 0x12, 0x02, 0x01}), h, why));
-    CHECK(h.width == 0x1234);
-    CHECK(h.height == 0x0102);
+    // GIF: SDL_image decodes the first image at its descriptor's size, not
+    // the logical screen's (0x1234 x 0x0102 here); a comment extension and
+    // a stray byte come before it.
+    REQUIRE(read_image_header(bytes({'G', 'I', 'F', '8', '9', 'a', 0x34, 0x12, 0x02, 0x01, 0, 0, 0, '!', 0xFE, 2, 'h',
+                                     'i', 0, 0x07, ',', 0, 0, 0, 0, 0x04, 0x03, 0x06, 0x05, 0}),
+                              h, why));
+    CHECK(h.width == 0x0304);
+    CHECK(h.height == 0x0506);
     // BMP with a 40-byte header and a negative (top-down) height.
     std::vector<uint8_t> bmp = bytes({'B', 'M', 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 40, 0, 0, 0, 0x20, 0, 0, 0,
                                       0xF0, 0xFF, 0xFF, 0xFF});
@@ -170,6 +176,43 @@ TEST_CASE("an image bomb is refused from its header, naming the file and the siz
     CHECK(kb < 16 * 1024);  // well under one decoded row band of the bomb (30000 × 4 × 140 B)
 }
 
+// The audit's 35-byte GIF: a 4 x 4 logical screen, then an image descriptor
+// of 65535 x 65535 px, which is what SDL_image sizes the picture by (4.1 GB
+// before the header check read the descriptor).
+std::vector<uint8_t> gif_bomb() {
+    return bytes({'G', 'I', 'F', '8', '9', 'a', 4, 0, 4, 0, 0, 0, 0, ',', 0, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0xFF, 0, 2,
+                  2, 0x4C, 0x01, 0, ';', 0, 0, 0, 0, 0, 0});
+}
+
+TEST_CASE("a GIF whose first image is a bomb behind a small screen is refused from that image's size") {
+    const std::vector<uint8_t> bomb = gif_bomb();
+    REQUIRE(bomb.size() == 35);
+    const std::string path = write_file("bomb.gif", bomb);
+    CHECK(draw_error(map_on("bomb.gif", 4, 4)) ==
+          "refusing tileset image '" + path + "': its GIF header declares 65535x65535 px, more than the limit of "
+          "16384 px a side");
+    const long kb = child_peak_kb([] {
+        const Tilemap m = map_on("bomb.gif", 4, 4);
+        (void)draw_error(m);
+    });
+    CAPTURE(kb);
+    CHECK(kb >= 0);
+    CHECK(kb < 16 * 1024);
+}
+
+TEST_CASE("an image file larger than an image can be, or not a regular file, is refused unread") {
+    // Sparse: a PNG header, then a hole up to one byte past the bound.
+    const std::string huge = write_file("huge.png", png_head(8, 8));
+    REQUIRE(truncate(huge.c_str(), kMaxImageFileBytes + 1) == 0);
+    CHECK(draw_error(map_on("huge.png")) == "cannot read tileset image '" + huge + "': is " +
+                                                std::to_string(kMaxImageFileBytes + 1) + " bytes, more than the " +
+                                                std::to_string(kMaxImageFileBytes) + " bytes an image file may hold");
+    const std::string fifo = (temp_dir() / "pipe.png").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);  // opening it for reading would wait for a writer
+    CHECK(draw_error(map_on("pipe.png")) == "cannot read tileset image '" + fifo + "': is not a regular file (a FIFO)");
+    std::filesystem::remove(fifo);
+}
+
 TEST_CASE("truncated, corrupt and non-image files and folders are refused naming the file") {
     std::vector<uint8_t> truncated = png_head(8, 8);
     const std::string cut = write_file("cut.png", truncated);  // a header and no image data
@@ -181,7 +224,7 @@ TEST_CASE("truncated, corrupt and non-image files and folders are refused naming
     CHECK(draw_error(map_on("empty.png")) == "cannot read tileset image '" + empty + "': it is empty");
     std::filesystem::create_directories(temp_dir() / "folder.png");
     CHECK(draw_error(map_on("folder.png")) ==
-          "cannot read tileset image '" + (temp_dir() / "folder.png").string() + "': not a regular file");
+          "cannot read tileset image '" + (temp_dir() / "folder.png").string() + "': is a directory");
 }
 
 TEST_CASE("an image not of its declared size is drawn at its real size, with a warning naming both") {

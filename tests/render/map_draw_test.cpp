@@ -342,7 +342,7 @@ TEST_CASE("bad input names the file and the value") {
         TileArt art;
         art.bind(&m);
         CHECK_THROWS_WITH_AS(draw_map(c, art, m, 0, 0),
-                             ("cannot read image layer image '" + dir + "/nowhere.png': no such file").c_str(),
+                             ("cannot read image layer image '" + dir + "/nowhere.png': No such file or directory").c_str(),
                              RenderError);
     }
 }
