@@ -7,14 +7,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <span>
-#include <system_error>
-#include <vector>
+#include <string_view>
 
+#include "bounded_file.hpp"
 #include "constants.hpp"
+#include "music_format.hpp"
+#include "ogg_decode.hpp"
 #include "render_error.hpp"
 #include "sound_header.hpp"
 
@@ -58,84 +58,95 @@ bool open_mixer(const char* driver) {
     return false;
 }
 
-// Why `path` cannot be decoded, or "" when it is a regular file. Asked before
-// opening: opening a FIFO would block until a writer came along.
-std::string not_a_sound_file(const std::string& path) {
-    std::error_code ec;
-    const auto st = std::filesystem::status(path, ec);
-    if (st.type() == std::filesystem::file_type::not_found) return "no such file";
-    if (ec) return ec.message();
-    if (!std::filesystem::is_regular_file(st)) return "not a regular file";
-    return "";
+std::span<const uint8_t> bytes_of(const std::string& s) {
+    return {reinterpret_cast<const uint8_t*>(s.data()), s.size()};
 }
 
-// The first bytes of a sound file (up to kSoundHeaderBytes: the whole file
-// when it is no longer) and its last ones (up to kSoundTailBytes: an Ogg
-// stream's length is in its last page), what read_sound_header reads.
-struct SoundEnds {
-    std::vector<uint8_t> head, tail;
-    uint64_t size = 0;
-    // The last bytes: read again only when the head is not the whole file.
-    std::span<const uint8_t> last() const {
-        return head.size() < size ? std::span<const uint8_t>(tail)
-                                   : std::span<const uint8_t>(head).last(std::min(head.size(), kSoundTailBytes));
-    }
-};
-
-// Reads the ends of the file at `path`; "" or why it could not.
-std::string read_ends(const std::string& path, SoundEnds& e) {
-    std::ifstream in(path, std::ios::binary);
-    std::error_code ec;
-    e.size = std::filesystem::file_size(path, ec);
-    if (!in || ec) return "cannot be read";
-    e.head.resize(std::min<uint64_t>(e.size, kSoundHeaderBytes));
-    in.read(reinterpret_cast<char*>(e.head.data()), std::streamsize(e.head.size()));
-    if (e.head.size() < e.size) {
-        e.tail.resize(std::min<uint64_t>(e.size, kSoundTailBytes));
-        in.seekg(std::streamoff(e.size - e.tail.size()));
-        in.read(reinterpret_cast<char*>(e.tail.data()), std::streamsize(e.tail.size()));
-    }
-    return in ? "" : "reading it failed";
+// The whole of the `kind` ("sound", "music") file at `path`, which must be a
+// regular file of at most `max_bytes` (its bound, named by `limit_name`);
+// else RenderError naming the file.
+std::string read_whole(const char* kind, const std::string& path, const BoundedFile& file, int64_t max_bytes,
+                       const char* limit_name) {
+    std::string error;
+    auto bytes = file.read_all(max_bytes, limit_name, error);
+    if (!bytes) throw RenderError(std::string(kind) + " " + path + ": " + error);
+    return std::move(*bytes);
 }
 
-// What SDL_mixer would allocate for the sound whose ends `e` holds, from
-// its header (read before anything is decoded); "" when it is within
-// kMaxSoundDecodedBytes, else why not.
-std::string too_big_or_lying(const SoundEnds& e) {
+BoundedFile open_file(const char* kind, const std::string& path) {
+    std::string error;
+    auto file = BoundedFile::open(path, error);
+    if (!file) throw RenderError(std::string(kind) + " " + path + ": " + error);
+    return std::move(*file);
+}
+
+// The header of the sound `file`, whose decoding — at its own rate, then as
+// the mixer holds it, at kFrequency, kOutputChannels of 16 bits — fits in
+// kMaxSoundDecodedBytes; else RenderError naming `path`. Read before
+// anything is decoded.
+SoundHeader checked_header(const std::string& path, const std::string& file) {
     SoundHeader h;
     std::string why;
-    if (!read_sound_header(e.head, e.last(), e.size, h, why)) return why;
-    // Resampled to kFrequency, kOutputChannels of 16 bits: the decoded size.
-    const double decoded = double(h.frames) * kFrequency / double(h.rate) * kOutputChannels * 2;
+    if (!read_sound_header(bytes_of(file), h, why)) throw RenderError("sound " + path + ": " + why);
+    const double native = double(h.frames) * double(h.channels) * double(h.decoded_sample_bytes);
+    const double mixed = double(h.frames) * kFrequency / double(h.rate) * kOutputChannels * 2;
+    const double decoded = std::max(native, mixed);
     if (decoded > double(kMaxSoundDecodedBytes))
-        return std::string("its ") + h.format + " header declares " + std::to_string(h.frames) + " samples at " +
-               std::to_string(h.rate) + " Hz, " + std::to_string(int64_t(decoded) >> 20) +
-               " MiB decoded, more than the limit of " + std::to_string(kMaxSoundDecodedBytes >> 20) + " MiB";
-    return "";
+        throw RenderError("sound " + path + ": its " + h.format + " header declares " + std::to_string(h.frames) +
+                          " samples at " + std::to_string(h.rate) + " Hz, " + std::to_string(int64_t(decoded) >> 20) +
+                          " MiB decoded, more than the limit of " + std::to_string(kMaxSoundDecodedBytes >> 20) +
+                          " MiB");
+    return h;
 }
 
-// Why the music file whose ends `e` holds cannot be streamed, or "": a WAV
-// or an Ogg (by its magic) must have a sound header, though not a short
-// one; other formats (MP3 …) are left to SDL_mixer, which names its own
-// reason.
-std::string bad_music_header(const SoundEnds& e) {
-    auto magic = [&](const char* m) { return e.head.size() >= 4 && std::memcmp(e.head.data(), m, 4) == 0; };
-    if (!magic("RIFF") && !magic("OggS")) return "";
-    SoundHeader h;
+void put_le(std::string& out, uint32_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) out.push_back(char(v >> (8 * i) & 0xff));
+}
+
+// The decoded Ogg `d` as a 16-bit PCM WAV in memory: what Mix_LoadWAV_RW
+// converts to the mixer's format.
+std::string as_wav(const DecodedOgg& d) {
+    const auto data_bytes = uint32_t(d.samples.size() * 2);
+    std::string w = "RIFF";
+    w.reserve(44 + data_bytes);
+    put_le(w, 36 + data_bytes, 4);
+    w += "WAVEfmt ";
+    put_le(w, 16, 4);
+    put_le(w, 1, 2);  // PCM
+    put_le(w, uint32_t(d.channels), 2);
+    put_le(w, uint32_t(d.rate), 4);
+    put_le(w, uint32_t(d.rate * d.channels * 2), 4);
+    put_le(w, uint32_t(d.channels * 2), 2);
+    put_le(w, 16, 2);
+    w += "data";
+    put_le(w, data_bytes, 4);
+    for (const int16_t v : d.samples) put_le(w, uint16_t(v), 2);
+    return w;
+}
+
+// The chunk of the sound `file` whose header `h` passed: a WAV decoded by
+// SDL_mixer, an Ogg here, stopping at the header's length (ogg_decode.hpp).
+Mix_Chunk* decode_sound(const std::string& path, const std::string& file, const SoundHeader& h) {
+    if (std::strcmp(h.format, "OGG") != 0) return Mix_LoadWAV_RW(SDL_RWFromConstMem(file.data(), int(file.size())), 1);
+    DecodedOgg decoded;
     std::string why;
-    return read_sound_header(e.head, e.last(), e.size, h, why) ? "" : why;
+    if (!decode_ogg(bytes_of(file), h.channels, h.rate, h.frames, decoded, why))
+        throw RenderError("sound " + path + ": " + why);
+    const std::string wav = as_wav(decoded);
+    decoded = {};
+    return Mix_LoadWAV_RW(SDL_RWFromConstMem(wav.data(), int(wav.size())), 1);
 }
 
-// The ends of the `kind` ("sound", "music") file at `path`, read once it is
-// known to be a regular file of a sound's size, and passed by `check`
-// (too_big_or_lying, bad_music_header); else RenderError naming the file.
-SoundEnds checked_ends(const char* kind, const std::string& path, std::string (*check)(const SoundEnds&)) {
-    SoundEnds e;
-    std::string why = not_a_sound_file(path);
-    if (why.empty()) why = read_ends(path, e);
-    if (why.empty()) why = check(e);
-    if (!why.empty()) throw RenderError(std::string(kind) + " " + path + ": " + why);
-    return e;
+// SDL_mixer's name for `format` (music_format.hpp): the decoder it is given
+// to, rather than one SDL_mixer guesses from the bytes again.
+Mix_MusicType mixer_type(const MusicFormat& format) {
+    const std::string_view n = format.name;
+    if (n == "Ogg") return MUS_OGG;
+    if (n == "WAV") return MUS_WAV;
+    if (n == "FLAC") return MUS_FLAC;
+    if (n == "MP3") return MUS_MP3;
+    if (n == "MIDI") return MUS_MID;
+    return MUS_MOD;
 }
 
 // Puts `item` under `name`, freeing what was there only now that the new
@@ -173,7 +184,7 @@ SoundBank::SoundBank(bool audible) {
 
 SoundBank::~SoundBank() {
     Mix_HaltMusic();
-    for (auto& [name, music] : music_) Mix_FreeMusic(music);
+    for (auto& [name, music] : music_) Mix_FreeMusic(music.music);
     for (auto& [name, chunk] : sounds_) Mix_FreeChunk(chunk);
     Mix_CloseAudio();
     Mix_Quit();
@@ -181,10 +192,10 @@ SoundBank::~SoundBank() {
 }
 
 void SoundBank::load(const std::string& name, const std::string& path) {
-    const SoundEnds e = checked_ends("sound", path, too_big_or_lying);
-    // The file is read once when the header read took all of it.
-    ChunkPtr chunk(e.head.size() == e.size ? Mix_LoadWAV_RW(SDL_RWFromConstMem(e.head.data(), int(e.head.size())), 1)
-                                           : Mix_LoadWAV(path.c_str()));
+    const std::string file = read_whole("sound", path, open_file("sound", path), kMaxSoundFileBytes,
+                                        "a sound file may hold");
+    const SoundHeader h = checked_header(path, file);
+    ChunkPtr chunk(decode_sound(path, file, h));
     if (!chunk) throw RenderError("sound " + path + ": " + Mix_GetError());
     if (int64_t(chunk->alen) > kMaxSoundDecodedBytes)  // a decoder that outgrew the header's claim
         throw RenderError("sound " + path + ": it decoded to " + std::to_string(chunk->alen >> 20) +
@@ -197,10 +208,29 @@ void SoundBank::load(const std::string& name, const std::string& path) {
 bool SoundBank::has(const std::string& name) const { return sounds_.contains(name); }
 
 void SoundBank::load_music(const std::string& name, const std::string& path) {
-    checked_ends("music", path, bad_music_header);
-    Mix_Music* music = Mix_LoadMUS(path.c_str());
+    const BoundedFile file = open_file("music", path);
+    std::string error;
+    const auto head = file.head(kMusicSniffBytes, error);
+    if (!head) throw RenderError("music " + path + ": " + error);
+    const MusicFormat* format = music_format(bytes_of(*head));
+    if (!format)
+        throw RenderError("music " + path + ": " +
+                          (head->empty() ? std::string("it is empty")
+                                         : std::string("it is not ") + kMusicFormatNames + " music"));
+    const std::string allowed = std::string("allowed ") + format->bound;
+    auto bytes = std::make_unique<const std::string>(read_whole("music", path, file, format->max_bytes, allowed.c_str()));
+    // A WAV or an Ogg must have a sound header, though not a short one:
+    // music streams, and is never decoded whole.
+    SoundHeader h;
+    if ((mixer_type(*format) == MUS_WAV || mixer_type(*format) == MUS_OGG) &&
+        !read_sound_header(bytes_of(*bytes), h, error))
+        throw RenderError("music " + path + ": " + error);
+    Mix_Music* music = Mix_LoadMUSType_RW(SDL_RWFromConstMem(bytes->data(), int(bytes->size())), mixer_type(*format), 1);
     if (!music) throw RenderError("music " + path + ": " + Mix_GetError());
-    replace_named(music_, name, music, Mix_FreeMusic);  // Mix_FreeMusic stops it first if it is playing
+    auto [it, added] = music_.try_emplace(name);
+    // Mix_FreeMusic stops the old music first if it is playing; its bytes go after it.
+    if (!added) Mix_FreeMusic(it->second.music);
+    it->second = {music, std::move(bytes)};
 }
 
 bool SoundBank::has_music(const std::string& name) const { return music_.contains(name); }
@@ -208,7 +238,7 @@ bool SoundBank::has_music(const std::string& name) const { return music_.contain
 bool SoundBank::play_music(const std::string& name, bool loop, int fade_in_ms) {
     const auto it = music_.find(name);
     if (it == music_.end()) return false;
-    if (audible_) Mix_FadeInMusic(it->second, loop ? -1 : 1, std::max(0, fade_in_ms));
+    if (audible_) Mix_FadeInMusic(it->second.music, loop ? -1 : 1, std::max(0, fade_in_ms));
     return true;
 }
 

@@ -3,6 +3,7 @@
 // played on a free channel; music is streamed from its file, one track at a
 // time.
 #pragma once
+#include <memory>
 #include <string>
 #include <unordered_map>
 
@@ -32,10 +33,12 @@ public:
     bool play(const std::string& name);
     bool audible() const { return audible_; }
 
-    // Opens `path` as the music `name` (streamed when played), replacing an
-    // earlier one of that name. Throws RenderError naming the file, as
-    // load() does; a WAV or OGG header is checked first, but not its length:
-    // music is never decoded whole.
+    // Opens `path` as the music `name` (decoded as it plays, from the file
+    // read whole), replacing an earlier one of that name. Throws RenderError
+    // naming the file, as load() does, for a format not recognised by its
+    // bytes (music_format.hpp) or a file larger than its format's bound; a
+    // WAV or OGG header is checked first, but not its length: music is never
+    // decoded whole.
     void load_music(const std::string& name, const std::string& path);
     bool has_music(const std::string& name) const;
     // Plays the named music instead of any other, once or looping, fading
@@ -49,7 +52,11 @@ public:
 
 private:
     std::unordered_map<std::string, Mix_Chunk*> sounds_;
-    std::unordered_map<std::string, Mix_Music*> music_;
+    struct Music {
+        Mix_Music* music = nullptr;
+        std::unique_ptr<const std::string> bytes;  // the file, which `music` reads as it plays
+    };
+    std::unordered_map<std::string, Music> music_;
     bool audible_ = false;
 };
 

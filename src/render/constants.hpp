@@ -31,6 +31,30 @@ constexpr int64_t kMaxImageFileBytes = kMaxImageDecodedBytes + (int64_t(1) << 20
 // WAV or OGG header can claim any length, and SDL_mixer decodes a sound
 // whole, so the claim is checked (sound_header.hpp) before it is believed.
 constexpr int64_t kMaxSoundDecodedBytes = int64_t(64) << 20;
+// The largest sound file read (whole, before decoding): as much as a sound
+// may decode to. An effect's file is KBs; one this large is a master
+// recording (384 kHz, 8 channels) to be converted first, and reading it
+// whole beside its decoded copy doubles what a sound may cost.
+constexpr int64_t kMaxSoundFileBytes = kMaxSoundDecodedBytes;
+
+// Music is read whole into memory when loaded and decoded from there as it
+// plays, so no decoder can read past what was checked; each format's file
+// is bounded by what that format holds (music_format.hpp tells them apart
+// by content). A 2.1 GB sparse MOD or MIDI file (4 KB on disk) used to
+// crash the decoder, and a 1 GB MIDI took 2 GB.
+// Streamed (Ogg Vorbis, WAV, FLAC, MP3), decoded a little at a time: 64 MiB
+// is about an hour of Ogg at 160 kb/s and six minutes of CD-quality WAV,
+// and is what a loaded track costs while it stays loaded.
+constexpr int64_t kMaxStreamedMusicBytes = int64_t(64) << 20;
+// Tracker modules (MOD, XM, S3M, IT): the patterns and samples of a real
+// one are KBs to a few MB; libmodplug copies the file and unpacks its
+// samples, so a module costs a few times its size, and 32 MiB keeps that
+// far below the machine while past any module released.
+constexpr int64_t kMaxModuleFileBytes = int64_t(32) << 20;
+// MIDI holds notes, not sound: a whole symphony is about 100 KB. Each event
+// becomes a decoder structure several times its size, which is how 1 GB of
+// MIDI took 2 GB; 4 MiB is forty symphonies.
+constexpr int64_t kMaxMidiFileBytes = int64_t(4) << 20;
 
 // The most draw-* calls one frame may queue: 262 144 is hundreds of times
 // what a 640 × 360 picture can show (a 16 px sprite on every cell is 900),

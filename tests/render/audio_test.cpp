@@ -3,9 +3,13 @@
 // tests/data/sounds/tone.ogg (made by make_tone.py there).
 #include <doctest/doctest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdint>
+#include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,7 +18,9 @@
 #include <SDL_mixer.h>
 
 #include "audio.hpp"
+#include "constants.hpp"
 #include "render_error.hpp"
+#include "sound_header.hpp"
 
 namespace {
 
@@ -82,8 +88,100 @@ std::string load_error(SoundBank& bank, const std::string& name, const std::stri
     return error_of([&] { bank.load(name, path); });
 }
 
+std::string music_error(SoundBank& bank, const std::string& name, const std::string& path) {
+    return error_of([&] { bank.load_music(name, path); });
+}
+
 bool contains(const std::string& s, const std::string& part) {
     return s.find(part) != std::string::npos;
+}
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The peak resident memory, in kB, that a child process gains running fn
+// (its peak reset first): what fn allocated at most, give or take a page.
+long child_peak_kb(void (*fn)()) {
+    int fds[2];
+    REQUIRE(pipe(fds) == 0);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        std::ofstream("/proc/self/clear_refs") << "5";  // resets VmHWM to the current RSS
+        auto kb = [](const char* key) {
+            std::ifstream in("/proc/self/status");
+            std::string line;
+            while (std::getline(in, line))
+                if (line.rfind(key, 0) == 0) return std::stol(line.substr(std::strlen(key)));
+            return -1L;
+        };
+        const long before = kb("VmRSS:");
+        fn();
+        const long grew = kb("VmHWM:") - before;
+        (void)!write(fds[1], &grew, sizeof grew);
+        _exit(0);
+    }
+    close(fds[1]);
+    long grew = -1;
+    (void)!read(fds[0], &grew, sizeof grew);
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return grew;
+}
+
+// An IMA-ADPCM mono WAV of `blocks` blocks of 256 bytes (a 4-byte header,
+// then 504 4-bit samples: 505 frames a block), at `rate`; the samples are
+// silence. What SDL decodes it to is 505 frames a block, where a count of
+// bytes over the block size gives one.
+std::string ima_wav(uint32_t blocks, uint32_t rate = 44100) {
+    const uint32_t data_bytes = blocks * 256;
+    std::string w = "RIFF";
+    put_le(w, 4 + 28 + 8 + data_bytes, 4);
+    w += "WAVEfmt ";
+    put_le(w, 20, 4);
+    put_le(w, 0x11, 2);  // IMA ADPCM
+    put_le(w, 1, 2);     // mono
+    put_le(w, rate, 4);
+    put_le(w, rate * 256 / 505, 4);
+    put_le(w, 256, 2);   // block align
+    put_le(w, 4, 2);     // bits per sample
+    put_le(w, 2, 2);     // extra bytes
+    put_le(w, 505, 2);   // samples per block
+    w += "data";
+    put_le(w, data_bytes, 4);
+    w.append(data_bytes, '\0');
+    return w;
+}
+
+// The Ogg page CRC (polynomial 0x04C11DB7, unreflected, from 0, the CRC
+// field read as zero), bit by bit: a forged page must carry a right one.
+uint32_t ogg_crc(const std::string& page) {
+    uint32_t crc = 0;
+    for (size_t i = 0; i < page.size(); ++i) {
+        crc ^= uint32_t(uint8_t(i >= 22 && i < 26 ? 0 : page[i])) << 24;
+        for (int k = 0; k < 8; ++k) crc = crc & 0x80000000u ? crc << 1 ^ 0x04C11DB7u : crc << 1;
+    }
+    return crc;
+}
+
+// A whole Ogg page with no packet data: end of stream, `serial`, granule
+// position `granule`, a right CRC. 27 bytes and one empty segment.
+std::string forged_last_page(uint32_t serial, uint64_t granule) {
+    std::string p = "OggS";
+    p += '\0';
+    p += '\x04';  // end of stream
+    put_le(p, uint32_t(granule), 4);
+    put_le(p, uint32_t(granule >> 32), 4);
+    put_le(p, serial, 4);
+    put_le(p, 1000, 4);  // sequence number
+    put_le(p, 0, 4);     // CRC, set below
+    p += '\x01';        // one segment
+    p += '\0';          // of no bytes
+    const uint32_t crc = ogg_crc(p);
+    for (int i = 0; i < 4; ++i) p[22 + i] = char(crc >> (8 * i));
+    return p;
 }
 
 }  // namespace
@@ -130,20 +228,18 @@ TEST_CASE("what is not a sound file is refused, naming the path") {
 
     const std::string missing = tmp.file("missing.wav");
     CHECK(contains(load_error(bank, "s", missing), missing));
-    CHECK(contains(load_error(bank, "s", missing), "no such file"));
+    CHECK(load_error(bank, "s", missing) == "sound " + missing + ": No such file or directory");
 
     const std::string dir = tmp.file("folder.wav");
     fs::create_directory(dir);
-    CHECK(contains(load_error(bank, "s", dir), dir));
-    CHECK(contains(load_error(bank, "s", dir), "not a regular file"));
+    CHECK(load_error(bank, "s", dir) == "sound " + dir + ": is a directory");
 
     // Opening a FIFO with no writer would block: it must be refused unopened.
     const std::string fifo = tmp.file("pipe.wav");
     REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-    CHECK(contains(load_error(bank, "s", fifo), fifo));
-    CHECK(contains(load_error(bank, "s", fifo), "not a regular file"));
+    CHECK(load_error(bank, "s", fifo) == "sound " + fifo + ": is not a regular file (a FIFO)");
 
-    CHECK(contains(load_error(bank, "s", "/dev/zero"), "/dev/zero"));
+    CHECK(load_error(bank, "s", "/dev/zero") == "sound /dev/zero: is not a regular file (a character device)");
 
     const std::string text = tmp.file("notes.wav");
     std::ofstream(text) << "these are not the samples you are looking for\n";
@@ -200,6 +296,82 @@ TEST_CASE("a sound whose header lies is refused from the header, naming the file
     CHECK_FALSE(bank.has("s"));
 }
 
+TEST_CASE("an IMA-ADPCM WAV counts 505 frames a block: an honest one loads whole, a long one is refused unread") {
+    TempDir tmp;
+    SoundBank bank(false);
+    ds::render::SoundHeader h;
+    std::string why;
+    const std::string small = ima_wav(10);
+    REQUIRE(ds::render::read_sound_header({reinterpret_cast<const uint8_t*>(small.data()), small.size()}, h, why));
+    CHECK(h.frames == 5050);
+    // SDL_mixer agrees: 5050 frames at 44.1 kHz, as 2 channels of 2 bytes.
+    Mix_Chunk* chunk = Mix_LoadWAV_RW(SDL_RWFromConstMem(small.data(), int(small.size())), 1);
+    REQUIRE(chunk != nullptr);
+    CHECK(chunk->alen == 5050 * 4);
+    Mix_FreeChunk(chunk);
+    std::ofstream(tmp.file("small.wav"), std::ios::binary) << small;
+    bank.load("small", tmp.file("small.wav"));
+    CHECK(bank.has("small"));
+    // 40 000 blocks: 10 MB of file, 20.2 million frames, 77 MiB decoded; a
+    // count of blocks (40 000 frames) let it through to the decoder.
+    const std::string big = tmp.file("big.wav");
+    std::ofstream(big, std::ios::binary) << ima_wav(40000);
+    const auto start = std::chrono::steady_clock::now();
+    CHECK(load_error(bank, "s", big) ==
+          "sound " + big + ": its WAV header declares 20200000 samples at 44100 Hz, 77 MiB decoded, more than the "
+                           "limit of 64 MiB");
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(1));
+    CHECK_FALSE(bank.has("s"));
+}
+
+TEST_CASE("a WAV of an encoding not counted is refused naming it") {
+    TempDir tmp;
+    SoundBank bank(false);
+    std::string mp3 = ima_wav(1);
+    mp3[20] = 0x55;  // WAVE_FORMAT_MPEGLAYER3
+    mp3[21] = 0;
+    const std::string path = tmp.file("mp3.wav");
+    std::ofstream(path, std::ios::binary) << mp3;
+    CHECK(load_error(bank, "s", path) ==
+          "sound " + path + ": its WAV encoding 85 is none the loader counts (PCM, float, A-law, µ-law, MS and IMA "
+                            "ADPCM)");
+}
+
+TEST_CASE("an OGG whose last page lies is refused: a corrupt one by the check, a forged one by the capped decoder") {
+    TempDir tmp;
+    SoundBank bank(false);
+    const std::string ogg = read_bytes(std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
+    // The audit's trick: a page header claiming one sample, appended without a CRC.
+    std::string junk = forged_last_page(1, 1);
+    junk[22] ^= 0x5a;
+    const std::string appended = tmp.file("appended.ogg");
+    std::ofstream(appended, std::ios::binary) << ogg << junk;
+    CHECK(load_error(bank, "s", appended) ==
+          "sound " + appended + ": its last Ogg page is missing or corrupt (the file is cut short or has bytes after "
+                                "its end)");
+    CHECK(music_error(bank, "m", appended) == "music " + appended +
+                                                  ": its last Ogg page is missing or corrupt (the file is cut short "
+                                                  "or has bytes after its end)");
+    // A page forged whole (right CRC, the stream's serial, end of stream)
+    // passes the check, claiming one sample; the decoder stops past it.
+    const std::string forged = tmp.file("forged.ogg");
+    std::ofstream(forged, std::ios::binary) << ogg << forged_last_page(1, 1);
+    CHECK(load_error(bank, "s", forged) == "sound " + forged + ": it decodes to more than the 1 samples its last Ogg "
+                                                               "page declares");
+    const std::string other = tmp.file("other-stream.ogg");
+    std::ofstream(other, std::ios::binary) << ogg << forged_last_page(7, 1);
+    CHECK(load_error(bank, "s", other) == "sound " + other + ": its last Ogg page belongs to another stream "
+                                                             "(chained Ogg files are not read)");
+    CHECK_FALSE(bank.has("s"));
+    // The honest file: its claim is its length.
+    ds::render::SoundHeader h;
+    std::string why;
+    REQUIRE(ds::render::read_sound_header({reinterpret_cast<const uint8_t*>(ogg.data()), ogg.size()}, h, why));
+    CHECK(h.frames == 6615);
+    bank.load("tone", std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
+    CHECK(bank.has("tone"));
+}
+
 TEST_CASE("a truncated or corrupt OGG is refused naming the file") {
     TempDir tmp;
     SoundBank bank(false);
@@ -246,10 +418,6 @@ TEST_CASE("the demos' sound effects all decode") {
 }
 
 // ---- music
-
-std::string music_error(SoundBank& bank, const std::string& name, const std::string& path) {
-    return error_of([&] { bank.load_music(name, path); });
-}
 
 // A bank that really mixes, on SDL's dummy device (no sound card needed):
 // music is only started on an audible bank.
@@ -307,8 +475,8 @@ TEST_CASE("what is no music file is refused naming the path, and the old music s
     TempDir tmp;
     SoundBank bank(false);
     const std::string missing = tmp.file("missing.ogg");
-    CHECK(music_error(bank, "m", missing) == "music " + missing + ": no such file");
-    CHECK(music_error(bank, "m", tmp.file("")) == "music " + tmp.file("") + ": not a regular file");
+    CHECK(music_error(bank, "m", missing) == "music " + missing + ": No such file or directory");
+    CHECK(music_error(bank, "m", tmp.file("")) == "music " + tmp.file("") + ": is a directory");
     std::ifstream in(std::string(DS_TEST_DATA) + "/sounds/tone.ogg", std::ios::binary);
     const std::string ogg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string stub = tmp.file("stub.ogg");
@@ -321,6 +489,112 @@ TEST_CASE("what is no music file is refused naming the path, and the old music s
     bank.load_music("m", std::string(DS_TEST_DATA) + "/sounds/tone.ogg");
     CHECK(contains(music_error(bank, "m", stub), stub));
     CHECK(bank.has_music("m"));  // the good one is still there
+}
+
+// A 31-sample "M.K." MOD: title, 31 sample headers (the first of 32 bytes
+// at full volume: libmodplug refuses a module with no sample), one position
+// playing pattern 0, the signature at byte 1080, that pattern (64 rows of 4
+// silent channels), then the sample. 2140 bytes.
+std::string tiny_mod() {
+    std::string m(20, 'T');
+    std::string sample(30, '\0');
+    sample[23] = 16;  // length: 16 words, big-endian
+    sample[25] = 64;  // volume
+    m += sample;
+    m.append(30 * 30, '\0');
+    m += '\x01';  // song length
+    m += '\x7f';  // restart byte
+    m.append(128, '\0');
+    m += "M.K.";
+    m.append(64 * 4 * 4, '\0');
+    m.append(32, '\0');
+    return m;
+}
+
+// A format-0 MIDI file: one track, one note of a quarter at 96 ticks a quarter.
+std::string tiny_midi() {
+    const std::string track = std::string("\x00\x90\x3c\x64\x60\x80\x3c\x00\x00\xff\x2f\x00", 12);
+    std::string m = "MThd";
+    m += std::string("\0\0\0\x06\0\0\0\x01\0\x60", 10);
+    m += "MTrk";
+    m += std::string("\0\0\0", 3) + char(track.size());
+    return m + track;
+}
+
+// `head` at the start of a sparse file of `size` bytes (a hole after it):
+// gigabytes that take a few KB of disk.
+std::string sparse_file(const TempDir& tmp, const std::string& name, const std::string& head, int64_t size) {
+    const std::string path = tmp.file(name);
+    std::ofstream(path, std::ios::binary) << head;
+    REQUIRE(truncate(path.c_str(), size) == 0);
+    return path;
+}
+
+TEST_CASE("music larger than its format's bound is refused from its size, unread, naming the file") {
+    TempDir tmp;
+    SoundBank bank(false);
+    constexpr int64_t k21GB = int64_t(2100) << 20;
+    const std::string xm_head = std::string("Extended Module: ") + std::string(60, 'x');
+    struct Case {
+        const char* name;
+        std::string head;
+        int64_t bound;
+        const char* allowed;
+    };
+    const Case cases[] = {{"big.mod", tiny_mod(), ds::render::kMaxModuleFileBytes, "for a tracker module"},
+                          {"big.xm", xm_head, ds::render::kMaxModuleFileBytes, "for a tracker module"},
+                          {"big.mid", tiny_midi(), ds::render::kMaxMidiFileBytes, "for MIDI"},
+                          {"big.ogg", read_bytes(std::string(DS_TEST_DATA) + "/sounds/tone.ogg"),
+                           ds::render::kMaxStreamedMusicBytes, "for streamed music"}};
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        const std::string path = sparse_file(tmp, c.name, c.head, k21GB);
+        const auto start = std::chrono::steady_clock::now();
+        CHECK(music_error(bank, "m", path) == "music " + path + ": is " + std::to_string(k21GB) +
+                                                  " bytes, more than the " + std::to_string(c.bound) + " bytes allowed " +
+                                                  c.allowed);
+        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(1));
+        // One byte past the bound is refused too; at the bound it is read.
+        REQUIRE(truncate(path.c_str(), c.bound + 1) == 0);
+        CHECK(contains(music_error(bank, "m", path), "is " + std::to_string(c.bound + 1) + " bytes, more than"));
+    }
+    CHECK_FALSE(bank.has_music("m"));
+}
+
+TEST_CASE("a 1 GB MIDI costs no memory: it is refused before it is read") {
+    static TempDir tmp;
+    static const std::string path = sparse_file(tmp, "huge.mid", tiny_midi(), int64_t(1) << 30);
+    const long kb = child_peak_kb([] {
+        SoundBank bank(false);
+        (void)music_error(bank, "m", path);
+    });
+    CAPTURE(kb);
+    CHECK(kb >= 0);
+    CHECK(kb < 16 * 1024);
+}
+
+TEST_CASE("music is recognised by its bytes: MOD and MIDI load, anything else is refused naming the formats") {
+    TempDir tmp;
+    SoundBank bank(false);
+    std::ofstream(tmp.file("tiny.mod"), std::ios::binary) << tiny_mod();
+    bank.load_music("mod", tmp.file("tiny.mod"));
+    CHECK(bank.has_music("mod"));
+    std::ofstream(tmp.file("tiny.mid"), std::ios::binary) << tiny_midi();
+    const std::string midi_error = music_error(bank, "midi", tmp.file("tiny.mid"));
+    // SDL_mixer plays MIDI only with a sound font or Timidity patches installed.
+    CHECK((midi_error == "(no error)" || contains(midi_error, "music " + tmp.file("tiny.mid") + ": ")));
+    // A 15-sample MOD (no signature), or any other bytes, is not guessed at.
+    std::string unsigned_mod = tiny_mod();
+    unsigned_mod.replace(1080, 4, "ABCD");
+    const std::string other = tmp.file("other.mod");
+    std::ofstream(other, std::ios::binary) << unsigned_mod;
+    CHECK(music_error(bank, "m", other) ==
+          "music " + other + ": it is not Ogg Vorbis, WAV, FLAC, MP3, MIDI, MOD, XM, S3M or IT music");
+    const std::string empty = tmp.file("empty.ogg");
+    std::ofstream{empty};
+    CHECK(music_error(bank, "m", empty) == "music " + empty + ": it is empty");
+    CHECK(music_error(bank, "m", "/dev/zero") == "music /dev/zero: is not a regular file (a character device)");
+    CHECK_FALSE(bank.has_music("m"));
 }
 
 }  // TEST_SUITE
