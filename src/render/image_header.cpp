@@ -43,16 +43,22 @@ bool png(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
 // global colour table of 3 × 2^(n+1) bytes follows when the top bit is
 // set), then blocks: extensions ('!', a label, sub-blocks of a length byte
 // and that many bytes, up to an empty one), image descriptors (',', left,
-// top, width, height) and the trailer (';'). SDL_image decodes the first
-// image alone, at its descriptor's size, whatever the screen's (a 35-byte
-// GIF with a 4x4 screen and a 65535x65535 image reached 4.1 GB); it skips
-// any other byte between blocks, and so does this walk.
+// top, width, height, flags: a local colour table likewise, then the LZW
+// code size) and the trailer (';'). SDL_image 2.6 decodes the first image
+// it can allocate, at that image's size, whatever the screen's (a 35-byte
+// GIF with a 4x4 screen and a 65535x65535 image reached 4.1 GB): it skips
+// any other byte between blocks, and an image whose code size is above 12
+// or whose width or height is 0, going on from the byte after the code
+// size. This walk does the same, so its size is the one SDL_image allocates.
+// A code size of 0 or 1, which no encoder writes, is refused: SDL_image's
+// LZW decoder then writes past its tables (found by fuzz_decode.cpp).
 bool gif(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
     if (b.size() < 13) {
         why = "its GIF header is cut short";
         return false;
     }
-    size_t i = 13 + (b[10] & 0x80 ? 3 * (size_t(2) << (b[10] & 7)) : 0);
+    const auto colour_table = [](uint8_t flags) { return flags & 0x80 ? 3 * (size_t(2) << (flags & 7)) : 0; };
+    size_t i = 13 + colour_table(b[10]);
     while (i < b.size()) {
         const uint8_t c = b[i++];
         if (c == ';') break;
@@ -61,8 +67,18 @@ bool gif(std::span<const uint8_t> b, ImageHeader& out, std::string& why) {
             while (i < b.size() && b[i] != 0) i += 1 + size_t(b[i]);
             ++i;  // the empty sub-block
         } else if (c == ',') {
-            if (i + 8 > b.size()) break;
-            return sized(out, "GIF", le16(b.data() + i + 4), le16(b.data() + i + 6), why);
+            if (i + 9 > b.size()) break;
+            const uint32_t w = le16(b.data() + i + 4), h = le16(b.data() + i + 6);
+            i += 9 + colour_table(b[i + 8]);
+            if (i >= b.size()) break;
+            const uint8_t code_size = b[i++];
+            if (code_size > 12 || w == 0 || h == 0) continue;
+            if (code_size < 2) {  // the GIF format's least is 2, for 1-bit pictures
+                why = "its GIF image has an LZW code size of " + std::to_string(code_size) +
+                      " (at least 2: SDL_image 2.6 corrupts its heap decoding less)";
+                return false;
+            }
+            return sized(out, "GIF", w, h, why);
         }
     }
     why = "its GIF data has no image (or is cut short before it)";

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <span>
+#include <string_view>
 
 #include "bounded_file.hpp"
 #include "constants.hpp"
@@ -90,7 +91,20 @@ ImageHeader checked_header(const std::string& path, const char* what, std::strin
         throw RenderError("refusing " + named + ": its " + h.format + " header declares " + size + ", " +
                           std::to_string(h.width * h.height * 4 >> 20) + " MiB decoded, more than the limit of " +
                           std::to_string(kMaxImageDecodedBytes >> 20) + " MiB");
+    // SDL_image 2.6's GIF decoder writes past its buffers on hostile LZW data
+    // whatever the header says (fuzz_decode.cpp found two such files in
+    // minutes; tests/fuzz/regressions/decode/crash-gif-*): a GIF is not
+    // handed to it. Tiled's tilesets are PNG; a GIF converts losslessly.
+    if (std::string_view(h.format) == "GIF")
+        throw RenderError("refusing " + named +
+                          ": GIF is not loaded (SDL_image's GIF decoder is unsafe on hostile files); convert it to PNG");
     return h;
+}
+
+// SDL_image's name for the format read_image_header found: the decoder it
+// is given to, rather than one it guesses from the bytes again.
+const char* sdl_image_type(const ImageHeader& h) {
+    return std::string_view(h.format) == "JPEG" ? "JPG" : h.format;
 }
 
 }  // namespace
@@ -125,7 +139,7 @@ SDL_Surface* TileArt::image(const std::string& path, const std::optional<MapColo
     const ImageHeader header = checked_header(path, what, file);
     // Decoded from the bytes checked: the file is read once, and SDL_image
     // cannot read more of it than was.
-    SDL_Surface* raw = IMG_Load_RW(SDL_RWFromConstMem(file.data(), int(file.size())), 1);
+    SDL_Surface* raw = IMG_LoadTyped_RW(SDL_RWFromConstMem(file.data(), int(file.size())), 1, sdl_image_type(header));
     if (!raw) throw RenderError(std::string("cannot read ") + what + " '" + path + "': " + IMG_GetError());
     if (raw->w != header.width || raw->h != header.height) {  // a decoder that disagrees with the header
         const std::string got = std::to_string(raw->w) + "x" + std::to_string(raw->h);

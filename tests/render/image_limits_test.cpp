@@ -118,10 +118,22 @@ TEST_CASE("read_image_header reads each format's declared size") {
     // the logical screen's (0x1234 x 0x0102 here); a comment extension and
     // a stray byte come before it.
     REQUIRE(read_image_header(bytes({'G', 'I', 'F', '8', '9', 'a', 0x34, 0x12, 0x02, 0x01, 0, 0, 0, '!', 0xFE, 2, 'h',
-                                     'i', 0, 0x07, ',', 0, 0, 0, 0, 0x04, 0x03, 0x06, 0x05, 0}),
+                                     'i', 0, 0x07, ',', 0, 0, 0, 0, 0x04, 0x03, 0x06, 0x05, 0, 2}),
                               h, why));
     CHECK(h.width == 0x0304);
     CHECK(h.height == 0x0506);
+    // Images SDL_image cannot allocate (an LZW code size above 12, a width
+    // of 0) are passed over, as it passes them, for the next.
+    REQUIRE(read_image_header(bytes({'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0, ',', 0, 0, 0, 0, 9, 0, 9, 0, 0,
+                                     13, ',', 0, 0, 0, 0, 0, 0, 9, 0, 0, 2, ',', 0, 0, 0, 0, 7, 0, 8, 0, 0, 2}),
+                              h, why));
+    CHECK(h.width == 7);
+    CHECK(h.height == 8);
+    // A code size below 2 crashes SDL_image 2.6's decoder: refused.
+    CHECK_FALSE(read_image_header(bytes({'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0, ',', 0, 0, 0, 0, 9, 0, 9,
+                                         0, 0, 1}),
+                                  h, why));
+    CHECK(why == "its GIF image has an LZW code size of 1 (at least 2: SDL_image 2.6 corrupts its heap decoding less)");
     // BMP with a 40-byte header and a negative (top-down) height.
     std::vector<uint8_t> bmp = bytes({'B', 'M', 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 40, 0, 0, 0, 0x20, 0, 0, 0,
                                       0xF0, 0xFF, 0xFF, 0xFF});
@@ -198,6 +210,16 @@ TEST_CASE("a GIF whose first image is a bomb behind a small screen is refused fr
     CAPTURE(kb);
     CHECK(kb >= 0);
     CHECK(kb < 16 * 1024);
+}
+
+TEST_CASE("a GIF is refused naming the file: SDL_image's GIF decoder is not safe on hostile files") {
+    // 1 x 1, a two-colour table, one pixel of LZW data: a valid GIF.
+    const std::string path = write_file(
+        "one.gif", bytes({'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0x80, 0, 0, 255, 255, 255, 0, 0, 0, ',', 0, 0, 0, 0,
+                          1, 0, 1, 0, 0, 2, 2, 0x44, 0x01, 0, ';'}));
+    CHECK(draw_error(map_on("one.gif", 1, 1)) ==
+          "refusing tileset image '" + path +
+              "': GIF is not loaded (SDL_image's GIF decoder is unsafe on hostile files); convert it to PNG");
 }
 
 TEST_CASE("an image file larger than an image can be, or not a regular file, is refused unread") {
