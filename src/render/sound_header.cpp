@@ -1,5 +1,6 @@
 #include "sound_header.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -45,7 +46,11 @@ bool wav_frames(uint32_t encoding, int64_t channels, int64_t bits, int64_t block
     case kMuLaw: {
         if (bits < 1 || bits > 64) return fail(why, "its WAV header declares " + std::to_string(bits) + " bits a sample");
         const int64_t sample = (bits + 7) / 8;
-        h.frames = int64_t(size / uint64_t(channels * sample));
+        // SDL counts frames by the block alignment, even one smaller than a
+        // frame (it then decodes more frames than the data holds): the
+        // smaller of the two divides.
+        const int64_t frame = block > 0 ? std::min(block, channels * sample) : channels * sample;
+        h.frames = int64_t(size / uint64_t(frame));
         h.decoded_sample_bytes = encoding == kALaw || encoding == kMuLaw ? 2 : sample == 3 ? 4 : sample;
         return true;
     }
