@@ -114,11 +114,13 @@ to 'screen (a HUD); the plate reaches 2 px beyond the text on every side."
          (scm-error 'misc-error who (string-append what " ~S: no such file") (list file) #f))))
 
 (define (load-music name file)
-  "Open FILE (OGG or WAV, MP3 where SDL_mixer reads it) as the music NAME, a
-symbol, for play-music. Music is streamed from the file while it plays, so
-a long track costs no memory up front. Headless runs open it too (a missing
-or unreadable file, or a WAV or OGG whose header is broken, is an error
-naming it at once) but play nothing."
+  "Open FILE as the music NAME, a symbol, for play-music: Ogg Vorbis, WAV,
+FLAC, MP3, MIDI, or a MOD, XM, S3M or IT module, recognised by its bytes
+(not its name). The file is read whole, within its format's bound (64 MiB
+streamed, 32 MiB a module, 4 MiB MIDI: docs/limits.org, \"Music\"), and
+decoded from memory as it plays. Headless runs open it too (a missing,
+unreadable or oversized file, another format, or a WAV or OGG whose
+header is broken, is an error naming it at once) but play nothing."
   (if (renderer-available?)
       (%load-music name file)
       (check-sound-file "load-music" "music" name file)))
@@ -126,8 +128,9 @@ naming it at once) but play nothing."
 (define (load-sound name file)
   "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.
 Headless runs decode it too (so a bad file is found at once) but play
-nothing. A missing, unreadable or undecodable file is an error naming it.
-In a build without the renderer it only checks that FILE is a file."
+nothing. A missing, unreadable or undecodable file, or one past the
+bounds of docs/limits.org (\"Sounds\"), is an error naming it. In a build
+without the renderer it only checks that FILE is a file."
   (cond ((renderer-available?) (%load-sound name file))
         ((not (symbol? name))
          (scm-error 'wrong-type-arg "load-sound" "name: expected a symbol, got ~S" (list name) #f))
