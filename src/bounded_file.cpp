@@ -21,11 +21,11 @@ const char* kind_of(mode_t mode) {
     return "not a file";
 }
 
-// Why a file of `mode` is not read, or nullptr for a regular file.
-const char* refused(mode_t mode, std::string& error) {
-    if (S_ISREG(mode)) return nullptr;
+// False for a regular file; else true, with `error` saying what it is.
+bool refused(mode_t mode, std::string& error) {
+    if (S_ISREG(mode)) return false;
     error = S_ISDIR(mode) ? std::string("is a directory") : std::string("is not a regular file (") + kind_of(mode) + ")";
-    return error.c_str();
+    return true;
 }
 
 // Reads into `out` from `offset` until `limit` bytes are there or the file

@@ -20,6 +20,7 @@ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDOWNSTROKE_SANITIZE=ON 
 targets=(downstroke downstroke-core-tests downstroke-bindings-tests
          downstroke-replay-tmx downstroke-replay-tsx downstroke-replay-plist downstroke-replay-image)
 # (grep reads all of make's list: -q would end the pipe early, and pipefail fail it)
-cmake --build "$dir" --target help | grep downstroke-render-tests >/dev/null && targets+=(downstroke-render-tests downstroke-tiled-oracle)
+cmake --build "$dir" --target help | grep downstroke-render-tests >/dev/null &&
+  targets+=(downstroke-render-tests downstroke-tiled-oracle downstroke-replay-decode)
 cmake --build "$dir" -j"$jobs" --target "${targets[@]}"
 ctest --test-dir "$dir" -j"$jobs" --output-on-failure -R "$tests" "$@"

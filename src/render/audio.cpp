@@ -73,6 +73,8 @@ std::string read_whole(const char* kind, const std::string& path, const BoundedF
     return std::move(*bytes);
 }
 
+// The file at `path`, opened by the bounded reader (a regular file, without
+// blocking); else RenderError naming it as a `kind` file.
 BoundedFile open_file(const char* kind, const std::string& path) {
     std::string error;
     auto file = BoundedFile::open(path, error);
@@ -104,7 +106,8 @@ void put_le(std::string& out, uint32_t v, int bytes) {
 }
 
 // The decoded Ogg `d` as a 16-bit PCM WAV in memory: what Mix_LoadWAV_RW
-// converts to the mixer's format.
+// converts to the mixer's format. A copy, so an Ogg sound briefly takes
+// twice its decoded size, both within the bound the header was checked by.
 std::string as_wav(const DecodedOgg& d) {
     const auto data_bytes = uint32_t(d.samples.size() * 2);
     std::string w = "RIFF";
@@ -150,7 +153,7 @@ Mix_MusicType mixer_type(const MusicFormat& format) {
 }
 
 // Puts `item` under `name`, freeing what was there only now that the new
-// one is loaded (free_item: Mix_FreeChunk, Mix_FreeMusic).
+// one is loaded (free_item: Mix_FreeChunk).
 template <typename T>
 void replace_named(std::unordered_map<std::string, T*>& items, const std::string& name, T* item,
                    void (*free_item)(T*)) {
@@ -176,7 +179,8 @@ SoundBank::SoundBank(bool audible) {
     if (!audible_ && !open_mixer("dummy"))
         throw RenderError(std::string("audio: cannot open even the dummy driver: ") +
                           SDL_GetError());
-    // Without OGG support WAV still loads; an OGG file then fails in load()
+    // Without SDL_mixer's OGG support sounds still load (Ogg sounds are
+    // decoded here, ogg_decode.hpp); OGG music then fails in load_music()
     // with SDL_mixer's own reason, which is the better place to hear it.
     Mix_Init(MIX_INIT_OGG);
     Mix_AllocateChannels(kMixChannels);

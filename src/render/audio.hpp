@@ -1,7 +1,8 @@
-// Sounds and music by name through SDL_mixer: WAV and OGG (anything SDL_mixer
-// decodes; MP3 too where it was built with it). A sound is decoded whole and
-// played on a free channel; music is streamed from its file, one track at a
-// time.
+// Sounds and music by name through SDL_mixer. A sound (WAV or OGG) is
+// decoded whole and played on a free channel; music (music_format.hpp) is
+// read whole when loaded and decoded from those bytes as it plays, one
+// track at a time. Every file is read by the bounded reader and checked
+// against its bound (constants.hpp) before anything is decoded.
 #pragma once
 #include <memory>
 #include <string>

@@ -16,10 +16,10 @@ struct ImageHeader {
 };
 
 // The header of the image whose file is `bytes` (the loader reads it whole;
-// a JPEG's size may come after its metadata, a GIF's first image after its
-// extensions). False, with `why`
-// saying what is wrong, for a file that is none of the four formats, is cut
-// short before its size, or declares a size that is not positive.
+// a JPEG's size may come after its metadata, a GIF's image after its
+// extensions). False, with `why` saying what is wrong, for a file that is
+// none of the four formats, is cut short before its size, or declares a
+// size that is not positive (a GIF: has no image SDL_image would decode).
 bool read_image_header(std::span<const uint8_t> bytes, ImageHeader& out, std::string& why);
 
 }  // namespace ds::render
