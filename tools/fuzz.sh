@@ -3,7 +3,7 @@
 # sanitizers"). Uses the main build (build/, configured with clang++ and
 # libclang-rt-14-dev installed).
 #
-#   tools/fuzz.sh TARGET MINUTES [JOBS]   fuzz TARGET (tmx, tsx, plist) for MINUTES,
+#   tools/fuzz.sh TARGET MINUTES [JOBS]   fuzz TARGET (tmx, tsx, plist, image, decode) for MINUTES,
 #                                         in JOBS parallel processes (default 1)
 #   tools/fuzz.sh replay TARGET FILE…     run TARGET's entry point on FILEs, no
 #                                         fuzzing (plist: shows the entities built)
@@ -28,7 +28,7 @@ fi
 
 (($# == 2 || $# == 3)) || usage
 target=$1 minutes=$2 jobs=${3:-1}
-case $target in tmx|tsx|plist) ;; *) usage ;; esac
+case $target in tmx|tsx|plist|image|decode) ;; *) usage ;; esac
 [[ $minutes =~ ^[1-9][0-9]*$ && $jobs =~ ^[1-9][0-9]*$ ]] || usage  # 0 minutes would be -max_total_time=0: no limit
 if [ ! -f "$fuzz_dir/$target.args" ]; then
   echo "fuzz.sh: no libFuzzer build in $build/ (configure says why: look for 'libFuzzer targets')" >&2

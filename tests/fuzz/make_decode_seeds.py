@@ -56,8 +56,8 @@ def gifs():
            + b"!\xf9\x04\x01\x00\x00\x00\x00" + b"," + struct.pack("<HHHH", 0, 0, 1, 1) + b"\x00"
            + b"\x02\x02\x44\x01\x00" + b";")
     yield "one-pixel.gif", one
-    # A 2 x 2 screen whose first image is 1 x 1 at (1, 1): SDL_image sizes
-    # the picture by the image, not the screen.
+    # A 2 x 2 screen whose first image is 1 x 1: SDL_image sizes the picture
+    # by the image, not the screen.
     yield "offset-image.gif", one[:6] + struct.pack("<HH", 2, 2) + one[10:]
 
 
