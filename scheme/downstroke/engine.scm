@@ -224,9 +224,9 @@ runs and captures draw the stepped state."
                (list min-stack-limit max-stack-limit stack-limit) #f))
   ;; dt is frame-delay ms, and the window's clock divides by it: a frame
   ;; takes some time, and time runs forwards.
-  (unless (and (real? frame-delay) (> frame-delay 0) (not (inf? frame-delay)))
-    (scm-error 'wrong-type-arg "make-game" "frame-delay: expected a finite number of ms > 0, got ~S"
-               (list frame-delay) #f))
+  (unless (and (real? frame-delay) (not (nan? frame-delay)) (< 0 frame-delay) (<= frame-delay max-frame-delay))
+    (scm-error 'wrong-type-arg "make-game" "frame-delay: expected a number of ms > 0 and at most ~a (a minute), got ~S"
+               (list max-frame-delay frame-delay) #f))
   (check-input-script "make-game" input-script)
   (check-scene-or-false "make-game" scene)
   (for-each (lambda (what proc) (check-procedure-or-false "make-game" what proc))
@@ -354,9 +354,17 @@ every game run from now on, after the hooks added before it."
 (define frame-pacing (make-parameter #f))
 
 (define (wait-until deadline)
+  ;; usleep takes an exact count of µs: a deadline off a flonum frame-delay
+  ;; is rounded to one.
   (let ((now (get-internal-real-time)))
     (when (< now deadline)
-      (usleep (quotient (* (- deadline now) 1000000) internal-time-units-per-second)))))
+      (usleep (round (/ (* (- (inexact->exact deadline) now) 1000000) internal-time-units-per-second))))))
+
+(define (step-ticks game)
+  ;; One step in internal time units, exact (a flonum frame-delay taken as
+  ;; the exact number it is): the loops' deadlines and counts of steps due
+  ;; are then exact integers, as usleep and the step loop need.
+  (* (inexact->exact (game-frame-delay game)) (/ internal-time-units-per-second 1000)))
 
 ;; A game that runs for hours must not keep every sound it ever played.
 (define *sounds-kept* 4096)
@@ -720,6 +728,10 @@ game-capture, a capture run or a window)."
 (define max-game-pixels (expt 2 26))          ; the renderer's kMaxCanvasPixels
 (define min-stack-limit (* 1024 1024))        ; below this the engine's own calls may not fit
 (define max-stack-limit (* 4 1024 1024 1024)) ; past this the bound no longer bounds memory
+;; A step longer than a minute is a typo (seconds written for ms), and a
+;; paced loop sleeps a step at a time: a REPL served into the game answers
+;; only between two steps.
+(define max-frame-delay 60000)
 
 (define (call-bounded game what thunk)
   ;; (THUNK) with at most the game's stack-limit of stack: past it, a
@@ -863,7 +875,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
 
 (define (run-headless! game frames capture-dir)
   (let ((dt (game-frame-delay game))
-        (tick (* (game-frame-delay game) (/ internal-time-units-per-second 1000)))
+        (tick (step-ticks game))
         (start (get-internal-real-time)))
     (let loop ((ticks 0))
       (run-frame-hooks! game)
@@ -900,7 +912,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
   ;; a step the clock holds), so motion is smooth at 60, 75, 120 or 144 Hz.
   (let* ((display (game-display game))
          (dt (game-frame-delay game))
-         (tick (* dt (/ internal-time-units-per-second 1000))))
+         (tick (step-ticks game)))
     (when (window-fullscreen) (%display-set-fullscreen! display #t))
     (%display-open-window! display (game-title game) (window-scale))
     (%open-audio! #t)

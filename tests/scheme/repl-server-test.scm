@@ -508,6 +508,23 @@ In procedure frame hook: the hook ran past the 2 s limit (--repl-timeout): inter
 (test-equal "that game ends by itself as well" 0 (stop-served (car tcp-game) tcp-client))
 (close-port tcp-client)
 
+;;; A served game is paced: its loop sleeps between frames. A flonum or a
+;;; fraction frame-delay: used to end it on its first frame with usleep's
+;;; "Wrong type (expecting exact integer)" (issue 45).
+(define flonum-script (string-append dir "/flonum-delay.scm"))
+(call-with-output-file flonum-script
+  (lambda (p)
+    (write '(for-each (lambda (delay)
+                        (let ((g (make-game frame-delay: delay)))
+                          (game-run! g frames: 5)
+                          (format #t "~a: ~a frames~%" delay (game-frame g))))
+                      '(16.5 50/3))
+           p)))
+(test-equal "a served game with a flonum or a fraction frame-delay runs its frames"
+  '(0 . "16.5: 5 frames\n50/3: 5 frames\n")
+  (run-joined "--no-auto-compile" "--repl-server" (string-append dir "/flonum.sock") flonum-script))
+(delete-file flonum-script)
+
 ;;; Options, and the game without a server.
 (test-assert "--help documents --repl-timeout"
   (string-contains (cdr (run-joined "--help")) "--repl-timeout S"))
