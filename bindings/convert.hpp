@@ -34,11 +34,13 @@ void fail_arg(Failure& f, Arg a, SCM v, const char* what, ...) __attribute__((fo
 // aabb-overlap? converts eight per call.
 inline bool from_scm(SCM v, double& out, Arg a, Failure& f, const char* what = "a finite real number") {
     Num n;
-    if (num_from_scm(v, n) == NumCheck::Ok) [[likely]] {
+    const NumCheck c = num_from_scm(v, n);
+    if (c == NumCheck::Ok) [[likely]] {
         out = n.v;
         return true;
     }
-    fail_arg(f, a, v, "%s", what);
+    if (c == NumCheck::OutOfRange) fail_arg(f, a, v, "%s %s", what, kDoubleRange);
+    else fail_arg(f, a, v, "%s", what);
     return false;
 }
 // An exact integer in [lo, hi]; `what` (say "a positive exact integer")

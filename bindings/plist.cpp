@@ -33,6 +33,10 @@ bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
         case NumCheck::NotFinite:
             fail(f, "wrong-type-arg", scm_list_2(key, value), "entity key ~S: expected a finite number, got ~S");
             return false;
+        case NumCheck::OutOfRange:
+            fail(f, "out-of-range", scm_list_2(key, value), "entity key ~S: expected a number %s, got ~S",
+                 kDoubleRange);
+            return false;
     }
     return false;
 }

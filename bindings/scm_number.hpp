@@ -9,11 +9,19 @@
 
 namespace ds::guile {
 
-enum class NumCheck { Ok, NotReal, NotFinite };
+// OutOfRange: an exact number too large for a double (a bignum such as
+// (expt 10 400)), which is finite, so "expected a finite number" would
+// puzzle; its message says the range instead (kDoubleRange).
+enum class NumCheck { Ok, NotReal, NotFinite, OutOfRange };
+
+// The range an exact number must lie in, as messages state it: the core
+// computes in doubles, whose largest is about 1.8e308.
+inline constexpr const char* kDoubleRange = "between -1.8e308 and 1.8e308 (a double's range)";
 
 // Exact integers stay exact at any size (beyond 2^53 they are rounded to the
 // nearest double, as the core computes in double: semantics §1); exact non-integer
-// rationals and flonums become flonums. Non-reals and NaN/±inf are refused.
+// rationals and flonums become flonums. Non-reals and NaN/±inf are refused,
+// and exact numbers past a double's range.
 inline NumCheck num_from_scm(SCM v, Num& out) {
     if (SCM_I_INUMP(v)) {
         out = Num::integer(static_cast<double>(SCM_I_INUM(v)));
@@ -23,7 +31,7 @@ inline NumCheck num_from_scm(SCM v, Num& out) {
     if (SCM_REALP(v)) d = SCM_REAL_VALUE(v);
     else if (scm_is_real(v)) d = scm_to_double(v);
     else return NumCheck::NotReal;
-    if (!std::isfinite(d)) return NumCheck::NotFinite;
+    if (!std::isfinite(d)) return SCM_REALP(v) ? NumCheck::NotFinite : NumCheck::OutOfRange;
     out = {d, scm_is_exact_integer(v) != 0};
     return NumCheck::Ok;
 }

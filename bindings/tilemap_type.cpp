@@ -173,8 +173,10 @@ SCM load_tilemap(SCM path, SCM solid_gids, SCM max_cells, SCM max_bytes, SCM str
 }
 
 bool positive_int(SCM v, const char* what, int& out, Failure& f) {
-    // The range an int holds safely; map_size_problem then applies the map limits.
-    return from_scm(v, out, what, f, 1, 1 << 24, "a positive exact integer");
+    // The range an int holds safely, said in the message (a refusal of
+    // 2^31 − 1 as "not positive" would puzzle); map_size_problem then
+    // applies the map limits.
+    return from_scm(v, out, what, f, 1, 1 << 24);
 }
 
 SCM make_tilemap(SCM width, SCM height, SCM tile_w, SCM tile_h, SCM cells, SCM solid_gids, SCM one_way_gids,

@@ -78,7 +78,6 @@
     (game-engine-update . "What GAME runs before its update each frame: default-engine-update, #f, or your procedure (game dt).")
     (game-engine-update-set! . "Replace what GAME runs before its update each frame (a procedure (game dt), or #f for nothing).")
     (game-collision-mode . "'swept or 'discrete: the collision mode GAME's physics runs in (see collision-mode).")
-    (game-collision-mode-set! . "Run GAME's physics in MODE ('swept or 'discrete) from the next frame on.")
     (game-substeps . "How many sub-frames GAME splits each physics frame into (1: none).")
     (game-resting-contacts? . "Whether GAME's physics keeps stacks at rest (see resting-contacts?).")
     (game-resting-contacts-set! . "Turn GAME's resting contacts on (#t) or off (#f) from the next frame on.")

@@ -75,7 +75,7 @@ picture (or there is no window, and the input script holds no mouse)."
   (update game-update %game-update-set!)
   (render game-render)
   (engine-update game-engine-update %game-engine-update-set!)
-  (collision-mode game-collision-mode game-collision-mode-set!)
+  (collision-mode game-collision-mode %game-collision-mode-set!)
   (substeps game-substeps %game-substeps-set!)
   (resting-contacts game-resting-contacts? game-resting-contacts-set!)
   (input game-input game-input-set!)
@@ -169,6 +169,21 @@ collision mode, substeps and resting contacts."
   (check-procedure-or-false "game-engine-update-set!" "engine-update" engine-update)
   (%game-engine-update-set! game engine-update))
 
+;; Checked where it is given, not first in a frame, where the error would
+;; name the collision-mode parameter and come frames after the typo.
+(define collision-modes '(swept discrete))
+
+(define (check-collision-mode who mode)
+  (unless (memq mode collision-modes)
+    (scm-error 'wrong-type-arg who "collision-mode: expected one of ~S, got ~S"
+               (list collision-modes mode) #f)))
+
+(define (game-collision-mode-set! game mode)
+  "Make MODE ('swept or 'discrete) GAME's collision mode from the next frame on."
+  (check-game "game-collision-mode-set!" game)
+  (check-collision-mode "game-collision-mode-set!" mode)
+  (%game-collision-mode-set! game mode))
+
 (define (check-substeps who k)
   (unless (and (exact-integer? k) (<= 1 k %max-substeps))
     (scm-error 'wrong-type-arg who "substeps: expected an exact integer from 1 to ~S, got ~S"
@@ -218,6 +233,7 @@ runs and captures draw the stepped state."
                "width × height: expected at most ~a pixels (256 MiB a frame), got ~a × ~a"
                (list max-game-pixels width height) #f))
   (check-substeps "make-game" substeps)
+  (check-collision-mode "make-game" collision-mode)
   (unless (and (exact-integer? stack-limit) (<= min-stack-limit stack-limit max-stack-limit))
     (scm-error 'wrong-type-arg "make-game"
                "stack-limit: expected an exact integer of bytes from ~a (1 MiB) to ~a (4 GiB), got ~S"
@@ -266,10 +282,15 @@ started from."
   "Go back K frames: the scene becomes the one frame (current − K) started
 from, and the game continues from that frame (its input script included).
 Returns that frame's number."
+  (check-game "game-rewind!" game)
+  ;; Checked before (- frame k), whose error would name Guile's -.
+  (unless (and (exact-integer? k) (> k 0))
+    (scm-error 'wrong-type-arg "game-rewind!" "k: expected an exact integer of frames > 0, got ~S"
+               (list k) #f))
   (let* ((target (- (game-frame game) k))
          (past (game-history game))
          (entry (assv target past)))
-    (unless (and (exact-integer? k) (> k 0) entry)
+    (unless entry
       (scm-error 'out-of-range "game-rewind!"
                  "cannot go back ~S frames: ~S remembered (make-game history: N)"
                  (list k (length past)) #f))
@@ -471,6 +492,13 @@ open, else when it opens (F11 and Alt+Return toggle it too)."
                         (equal? (entity-ref e #:tag) target)))
         entities))
 
+(define (check-target-number target key v)
+  ;; Checked before the arithmetic, whose error would name Guile's + or /.
+  (unless (and (real? v) (let ((d (exact->inexact v))) (not (or (nan? d) (inf? d)))))
+    (scm-error 'wrong-type-arg "camera-follow!"
+               "the camera target ~S: ~S: expected a finite number within a double's range, got ~S"
+               (list target key v) #f)))
+
 (define (camera-follow! game)
   "Centre the scene's camera on its camera-target entity, keeping the view
 inside the level: never left of or above the origin, and — when the scene
@@ -480,6 +508,8 @@ has a tilemap — never past the map's right or bottom edge."
          (target (and scene (scene-camera-target scene)))
          (e (and target (entity-tagged (scene-entities scene) target))))
     (when e
+      (for-each (lambda (key) (check-target-number target key (entity-ref e key 0)))
+                '(#:x #:y #:width #:height))
       (let* ((camera (scene-camera scene))
              (tm (scene-tilemap scene))
              (limit (lambda (cells tile view)

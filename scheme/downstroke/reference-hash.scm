@@ -50,8 +50,12 @@
 (define (check-value key v)
   (cond ((memq key number-keys)
          (unless (real? v) (fail "entity key ~S: expected a real number, got ~S" key v))
-         (let ((d (exact->inexact v)))
-           (when (or (nan? d) (inf? d)) (fail "entity key ~S: expected a finite number, got ~S" key v))))
+         (when (or (nan? v) (inf? v)) (fail "entity key ~S: expected a finite number, got ~S" key v))
+         ;; An exact number past a double's range is finite: say the range.
+         (when (inf? (exact->inexact v))
+           (scm-error 'out-of-range "scene-hash"
+                      "entity key ~S: expected a number between -1.8e308 and 1.8e308 (a double's range), got ~S"
+                      (list key v) #f)))
         ((eq? key #:skip-pipelines)
          (unless (and (list? v) (every symbol? v))
            (fail "entity key ~S: expected a list of symbols, got ~S" key v)))))

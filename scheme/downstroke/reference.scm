@@ -63,10 +63,19 @@
 (define (fail who message . args)
   (scm-error 'wrong-type-arg (symbol->string who) message args #f))
 
+(define (check-finite who key v)
+  ;; An exact number past a double's range is finite: its message says the
+  ;; range, as the native decoder's does (bindings/scm_number.hpp).
+  (when (or (nan? v) (inf? v)) (fail who "entity key ~S: expected a finite number, got ~S" key v))
+  (when (inf? (exact->inexact v))
+    (scm-error 'out-of-range (symbol->string who)
+               "entity key ~S: expected a number between -1.8e308 and 1.8e308 (a double's range), got ~S"
+               (list key v) #f)))
+
 (define (check-value who key v)
   (cond ((memq key number-keys)
          (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
-         (when (or (nan? v) (inf? v)) (fail who "entity key ~S: expected a finite number, got ~S" key v)))
+         (check-finite who key v))
         ((memq key '(#:skip-pipelines #:collides-with))
          (unless (and (list? v) (every symbol? v))
            (fail who "entity key ~S: expected a list of symbols, got ~S" key v)))
@@ -74,7 +83,7 @@
          (unless (symbol? v) (fail who "entity key ~S: expected a category symbol, got ~S" key v)))
         ((eq? key #:bounce)
          (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
-         (when (or (nan? v) (inf? v)) (fail who "entity key ~S: expected a finite number, got ~S" key v))
+         (check-finite who key v)
          (unless (<= 0 v 1)
            (scm-error 'out-of-range (symbol->string who)
                       "entity key ~S: expected a number from 0 to 1, got ~S" (list key v) #f)))))

@@ -28,6 +28,12 @@
 
 (define (tween-with-elapsed tween elapsed)
   "A copy of TWEEN that has run for ELAPSED ms."
+  (unless (tween? tween) (bad "tween-with-elapsed" "tween: expected a tween (make-tween)" tween))
+  ;; The stepper adds dt to it in doubles: NaN, ±inf (or an exact number
+  ;; that is one as a double) would never reach the end, and time before
+  ;; the start is the delay's to give.
+  (unless (and (real? elapsed) (finite-real? (exact->inexact elapsed)) (>= elapsed 0))
+    (bad "tween-with-elapsed" "elapsed: expected a number of ms from 0 to 1.8e308 (a double's range)" elapsed))
   (%make-tween (tween-props tween) (tween-duration tween) (tween-delay tween)
                (tween-ease tween) (tween-ease-index tween) (tween-repeat tween)
                (tween-yoyo? tween) (tween-on-complete tween) elapsed))

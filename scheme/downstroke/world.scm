@@ -18,6 +18,12 @@
   ;; A NaN or infinite camera would draw nothing and follow nothing, silently.
   (unless (and (real? v) (not (nan? v)) (not (inf? v)))
     (scm-error 'wrong-type-arg who "camera ~A: expected a finite number, got ~S"
+               (list axis v) #f))
+  ;; An exact number past a double's range is finite, but no camera drawn
+  ;; in doubles can stand there: say the range.
+  (when (inf? (exact->inexact v))
+    (scm-error 'out-of-range who
+               "camera ~A: expected a number between -1.8e308 and 1.8e308 (a double's range), got ~S"
                (list axis v) #f)))
 
 (define* (make-camera #:key (x 0) (y 0))

@@ -116,7 +116,7 @@
          (test-equal (string-append what ": the reference says the same") (car texts) (cadr texts)))))
    (list (list "a string velocity" '((#:x 1) (#:vx "fast")) "#:vx" "\"fast\"")
          (list "NaN" '((#:y +nan.0)) "#:y" "+nan.0")
-         (list "an exact integer no double holds" `((#:x ,(expt 10 400))) "#:x" "finite")
+         (list "an exact integer no double holds" `((#:x ,(expt 10 400))) "#:x" "between -1.8e308 and 1.8e308 (a double's range), got 1000")
          (list "a complex width" '((#:width 1+2i)) "#:width" "1.0+2.0i")
          (list "a key with no value" '((#:x 1 #:y)) "#:y" "no value")
          (list "a non-keyword key" '((#:x 1 y 2)) "key position" "(#:x 1 y 2)")

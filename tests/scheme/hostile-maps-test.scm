@@ -84,7 +84,7 @@
                    "tile size 2147483647x16 is larger than the limit of 16777216 px")
   (load-failure (hostile "huge_tilewidth.tmx")))
 (test-equal "make-tilemap refuses the same tile width"
-  '(wrong-type-arg "In procedure make-tilemap: tile-width: expected a positive exact integer, got 2147483647\n")
+  '(wrong-type-arg "In procedure make-tilemap: tile-width: expected an exact integer from 1 to 16777216, got 2147483647\n")
   (failure (lambda () (make-tilemap 1 1 2147483647 16 #(0) '()))))
 (test-equal "a stream that runs past its layer stops at the layer's 16 bytes"
   (in-load-tilemap (hostile "zstd_overlong.tmx") 5

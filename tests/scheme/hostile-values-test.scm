@@ -362,14 +362,97 @@
   (tween-elapsed (entity-ref (step-tweens (tweened) #f 0) #:tween)))
 (test-equal "dt -0.0 is legal (it is zero)" 0.0
   (tween-elapsed (entity-ref (step-tweens (tweened) #f -0.0) #:tween)))
-(test-assert "make-game refuses frame-delay -16"
-  (refused? 'wrong-type-arg (lambda () (make-game frame-delay: -16)) "make-game" "frame-delay"))
-(test-assert "make-game refuses frame-delay 0"
-  (refused? 'wrong-type-arg (lambda () (make-game frame-delay: 0)) "make-game" "frame-delay"))
-(test-assert "make-game refuses frame-delay +inf.0"
-  (refused? 'wrong-type-arg (lambda () (make-game frame-delay: +inf.0)) "make-game" "frame-delay"))
-(test-assert "make-game refuses frame-delay +nan.0"
-  (refused? 'wrong-type-arg (lambda () (make-game frame-delay: +nan.0)) "make-game" "frame-delay"))
+;; The bound and the type, exactly (issue 45): a bignum used to reach
+;; Guile's usleep and crash it; any real in range is legal.
+(define (frame-delay-refusal v)
+  (cons 'wrong-type-arg
+        (format #f "In procedure make-game: frame-delay: expected a number of ms > 0 and at most 60000 (a minute), got ~s\n" v)))
+(for-each
+ (lambda (v)
+   (test-equal (format #f "make-game refuses frame-delay ~s, naming the bound" v)
+     (frame-delay-refusal v)
+     (refusal (lambda () (make-game frame-delay: v)))))
+ (list (expt 10 30) 60001 60000.5 0 -0.0 -16 +nan.0 +inf.0 -inf.0 "16"))
+(test-equal "frame-delay 60000 (the bound) and a flonum and a fraction are legal"
+  '(60000 16.7 50/3)
+  (map (lambda (v) (game-frame-delay (make-game frame-delay: v))) '(60000 16.7 50/3)))
+;; Paced, as a window or a served REPL paces it: the loop sleeps an exact
+;; number of µs whatever the delay (a flonum used to end the game on its
+;; first frame with usleep's "Wrong type (expecting exact integer)").
+(for-each
+ (lambda (v)
+   (test-equal (format #f "a paced game with frame-delay ~s runs its frames" v) 3
+     (let ((g (make-game frame-delay: v)))
+       (parameterize ((frame-pacing #t)) (game-run! g #:frames 3))
+       (game-frame g))))
+ '(16.5 50/3 1/1000 0.001))
+
+;;; ---------------------------------------------------------------- clear messages (issue 45)
+(test-equal "make-game refuses an unknown collision-mode at once, listing the modes"
+  '(wrong-type-arg . "In procedure make-game: collision-mode: expected one of (swept discrete), got teleport\n")
+  (refusal (lambda () (make-game collision-mode: 'teleport))))
+(test-equal "game-collision-mode-set! refuses it too"
+  '(wrong-type-arg . "In procedure game-collision-mode-set!: collision-mode: expected one of (swept discrete), got teleport\n")
+  (refusal (lambda () (game-collision-mode-set! (make-game) 'teleport))))
+(test-equal "game-collision-mode-set! takes a valid mode" 'discrete
+  (let ((g (make-game))) (game-collision-mode-set! g 'discrete) (game-collision-mode g)))
+(for-each
+ (lambda (k)
+   (test-equal (format #f "game-rewind! refuses k ~s itself, not through Guile's -" k)
+     (cons 'wrong-type-arg (format #f "In procedure game-rewind!: k: expected an exact integer of frames > 0, got ~s\n" k))
+     (refusal (lambda () (game-rewind! (make-game history: 4) k)))))
+ '(a "1" 1.0 0 -1 #f))
+(test-equal "game-rewind! refuses what is not a game"
+  '(wrong-type-arg . "In procedure game-rewind!: game: expected a game (make-game), got 5\n")
+  (refusal (lambda () (game-rewind! 5 1))))
+(test-equal "game-rewind! past what is remembered is still out of range"
+  '(out-of-range . "In procedure game-rewind!: cannot go back 3 frames: 0 remembered (make-game history: N)\n")
+  (refusal (lambda () (game-rewind! (make-game history: 4) 3))))
+(define (follow-game target)
+  (make-game scene: (make-scene entities: (list target) camera-target: 'p)))
+(for-each
+ (lambda (key v)
+   (test-equal (format #f "camera-follow! names the target's ~s ~s, not Guile's arithmetic" key v)
+     (cons 'wrong-type-arg
+           (format #f "In procedure camera-follow!: the camera target p: ~s: expected a finite number within a double's range, got ~s\n" key v))
+     (refusal (lambda () (camera-follow! (follow-game (list #:id 'p key v)))))))
+ (list #:x #:y #:width #:height #:x)
+ (list "a" 'b +nan.0 +inf.0 (expt 10 400)))
+(test-equal "camera-follow! with a plain target centres on it" '(0 40)
+  (let ((g (make-game width: 100 height: 100 scene: (make-scene entities: '((#:id p #:x 40 #:y 80 #:width 20 #:height 20))
+                                                                    camera-target: 'p))))
+    (camera-follow! g)
+    (let ((c (scene-camera (game-scene g)))) (list (camera-x c) (camera-y c)))))
+(define plain-tween (make-tween '(#:x 0) props: '((#:x . 10)) duration: 10))
+(for-each
+ (lambda (v)
+   (test-equal (format #f "tween-with-elapsed refuses ~s" v)
+     (cons 'wrong-type-arg
+           (format #f "In procedure tween-with-elapsed: elapsed: expected a number of ms from 0 to 1.8e308 (a double's range), got ~s\n" v))
+     (refusal (lambda () (tween-with-elapsed plain-tween v)))))
+ (list +nan.0 +inf.0 -inf.0 -1 (expt 10 400) "5"))
+(test-equal "tween-with-elapsed refuses what is not a tween"
+  '(wrong-type-arg . "In procedure tween-with-elapsed: tween: expected a tween (make-tween), got 5\n")
+  (refusal (lambda () (tween-with-elapsed 5 0))))
+(test-equal "tween-with-elapsed past the end: the next step finishes the tween" 10
+  (entity-ref (step-tweens (entity-set '(#:x 0) #:tween (tween-with-elapsed plain-tween 1e300)) #f 16) #:x))
+;; A bignum is finite: its refusal says the range it is out of.
+(test-equal "an entity coordinate past a double's range is out of range, with the range"
+  (cons 'out-of-range
+        (format #f "In procedure apply-velocity-x: entity key #:x: expected a number between -1.8e308 and 1.8e308 (a double's range), got ~s\n"
+                (- (expt 10 400))))
+  (refusal (lambda () (apply-velocity-x (list #:x (- (expt 10 400)) #:vx 1) #f 16))))
+(test-equal "a camera coordinate past a double's range too"
+  (cons 'out-of-range
+        (format #f "In procedure make-camera: camera y: expected a number between -1.8e308 and 1.8e308 (a double's range), got ~s\n"
+                (expt 2 1024)))
+  (refusal (lambda () (make-camera y: (expt 2 1024)))))
+(test-equal "the largest exact integer a double holds is legal" (- (expt 2 1024) (expt 2 971))
+  (entity-ref (apply-velocity-x (list #:x (- (expt 2 1024) (expt 2 971)) #:vx 0) #f 16) #:x))
+(test-equal "make-tilemap's refusal of a size says its bound"
+  '(wrong-type-arg . "In procedure make-tilemap: width: expected an exact integer from 1 to 16777216, got 16777217\n")
+  (refusal (lambda () (make-tilemap (+ 1 (expt 2 24)) 1 16 16 #(0) '()))))
+
 (test-assert "make-game refuses a circular input-script"
   (refused? 'wrong-type-arg (lambda () (make-game input-script: (circular '(0 left)))) "make-game" "input-script"))
 
