@@ -71,8 +71,7 @@ void read_value(const Node& owner, const std::string& type, Property& p, int dep
         check_depth(v, depth);
         for (size_t i = 0; i < v.value->size(); ++i) p.members.push_back(read_list_item(v[i], depth + 1));
     } else {
-        owner["type"].fail("is \"" + type +
-                           "\", expected string, int, float, bool, color, file, object, class or list");
+        owner["type"].fail("is none of string, int, float, bool, color, file, object, class or list");
     }
 }
 

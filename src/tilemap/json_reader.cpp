@@ -54,7 +54,7 @@ Node root_of(const Json& doc, const char* kind) {
     Node root{&doc, ""};
     if (!doc.is_object()) throw json::JsonError("the document is " + json::describe(doc) + ", expected an object");
     if (root.has("type") && root["type"].string() != kind)
-        root["type"].fail("is " + json::describe(*root["type"].value) + ", expected \"" + kind + "\"");
+        root["type"].fail("is not \"" + std::string(kind) + "\"");  // its text unquoted: json_values.cpp
     return root;
 }
 
@@ -204,18 +204,18 @@ std::optional<MapColor> color_or(const Node& n, const char* key) {
     if (!n.has(key)) return std::nullopt;
     const std::string text = n[key].string();
     const auto c = parse_map_color(text);
-    if (!c) n[key].fail("is \"" + text + "\", not a colour (#RRGGBB or #AARRGGBB)");
+    if (!c) n[key].fail("is not a colour (#RRGGBB or #AARRGGBB)");  // its text unquoted: json_values.cpp
     return c;
 }
 
 // One of a key's named values (`parse` reads them): `fallback` when absent,
-// an error naming the value when unknown.
+// an error listing the known ones when unknown.
 template <typename T, typename Parse>
 T named_or(const Node& n, const char* key, T fallback, Parse parse, const char* expected) {
     if (!n.has(key)) return fallback;
     const std::string text = n[key].string();
     const std::optional<T> v = parse(std::string_view(text));
-    if (!v) n[key].fail("is \"" + text + "\", expected one of " + expected);
+    if (!v) n[key].fail("is none of " + std::string(expected));  // its text unquoted: json_values.cpp
     return *v;
 }
 
@@ -370,7 +370,7 @@ LayerKind layer_kind(const Node& n) {
     if (t == "objectgroup") return LayerKind::Object;
     if (t == "imagelayer") return LayerKind::Image;
     if (t == "group") return LayerKind::Group;
-    n["type"].fail("is \"" + t + "\", expected tilelayer, objectgroup, imagelayer or group");
+    n["type"].fail("is none of tilelayer, objectgroup, imagelayer or group");
 }
 
 // What a layer says of itself, whatever its kind.

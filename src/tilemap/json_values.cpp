@@ -4,6 +4,7 @@
 #include "json_dom.hpp"
 #include "utf8.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 
@@ -35,9 +36,21 @@ bool deeper_than(std::string_view text, int max) {
 // that character's.
 int stop_line(std::string_view text, size_t byte) { return tmx::line_at(text, byte > 0 ? byte - 1 : 0); }
 
+// The 1-based column, in bytes, of the character nlohmann stopped at.
+int stop_column(std::string_view text, size_t byte) {
+    const size_t at = std::min(byte > 0 ? byte - 1 : 0, text.size());
+    size_t start = at;
+    while (start > 0 && text[start - 1] != '\n') --start;
+    return int(std::min<size_t>(at - start + 1, INT_MAX));
+}
+
 // nlohmann's what() starts with its id ("[json.exception.parse_error.101] ")
 // and, for parse errors, the position, which the MapError says itself:
-// keep the reason only.
+// keep the reason only. Whatever nlohmann quotes of the text goes too —
+// "; last read: '…'" (the bytes of the token it stopped in, with what came
+// after it) and "parsing '…'" (a number too large): the file can be any a
+// map names (a tileset's "../../" source), and its contents are not the
+// error's to show. The line and column say where to look.
 std::string reason(const char* what) {
     std::string s = what;
     if (s.starts_with("[json.exception.")) {
@@ -47,6 +60,10 @@ std::string reason(const char* what) {
     if (s.starts_with("parse error")) {
         const size_t at = s.find(": ");
         if (at != std::string::npos) s = s.substr(at + 2);
+    }
+    for (const char* quoting : {"; last read: '", " parsing '"}) {
+        const size_t at = s.find(quoting);
+        if (at != std::string::npos) s.erase(at);
     }
     return s;
 }
@@ -67,7 +84,9 @@ Json parse(std::string_view text, int max_depth) {
     } catch (const Json::exception& e) {
         throw JsonSyntaxError(0, "malformed JSON: " + reason(e.what()));
     }
-    throw JsonSyntaxError(stop_line(text, error.byte), "malformed JSON: " + reason(error.what.c_str()));
+    throw JsonSyntaxError(stop_line(text, error.byte), "malformed JSON at column " +
+                                                           std::to_string(stop_column(text, error.byte)) + ": " +
+                                                           reason(error.what.c_str()));
 }
 
 std::string describe(const Json& v) {
@@ -77,9 +96,9 @@ std::string describe(const Json& v) {
     case Json::value_t::array:
     case Json::value_t::binary: return "an array";  // a packed gid array (json_dom.hpp)
     case Json::value_t::boolean: return v.get<bool>() ? "true" : "false";
-    case Json::value_t::string: {
-        return "a string (\"" + tmx::quoted_prefix(v.get_ref<const std::string&>(), 40) + "\")";
-    }
+    // Never quoted: the file can be any a map names, and a string in it
+    // (a token in a JSON credentials file) is not the error's to show.
+    case Json::value_t::string: return "a string";
     default:
         return "the number " + v.dump();  // never throws: no strings inside
     }

@@ -47,7 +47,7 @@ ProjectTypes read_types(const Node& root, const std::string& path) {
         else if (kind == "enum")
             types.enums.push_back(name);
         else if (t.has("type"))
-            t["type"].fail("is \"" + kind + "\", expected \"class\" or \"enum\"");
+            t["type"].fail("is neither \"class\" nor \"enum\"");
         else
             t.fail("has no \"type\"");
     }
