@@ -1,8 +1,12 @@
 #include "canvas.hpp"
 
 #include <SDL_image.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -352,9 +356,86 @@ Rgba Canvas::pixel(int x, int y) const {
     return {uint8_t(p >> 16), uint8_t(p >> 8), uint8_t(p), uint8_t(p >> 24)};
 }
 
+namespace {
+
+// Where save_png's PNG goes: a descriptor, with the first write error kept.
+// SDL's own file stream (IMG_SavePNG) lets a failed write pass unnoticed —
+// a full disk gave a truncated or empty picture and no error.
+struct PngSink {
+    int fd = -1;
+    int error = 0;  // errno of the first failed write
+};
+
+PngSink& sink_of(SDL_RWops* rw) { return *static_cast<PngSink*>(rw->hidden.unknown.data1); }
+
+size_t SDLCALL sink_write(SDL_RWops* rw, const void* data, size_t size, size_t count) {
+    PngSink& sink = sink_of(rw);
+    if (sink.error) return 0;
+    const char* p = static_cast<const char*>(data);
+    for (size_t left = size * count; left > 0;) {
+        const ssize_t n = ::write(sink.fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            sink.error = n < 0 ? errno : EIO;
+            return 0;
+        }
+        p += n;
+        left -= size_t(n);
+    }
+    return count;
+}
+
+Sint64 SDLCALL sink_seek(SDL_RWops* rw, Sint64 offset, int whence) {
+    const int how = whence == RW_SEEK_SET ? SEEK_SET : whence == RW_SEEK_CUR ? SEEK_CUR : SEEK_END;
+    const off_t at = ::lseek(sink_of(rw).fd, off_t(offset), how);
+    return at < 0 ? SDL_SetError("seek failed") : Sint64(at);
+}
+
+Sint64 SDLCALL sink_size(SDL_RWops*) { return -1; }
+size_t SDLCALL sink_read(SDL_RWops*, void*, size_t, size_t) { return 0; }
+int SDLCALL sink_close(SDL_RWops*) { return 0; }  // save_png closes the descriptor itself
+
+std::string errno_text(int e) { return std::strerror(e); }
+
+}  // namespace
+
 void Canvas::save_png(const std::string& path) const {
-    if (IMG_SavePNG(surface_, path.c_str()) != 0)
-        throw RenderError("cannot write '" + path + "': " + IMG_GetError());
+    const auto refuse = [&](const std::string& why) { throw RenderError("cannot write '" + path + "': " + why); };
+    // Only a regular file (new, or replaced): a FIFO would block the game
+    // until a reader came, and a device or a directory is no picture. The
+    // name is checked before opening, so nothing is truncated or waited for,
+    // and the opened file after, in case the name changed in between
+    // (O_NONBLOCK: a FIFO put there meanwhile is opened without waiting).
+    struct stat st;
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) refuse("not a regular file");
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK | O_CLOEXEC | O_NOCTTY, 0666);
+    if (fd < 0) refuse(errno_text(errno));
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        refuse("not a regular file");
+    }
+    PngSink sink{fd};
+    int saved = -1;
+    if (SDL_RWops* rw = SDL_AllocRW()) {
+        rw->size = sink_size;
+        rw->seek = sink_seek;
+        rw->read = sink_read;
+        rw->write = sink_write;
+        rw->close = sink_close;
+        rw->type = SDL_RWOPS_UNKNOWN;
+        rw->hidden.unknown.data1 = &sink;
+        saved = IMG_SavePNG_RW(surface_, rw, 0);
+        SDL_FreeRW(rw);
+    }
+    const std::string sdl_error = saved != 0 ? IMG_GetError() : "";
+    // close reports what the writes could not (a delayed write on NFS).
+    const int close_error = ::close(fd) != 0 ? errno : 0;
+    const int error = sink.error ? sink.error : close_error;
+    if (error || saved != 0) {
+        // A partial picture is no frame: nothing is left that looks like one.
+        ::unlink(path.c_str());
+        refuse(error ? errno_text(error) : sdl_error);
+    }
 }
 
 }  // namespace ds::render

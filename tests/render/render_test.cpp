@@ -5,9 +5,14 @@
 #include <doctest/doctest.h>
 
 #include <SDL_image.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -400,6 +405,71 @@ TEST_CASE("a capture is the canvas exactly, unscaled") {
     SDL_FreeSurface(argb);
     SDL_FreeSurface(back);
     CHECK_THROWS_AS(c.save_png("/nonexistent-dir/x.png"), RenderError);
+}
+
+namespace {
+
+// What fn() returns, run in a child process: one that blocks is killed
+// after 10 s (and says so) instead of hanging the suite, and one given
+// limits (RLIMIT_FSIZE) leaves this process's alone.
+std::string in_child(const std::function<std::string()>& fn) {
+    int fds[2];
+    REQUIRE(pipe(fds) == 0);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        alarm(10);
+        const std::string out = fn();
+        (void)!write(fds[1], out.data(), out.size());
+        _exit(0);
+    }
+    close(fds[1]);
+    std::string out;
+    char buf[512];
+    for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, size_t(n));
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+    return out;
+}
+
+std::string save_error(const Canvas& c, const std::string& path) {
+    try {
+        c.save_png(path);
+    } catch (const RenderError& e) {
+        return e.what();
+    }
+    return "saved";
+}
+
+}  // namespace
+
+TEST_CASE("a capture goes only to a regular file, and a failed write is an error naming it") {
+    Canvas c(64, 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) c.fill_rect(x, y, 1, 1, Rgba{uint8_t(x * 4), uint8_t(y * 4), uint8_t(x ^ y), 255});
+    const std::string fifo = (temp_dir() / "capture.fifo").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    // No reader: SDL's own writer waited for one for ever.
+    CHECK(in_child([&] { return save_error(c, fifo); }) == "cannot write '" + fifo + "': not a regular file");
+    std::filesystem::remove(fifo);
+    CHECK(save_error(c, "/dev/full") == "cannot write '/dev/full': not a regular file");
+    CHECK(save_error(c, temp_dir().string()) == "cannot write '" + temp_dir().string() + "': not a regular file");
+    // A full disk, as a file size limit makes one: every write is checked,
+    // and the partial picture is not left behind as a frame.
+    const std::string big = (temp_dir() / "too-big.png").string();
+    CHECK(in_child([&] {
+              signal(SIGXFSZ, SIG_IGN);
+              const rlimit small{100, 100};
+              setrlimit(RLIMIT_FSIZE, &small);
+              return save_error(c, big);
+          }) == "cannot write '" + big + "': File too large");
+    CHECK_FALSE(std::filesystem::exists(big));
+    // Within the limit, the same picture is written whole.
+    CHECK(save_error(c, big) == "saved");
+    CHECK(std::filesystem::file_size(big) > 100);
+    std::filesystem::remove(big);
 }
 
 TEST_CASE("canvas sizes and the window's whole scale") {

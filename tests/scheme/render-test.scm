@@ -4,7 +4,7 @@
 ;;; draw-* procedures, the overlay, `downstroke --capture', input maps and
 ;;; logs, and sounds.
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (ice-9 ftw) (ice-9 rdelim)
-             (rnrs bytevectors) (ice-9 binary-ports))
+             (rnrs bytevectors) (ice-9 binary-ports) (ice-9 popen) (ice-9 textual-ports))
 
 (load "support.scm")
 
@@ -263,6 +263,31 @@
   '("000000.png" "000001.png" "000002.png" "000003.png")
   (sort (filter (lambda (f) (string-suffix? ".png" f)) (scandir capture-dir)) string<?))
 (test-equal "… each the game's size, unscaled" '(48 32) (png-size (string-append capture-dir "/000003.png")))
+;; Only regular files are written, and every write is checked (issue 45):
+;; a FIFO blocked the game for ever, a full disk lost the picture silently.
+(define fifo (string-append dir "/pipe"))
+(mknod fifo 'fifo #o600 0)
+(for-each
+ (lambda (target)
+   (test-equal (string-append "game-capture refuses " target ", not a regular file, without waiting")
+     (format #f "In procedure game-capture: cannot write '~a': not a regular file\n" target)
+     (error-text (lambda () (game-capture g target)))))
+ (list fifo "/dev/full" dir))
+(delete-file fifo)
+;; A full disk without root: a file size limit of 0 makes every write fail
+;; (EFBIG; SIGXFSZ ignored, as a shell passes it on), and the output goes
+;; through a pipe, which the limit leaves alone.
+(define full-dir (string-append dir "/full"))
+(define full-run
+  (let* ((p (open-pipe* OPEN_READ "/bin/sh" "-c"
+                        (string-append "trap '' XFSZ; ulimit -f 0; exec '" host "' --no-auto-compile --capture '"
+                                       full-dir "' '" data "/scripts/capture-game.scm' 4 2>&1")))
+         (text (get-string-all p)))
+    (list (status:exit-val (close-pipe p)) text (scandir full-dir (lambda (f) (string-suffix? ".png" f))))))
+(test-equal "--capture onto a full disk ends at the first frame, naming it, with status 1 and no empty frame"
+  (list 1 (format #f "In procedure game-capture: cannot write '~a/000000.png': File too large
+(the whole backtrace: DOWNSTROKE_BACKTRACE=full)\n" full-dir) '())
+  full-run)
 (test-equal "--window and --capture together are refused" 2
   (status:exit-val (system* host "--window" "--capture" capture-dir "x.scm")))
 (test-equal "--help exits 0" 0 (status:exit-val (system* host "--help")))
