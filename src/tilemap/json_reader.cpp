@@ -280,7 +280,7 @@ void read_tilesets(const JsonFile& f, const Node& root, Tilemap& map) {
         const Node list = root["tilesets"];
         for (size_t i = 0; i < list.array().size(); ++i) found.emplace_back(read_tileset(f, list[i]), 0);
     }
-    add_tilesets(f.where, std::move(found), map);
+    add_tilesets(f.where, *f.state, std::move(found), map);
 }
 
 // --- tile data --------------------------------------------------------------

@@ -101,7 +101,22 @@ void sort_tiles(Tileset& ts) {
                      [](const TileInfo& a, const TileInfo& b) { return a.id < b.id; });
 }
 
-void add_tilesets(const Where& w, std::vector<std::pair<Tileset, int>> found, Tilemap& map) {
+void add_tilesets(const Where& w, const LoadState& s, std::vector<std::pair<Tileset, int>> found, Tilemap& map) {
+    for (const auto& [ts, line] : found) {
+        // Only one that says nothing at all: a tileset with a tile size
+        // but no picture yet is a common stand-in (and the test maps').
+        if (!ts.image.empty() || !ts.tiles.empty() || ts.tile_width > 0 || ts.tile_height > 0) continue;
+        // Named by the map's own words (its source as written, or an
+        // embedded tileset's name), not by anything read from the file.
+        const std::string which =
+            ts.source.empty() ? "tileset '" + ts.name + "'" : "tileset file '" + ts.source + "'";
+        const std::string problem =
+            which + " says nothing (no tile size, no image, no tiles): its gids are missing, non-solid tiles";
+        if (s.options.strict) w.at(line).fail(problem);
+        const Where at = w.at(line);
+        map.warnings.push_back((at.line > 0 ? at.file + ":" + std::to_string(at.line) : at.file) + ": " +
+                               problem + w.note);
+    }
     std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
         return a.first.firstgid < b.first.firstgid;
     });

@@ -86,8 +86,10 @@ void sort_tiles(Tileset& ts);
 
 // Every tileset of the map with the line it was declared on, sorted by
 // firstgid into map.tilesets; two with one firstgid are refused (their
-// gids would be ambiguous).
-void add_tilesets(const Where& w, std::vector<std::pair<Tileset, int>> found, Tilemap& map);
+// gids would be ambiguous). One that says nothing (no tile size, no
+// image, no tiles, as a `{}` .tsj) is a warning on the map, or refused by
+// a strict load: whatever the map draws from it is missing.
+void add_tilesets(const Where& w, const LoadState& s, std::vector<std::pair<Tileset, int>> found, Tilemap& map);
 
 // --- tile layers ------------------------------------------------------------
 

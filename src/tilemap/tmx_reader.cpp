@@ -326,7 +326,7 @@ void read_tilesets(const XmlFile& f, const XMLElement* root, Tilemap& map) {
     std::vector<std::pair<Tileset, int>> found;  // with the line of its element
     each_child(root, "tileset",
                [&](const XMLElement* t) { found.emplace_back(read_tileset(f, t), t->GetLineNum()); });
-    add_tilesets(f.where, std::move(found), map);
+    add_tilesets(f.where, *f.state, std::move(found), map);
 }
 
 // --- layer data -------------------------------------------------------------

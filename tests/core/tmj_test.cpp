@@ -482,6 +482,23 @@ TEST_CASE("a gid beyond every tileset: a warning naming map, layer and cell, or 
                       (f.path + ": gid 9 at cell (1, 0) of layer 'a' is beyond every tileset").c_str());
 }
 
+TEST_CASE("a tileset file that says nothing ({}): a warning naming it, or strict's error") {
+    const TempFile ts("nothing.tsj", "{}");
+    const TempFile f("nothing.tmj", R"({"width":2,"height":1,"tilewidth":8,"tileheight":8,
+        "tilesets":[{"firstgid":1,"source":"ds-tmj-nothing.tsj"}],
+        "layers":[{"type":"tilelayer","name":"a","width":2,"height":1,"data":[0,1]}]})");
+    const std::string problem =
+        "tileset file 'ds-tmj-nothing.tsj' says nothing (no tile size, no image, no tiles): its gids are "
+        "missing, non-solid tiles";
+    const Tilemap m = load_tilemap(f.path, LoadOptions{});
+    REQUIRE(m.warnings.size() == 1);
+    CHECK(m.warnings[0] == f.path + ": " + problem);
+    CHECK_FALSE(m.solid_grid().solid(1, 0));
+    LoadOptions strict;
+    strict.strict = true;
+    CHECK_THROWS_WITH(load_tilemap(f.path, strict), (f.path + ": " + problem).c_str());
+}
+
 TEST_CASE("refusals name the file, the JSON path and the reason") {
     const std::string head = R"({"width":2,"height":1,"tilewidth":8,"tileheight":8,)";
     auto layer = [&](const std::string& l) { return head + R"("layers":[)" + l + "]}"; };

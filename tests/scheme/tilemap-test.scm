@@ -351,6 +351,22 @@
 (test-equal "#:strict? #f is the default" '() 
   (tilemap-warnings (load-tilemap "demo/maps/level1.tmx" #:strict? #t)))
 
+;; A tileset file of {} (issue 45) loaded without a word; its gids were
+;; silently missing.
+(define nothing-output (open-output-string))
+(define nothing-problem
+  "tileset file 'says_nothing.tsj' says nothing (no tile size, no image, no tiles): its gids are missing, non-solid tiles")
+(test-equal "a tileset file that says nothing is a warning naming the map and the file"
+  (list (string-append (map-file "scheme/says_nothing.tmj") ": " nothing-problem))
+  (tilemap-warnings (parameterize ((current-warning-port nothing-output))
+                      (load-tilemap (map-file "scheme/says_nothing.tmj")))))
+(test-equal "… on the warning port"
+  (string-append "load-tilemap: warning: " (map-file "scheme/says_nothing.tmj") ": " nothing-problem "\n")
+  (get-output-string nothing-output))
+(test-equal "… and #:strict? #t refuses the map"
+  (string-append "In procedure load-tilemap: " (map-file "scheme/says_nothing.tmj") ": " nothing-problem "\n")
+  (error-text (lambda () (load-tilemap (map-file "scheme/says_nothing.tmj") #:strict? #t))))
+
 ;;; ---------------------------------------------------------------- errors
 (test-assert "missing file: the message names the file"
   (mentions? (error-text (lambda () (load-tilemap (map-file "no-such-map.tmx")))) "load-tilemap" "no-such-map.tmx"))
