@@ -56,7 +56,9 @@ public:
     void draw_picture(SDL_Surface* picture, const PictureBox& box, uint8_t alpha = 255, Rgba tint = {255, 255, 255, 255});
 
     Rgba pixel(int x, int y) const;  // (0, 0, 0, 0) outside
-    // Writes the canvas as a PNG; throws RenderError naming the path.
+    // Writes the canvas as a PNG to a regular file (new or replaced; a
+    // FIFO, a device or a folder is refused, never waited on), every write
+    // checked; throws RenderError naming the path, leaving no partial file.
     void save_png(const std::string& path) const;
 
 private:
