@@ -397,23 +397,32 @@ int SDLCALL sink_close(SDL_RWops*) { return 0; }  // save_png closes the descrip
 
 std::string errno_text(int e) { return std::strerror(e); }
 
+// A new file beside `path` (O_EXCL, so never one that is there, never a FIFO
+// or a device; the umask applies, as to any file the game writes), and its
+// name; -1 with errno when none can be made.
+int open_beside(const std::string& path, std::string& temp) {
+    static unsigned serial = 0;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        temp = path + ".part-" + std::to_string(::getpid()) + "-" + std::to_string(serial++);
+        const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOCTTY, 0666);
+        if (fd >= 0 || errno != EEXIST) return fd;
+    }
+    return -1;
+}
+
 }  // namespace
 
 void Canvas::save_png(const std::string& path) const {
     const auto refuse = [&](const std::string& why) { throw RenderError("cannot write '" + path + "': " + why); };
     // Only a regular file (new, or replaced): a FIFO would block the game
-    // until a reader came, and a device or a directory is no picture. The
-    // name is checked before opening, so nothing is truncated or waited for,
-    // and the opened file after, in case the name changed in between
-    // (O_NONBLOCK: a FIFO put there meanwhile is opened without waiting).
+    // until a reader came, and a device or a directory is no picture.
     struct stat st;
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) refuse("not a regular file");
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK | O_CLOEXEC | O_NOCTTY, 0666);
+    // Written beside it and renamed over it only once whole, so a failed
+    // write (a full disk) leaves the file that was there as it was.
+    std::string temp;
+    const int fd = open_beside(path, temp);
     if (fd < 0) refuse(errno_text(errno));
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(fd);
-        refuse("not a regular file");
-    }
     PngSink sink{fd};
     int saved = -1;
     if (SDL_RWops* rw = SDL_AllocRW()) {
@@ -430,10 +439,10 @@ void Canvas::save_png(const std::string& path) const {
     const std::string sdl_error = saved != 0 ? IMG_GetError() : "";
     // close reports what the writes could not (a delayed write on NFS).
     const int close_error = ::close(fd) != 0 ? errno : 0;
-    const int error = sink.error ? sink.error : close_error;
+    int error = sink.error ? sink.error : close_error;
+    if (!error && saved == 0 && ::rename(temp.c_str(), path.c_str()) != 0) error = errno;
     if (error || saved != 0) {
-        // A partial picture is no frame: nothing is left that looks like one.
-        ::unlink(path.c_str());
+        ::unlink(temp.c_str());  // a partial picture is no frame
         refuse(error ? errno_text(error) : sdl_error);
     }
 }

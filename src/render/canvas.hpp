@@ -58,7 +58,8 @@ public:
     Rgba pixel(int x, int y) const;  // (0, 0, 0, 0) outside
     // Writes the canvas as a PNG to a regular file (new or replaced; a
     // FIFO, a device or a folder is refused, never waited on), every write
-    // checked; throws RenderError naming the path, leaving no partial file.
+    // checked, beside it first and renamed over it once whole; throws
+    // RenderError naming the path, leaving the file that was there as it was.
     void save_png(const std::string& path) const;
 
 private:

@@ -468,7 +468,18 @@ TEST_CASE("a capture goes only to a regular file, and a failed write is an error
     CHECK_FALSE(std::filesystem::exists(big));
     // Within the limit, the same picture is written whole.
     CHECK(save_error(c, big) == "saved");
-    CHECK(std::filesystem::file_size(big) > 100);
+    const auto whole = std::filesystem::file_size(big);
+    CHECK(whole > 100);
+    // A failed capture over it leaves it as it was, and nothing beside it.
+    CHECK(in_child([&] {
+              signal(SIGXFSZ, SIG_IGN);
+              const rlimit small{100, 100};
+              setrlimit(RLIMIT_FSIZE, &small);
+              return save_error(c, big);
+          }) == "cannot write '" + big + "': File too large");
+    CHECK(std::filesystem::file_size(big) == whole);
+    for (const auto& entry : std::filesystem::directory_iterator(temp_dir()))
+        CHECK_FALSE(entry.path().filename().string().starts_with("too-big.png.part-"));
     std::filesystem::remove(big);
 }
 
