@@ -18,11 +18,14 @@
 #include <SDL_mixer.h>
 
 #include "audio.hpp"
+#include "child_process.hpp"
 #include "constants.hpp"
 #include "render_error.hpp"
 #include "sound_header.hpp"
 
 namespace {
+
+using ds::render::test::child_peak_kb;
 
 namespace fs = std::filesystem;
 using ds::render::RenderError;
@@ -99,36 +102,6 @@ bool contains(const std::string& s, const std::string& part) {
 std::string read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The peak resident memory, in kB, that a child process gains running fn
-// (its peak reset first): what fn allocated at most, give or take a page.
-long child_peak_kb(void (*fn)()) {
-    int fds[2];
-    REQUIRE(pipe(fds) == 0);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        std::ofstream("/proc/self/clear_refs") << "5";  // resets VmHWM to the current RSS
-        auto kb = [](const char* key) {
-            std::ifstream in("/proc/self/status");
-            std::string line;
-            while (std::getline(in, line))
-                if (line.rfind(key, 0) == 0) return std::stol(line.substr(std::strlen(key)));
-            return -1L;
-        };
-        const long before = kb("VmRSS:");
-        fn();
-        const long grew = kb("VmHWM:") - before;
-        (void)!write(fds[1], &grew, sizeof grew);
-        _exit(0);
-    }
-    close(fds[1]);
-    long grew = -1;
-    (void)!read(fds[0], &grew, sizeof grew);
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return grew;
 }
 
 // An IMA-ADPCM mono WAV of `blocks` blocks of 256 bytes (a 4-byte header,

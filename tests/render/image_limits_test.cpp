@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "child_process.hpp"
 #include "constants.hpp"
 #include "image_header.hpp"
 #include "render_error.hpp"
@@ -71,36 +72,6 @@ std::string draw_error(const Tilemap& m) {
         return e.what();
     }
     return "";
-}
-
-// The peak resident memory, in kB, of a child that resets its peak and then
-// runs fn: what fn allocated at most, give or take a few pages.
-long child_peak_kb(void (*fn)()) {
-    int fds[2];
-    REQUIRE(pipe(fds) == 0);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        std::ofstream("/proc/self/clear_refs") << "5";  // resets VmHWM to the current RSS
-        auto rss = [](const char* key) {
-            std::ifstream in("/proc/self/status");
-            std::string line;
-            while (std::getline(in, line))
-                if (line.rfind(key, 0) == 0) return std::stol(line.substr(std::strlen(key)));
-            return -1L;
-        };
-        const long before = rss("VmRSS:");
-        fn();
-        const long grew = rss("VmHWM:") - before;
-        (void)!write(fds[1], &grew, sizeof grew);
-        _exit(0);
-    }
-    close(fds[1]);
-    long grew = -1;
-    (void)!read(fds[0], &grew, sizeof grew);
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return grew;
 }
 
 }  // namespace

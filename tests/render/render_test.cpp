@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "canvas.hpp"
+#include "child_process.hpp"
 #include "constants.hpp"
 #include "font.hpp"
 #include "render_error.hpp"
@@ -409,31 +410,6 @@ TEST_CASE("a capture is the canvas exactly, unscaled") {
 
 namespace {
 
-// What fn() returns, run in a child process: one that blocks is killed
-// after 10 s (and says so) instead of hanging the suite, and one given
-// limits (RLIMIT_FSIZE) leaves this process's alone.
-std::string in_child(const std::function<std::string()>& fn) {
-    int fds[2];
-    REQUIRE(pipe(fds) == 0);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        close(fds[0]);
-        alarm(10);
-        const std::string out = fn();
-        (void)!write(fds[1], out.data(), out.size());
-        _exit(0);
-    }
-    close(fds[1]);
-    std::string out;
-    char buf[512];
-    for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, size_t(n));
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
-    return out;
-}
-
 std::string save_error(const Canvas& c, const std::string& path) {
     try {
         c.save_png(path);
@@ -459,24 +435,22 @@ TEST_CASE("a capture goes only to a regular file, and a failed write is an error
     // A full disk, as a file size limit makes one: every write is checked,
     // and the partial picture is not left behind as a frame.
     const std::string big = (temp_dir() / "too-big.png").string();
-    CHECK(in_child([&] {
-              signal(SIGXFSZ, SIG_IGN);
-              const rlimit small{100, 100};
-              setrlimit(RLIMIT_FSIZE, &small);
-              return save_error(c, big);
-          }) == "cannot write '" + big + "': File too large");
+    const auto save_on_full_disk = [&] {
+        return in_child([&] {
+            signal(SIGXFSZ, SIG_IGN);
+            const rlimit small{100, 100};
+            setrlimit(RLIMIT_FSIZE, &small);
+            return save_error(c, big);
+        });
+    };
+    CHECK(save_on_full_disk() == "cannot write '" + big + "': File too large");
     CHECK_FALSE(std::filesystem::exists(big));
     // Within the limit, the same picture is written whole.
     CHECK(save_error(c, big) == "saved");
     const auto whole = std::filesystem::file_size(big);
     CHECK(whole > 100);
     // A failed capture over it leaves it as it was, and nothing beside it.
-    CHECK(in_child([&] {
-              signal(SIGXFSZ, SIG_IGN);
-              const rlimit small{100, 100};
-              setrlimit(RLIMIT_FSIZE, &small);
-              return save_error(c, big);
-          }) == "cannot write '" + big + "': File too large");
+    CHECK(save_on_full_disk() == "cannot write '" + big + "': File too large");
     CHECK(std::filesystem::file_size(big) == whole);
     for (const auto& entry : std::filesystem::directory_iterator(temp_dir()))
         CHECK_FALSE(entry.path().filename().string().starts_with("too-big.png.part-"));
