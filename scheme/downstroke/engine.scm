@@ -785,6 +785,38 @@ game-capture, a capture run or a window)."
     (scm-error 'wrong-type-arg "game-run!"
                "frames: expected #f or a frame count, got ~S" (list frames) #f)))
 
+;;; ---------------------------------------------------------------- endless runs
+;;; Headless, nobody closes a window: a game-run! that nothing ends runs
+;;; until the process is killed, and a test or a CI job hangs without a word.
+
+;; The most frames one headless game-run! runs, counted from the frame it
+;; starts at, or #f: the host's --frames N. In a window the player ends it.
+;; This and game-served? are the host's, not a game's: not exported.
+(define headless-frame-limit (make-parameter #f))
+
+;; #t while a REPL is served into the game (the host's --repl-server and
+;; --repl-port): its author ends it from there, so running on is asked for.
+(define game-served? (make-parameter #f))
+
+(define (script-quits? script)
+  ;; An input script ends a run when one of its entries holds quit.
+  (any (lambda (entry) (memq 'quit (cdr entry))) script))
+
+(define (warn-if-endless! game frames)
+  (unless (or (and frames (finite? frames)) (headless-frame-limit) (game-served?)
+              (script-quits? (game-input-script game)))
+    (format (current-warning-port)
+            "game-run!: warning: ~s runs headless until quit, and nothing quits it (no frames:, no quit in its input script): pass frames: N, or run it with downstroke --frames N~%"
+            (game-title game))))
+
+(define (headless-end game frames)
+  ;; The frame a headless run stops at: FRAMES, or sooner under the host's limit.
+  (let ((limit (headless-frame-limit)))
+    (if limit
+        (let ((cap (+ (game-frame game) limit)))
+          (if (and frames (< frames cap)) frames cap))
+        frames)))
+
 (define (run-frame-hooks! game)
   (for-each (lambda (hook)
               ;; A hook that bounds its own calls (the REPL server's poll) is
@@ -1003,7 +1035,10 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
 engine-update, update, camera follow, render — until the game's frame
 counter reaches FRAMES (so a second call with the same FRAMES runs nothing
 more), or until the 'quit action is held. FRAMES is #f (run until quit) or
-a real number, +inf.0 meaning the same as #f.
+a real number, +inf.0 meaning the same as #f. Headless, a run that nothing
+ends (no FRAMES, no quit in its input script) is warned of as it starts, on
+the warning port; `downstroke --frames N' ends each headless run after N
+frames at most.
 
 How frames are shown is the host's choice: headless by default (input from
 input-script:, nothing drawn, as deterministic as the physics); in a window
@@ -1025,6 +1060,8 @@ hooks, or from a REPL served into it) is an error."
                  (current-display (game-display game)))
     (case (display-mode)
       ((window) (run-window! game frames))
-      ((capture) (run-headless! game frames (capture-directory)))
-      (else (run-headless! game frames #f)))
+      ((capture) (warn-if-endless! game frames)
+                 (run-headless! game (headless-end game frames) (capture-directory)))
+      (else (warn-if-endless! game frames)
+            (run-headless! game (headless-end game frames) #f)))
     game))

@@ -136,6 +136,49 @@
         (close-port warnings))
       (primitive-load file)))
 
+;;; ---------------------------------------------------------------- --timeout
+;;; A watchdog thread, not SIGALRM and setitimer: those are the REPL
+;;; server's, for its time limit on each evaluation (repl-server.scm).
+
+;; The exit status of a script ended by --timeout: timeout(1)'s, so that a
+;; CI job tells a run cut off by time from one that failed (1) or was
+;; refused (2).
+(define timeout-status 124)
+
+;; A script that catches the ending (a catch-all handler) and runs on is
+;; cut off this long after it, without running its cleanups: time enough
+;; for the ones an ending runs (a window closed, a --record file written).
+(define timeout-grace-seconds 5)
+
+(define (sleep-seconds s)
+  (let ((deadline (+ (get-internal-real-time) (* s internal-time-units-per-second))))
+    (let loop ()
+      (let ((left (- deadline (get-internal-real-time))))
+        (when (> left 0)
+          (usleep (min 1000000 (round (/ (* (inexact->exact left) 1000000) internal-time-units-per-second))))
+          (loop))))))
+
+(define (call-with-timeout seconds file thunk)
+  ;; (THUNK), ended after SECONDS as (exit timeout-status) is, said on the
+  ;; error port; SECONDS #f: no limit.
+  (if (not seconds)
+      (thunk)
+      ;; (ice-9 threads) named with @: loaded only when a limit is asked for.
+      (let ((main ((@ (ice-9 threads) current-thread))) (done? #f))
+        ((@ (ice-9 threads) call-with-new-thread)
+         (lambda ()
+           (sleep-seconds seconds)
+           (unless done?
+             (format (current-error-port) "downstroke: ~a ran past --timeout ~a s: ended (status ~a)~%"
+                     file seconds timeout-status)
+             (force-output (current-error-port))
+             (system-async-mark (lambda () (unless done? (throw 'quit timeout-status))) main)
+             (sleep-seconds timeout-grace-seconds)
+             (unless done?
+               (force-output (current-output-port))  ; what the script printed is kept
+               (primitive-_exit timeout-status)))))
+        (dynamic-wind (lambda () #t) thunk (lambda () (set! done? #t))))))
+
 (define (run-script file args compile?)
   (set-program-arguments (cons file args))
   ;; A missing file is left to load, inside the catch, to refuse.
@@ -234,6 +277,8 @@
     ;; the hooks as it covers evaluations.
     (hook-time-limit (@ (downstroke repl-server) call-with-hook-time-limit))
     (frame-pacing #t)
+    ;; Its author ends it from the REPL: running on is what was asked for.
+    ((@@ (downstroke engine) game-served?) #t)
     (remove-socket-on-signals! socket)))
 
 ;; The signals that end a served game from outside (Ctrl-C in its terminal,
@@ -295,6 +340,10 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --repl-port N       serve it on 127.0.0.1:N instead
   --repl-timeout S    interrupt a REPL evaluation that holds the game longer
                       than S seconds (default " (number->string (@ (downstroke repl-server) default-repl-timeout)) ")
+  --frames N          end each headless game-run! of FILE.scm after N frames at
+                      most (fewer when its frames: says so; a window runs on)
+  --timeout S         end FILE.scm after S seconds of wall time, saying so,
+                      with exit status 124
   --no-auto-compile   run FILE.scm interpreted, compiling nothing into the
                       cache (by default an edited file is compiled, quietly)
   --version           the version of downstroke
@@ -339,8 +388,25 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
            (with-value 'repl-timeout (lambda (v) (let ((n (string->number v))) (and n (real? n) (< 0 n 1000000))))))
           ((string=? (car args) "--repl-port")
            (with-value 'repl-port (lambda (v) (let ((n (string->number v))) (and n (exact-integer? n) (< 0 n 65536))))))
+          ((string=? (car args) "--frames")
+           (with-value 'frames frame-count-text?))
+          ((string=? (car args) "--timeout")
+           (with-value 'timeout seconds-text?))
           ((string-prefix? "--" (car args)) #f)
           (else (cons (reverse opts) args)))))
+
+;; --frames and --timeout: refused, said on the error port, when malformed.
+(define (frame-count-text? v)
+  (let ((n (string->number v)))
+    (or (and n (exact-integer? n) (> n 0))
+        (begin (format (current-error-port) "downstroke: --frames: expected a whole number of frames > 0, got ~s~%" v)
+               #f))))
+
+(define (seconds-text? v)
+  (let ((n (string->number v)))
+    (or (and n (real? n) (> n 0) (finite? n))
+        (begin (format (current-error-port) "downstroke: --timeout: expected a number of seconds > 0, got ~s~%" v)
+               #f))))
 
 (define (prepare-display! opts)
   ;; #f when the options cannot be honoured (said on the error port).
@@ -389,7 +455,12 @@ templates `downstroke new' copies. Returns the exit status."
           ((not (prepare-display! (car parsed))) 2)
           (else
            (let ((opts (car parsed)) (rest (cdr parsed)))
-             (cond ((and (pair? rest) (string=? (car rest) "test"))
+             (cond ((and (or (assq-ref opts 'frames) (assq-ref opts 'timeout))
+                         (or (null? rest) (member (car rest) '("test" "new"))))
+                    (display "downstroke: --frames and --timeout bound the run of a script: give its FILE.scm\n"
+                             (current-error-port))
+                    2)
+                   ((and (pair? rest) (string=? (car rest) "test"))
                     (run-test-command (cdr rest)))
                    ((and (pair? rest) (string=? (car rest) "new"))
                     (run-new-command (cdr rest) templates))
@@ -397,11 +468,17 @@ templates `downstroke new' copies. Returns the exit status."
                     (usage))
                    ((null? rest) (run-repl))
                    (else
-                    (let ((socket (open-repl-socket opts)))
+                    (let ((socket (open-repl-socket opts))
+                          (frames (assq-ref opts 'frames))
+                          (timeout (assq-ref opts 'timeout)))
                       (cond ((eq? socket 'refused) 2)
                             (else
                              (when socket (serve-repl! socket (repl-timeout opts)))
-                             (let ((status (run-script (car rest) (cdr rest)
-                                                       (not (assq-ref opts 'no-auto-compile)))))
+                             (when frames ((@@ (downstroke engine) headless-frame-limit) (string->number frames)))
+                             (let ((status (call-with-timeout
+                                            (and timeout (string->number timeout)) (car rest)
+                                            (lambda ()
+                                              (run-script (car rest) (cdr rest)
+                                                          (not (assq-ref opts 'no-auto-compile)))))))
                                (when socket ((@ (downstroke repl-server) remove-unix-repl-socket!) socket))
                                status)))))))))))

@@ -39,7 +39,7 @@
  (lambda (option)
    (test-assert (string-append "--help lists " option) (string-contains (second help) option)))
  '("--window" "--scale" "--debug" "--capture" "--repl-server" "--repl-port" "--repl-timeout"
-   "--no-auto-compile" "--version" "--help" "new DIR" "test [--junit FILE]" "DOWNSTROKE_BACKTRACE=full"))
+   "--frames N" "--timeout S" "--no-auto-compile" "--version" "--help" "new DIR" "test [--junit FILE]" "DOWNSTROKE_BACKTRACE=full"))
 (test-equal "--version prints the project's version" '(0 "downstroke 0.1.0\n" "") (run "--version"))
 (test-equal "an unknown option is refused with the usage, on stderr" '(2 "")
   (let ((r (run "--no-such-option"))) (list (first r) (second r))))
@@ -183,6 +183,60 @@
 
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
+
+;;; ---------------------------------------------------------------- runs that end
+;;; Headless, nothing closes a window: a run that nothing ends is said at
+;;; its start, --frames bounds each game-run!, --timeout the whole script.
+(define endless
+  (write-script "endless.scm"
+                "(define g (make-game title: \"shooter\"))\n(game-run! g)\n(format #t \"frame ~a~%\" (game-frame g))\n"))
+(define (timed-out file seconds)
+  (string-append "downstroke: " file " ran past --timeout " seconds " s: ended (status 124)\n"))
+(define endless-warning
+  "game-run!: warning: \"shooter\" runs headless until quit, and nothing quits it (no frames:, no quit in its input script): pass frames: N, or run it with downstroke --frames N\n")
+(test-equal "a headless game-run! that nothing ends is warned of as it starts; --timeout ends it, status 124"
+  (list 124 "" (string-append endless-warning (timed-out endless "1")))
+  (run "--timeout" "1" endless))
+(test-equal "--frames N ends it after N frames, and it is not warned of"
+  '(0 "frame 100\n" "")
+  (run "--frames" "100" endless))
+(define quitting
+  (write-script "quitting.scm"
+                (string-append
+                 "(define g (make-game input-script: '((0 . (fire)) (30 . (quit)))))\n"
+                 "(game-run! g)\n(format #t \"frame ~a~%\" (game-frame g))\n"
+                 "(game-run! g frames: 40)\n(format #t \"frame ~a~%\" (game-frame g))\n"
+                 "(define h (make-game))\n(game-run! h frames: +inf.0)\n(format #t \"frame ~a~%\" (game-frame h))\n")))
+(test-equal "an input script that quits ends the run: no warning"
+  '(0 "frame 30\nframe 30\n" "")
+  (run (write-script "quits-only.scm"
+                     "(define g (make-game input-script: '((30 . (quit)))))\n(game-run! g)\n(format #t \"frame ~a~%\" (game-frame g))\n(game-run! g frames: 40)\n(format #t \"frame ~a~%\" (game-frame g))\n")))
+(test-equal "--frames bounds each game-run! from where it starts; frames: and quit still end it sooner"
+  '(0 "frame 25\nframe 30\nframe 25\n" "")
+  (run "--frames" "25" quitting))
+(define spinning (write-script "spinning.scm" "(display \"start\\n\")\n(let loop () (loop))\n"))
+(test-equal "--timeout S ends a script that never returns, after its output, with status 124"
+  (list 124 "start\n" (timed-out spinning "0.5"))
+  (run "--timeout" "0.5" spinning))
+(define stubborn
+  (write-script "stubborn.scm"
+                "(display \"start\\n\")\n(let loop () (catch #t (lambda () (let spin () (spin))) (lambda _ #f)) (loop))\n"))
+(test-equal "… and one that catches the ending and runs on is cut off, its output kept"
+  (list 124 "start\n" (timed-out stubborn "0.5"))
+  (run "--timeout" "0.5" stubborn))
+(define socket (string-append dir "/served.sock"))
+(test-equal "a served game runs on without the warning (--timeout still ends it), and its socket goes"
+  (list 124 "" (timed-out endless "1") #f)
+  (append (run "--repl-server" socket "--timeout" "1" endless) (list (file-exists? socket))))
+(test-equal "--frames takes a whole number > 0, named"
+  '(2 "downstroke: --frames: expected a whole number of frames > 0, got \"0\"")
+  (let ((r (run "--frames" "0" endless))) (list (first r) (car (string-split (third r) #\newline)))))
+(test-equal "--timeout takes a number of seconds > 0, named"
+  '(2 "downstroke: --timeout: expected a number of seconds > 0, got \"soon\"")
+  (let ((r (run "--timeout" "soon" endless))) (list (first r) (car (string-split (third r) #\newline)))))
+(test-equal "--frames and --timeout need a script"
+  '(2 "" "downstroke: --frames and --timeout bound the run of a script: give its FILE.scm\n")
+  (run "--frames" "5" "test"))
 
 ;;; ---------------------------------------------------------------- what a game carries
 ;;; Every module loaded is live data each collection marks: the REPL and the
