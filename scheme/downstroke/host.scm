@@ -113,12 +113,13 @@
   ;; A port passing each whole line to OUT unless it is a compile note, the
   ;; report of a failed compilation (the file then runs interpreted, which
   ;; raises the same error, reported as any other), or a name said to be
-  ;; unbound that a file the script loads defines (LOADED, a list of
-  ;; symbols): the compiler cannot see the load, which defines it.
+  ;; unbound that a file the script loads defines (LOADED, a promise of a
+  ;; list of symbols, read at the first such warning): the compiler cannot
+  ;; see the load, which defines it.
   (let ((pending "") (in-failure? #f))
     (define (defined-by-load? line)
       (let ((name (unbound-warning-name line)))
-        (and name (memq (string->symbol name) loaded))))
+        (and name (memq (string->symbol name) (force loaded)))))
     (define (put-line! line)
       (cond ((or (compile-note? line) (compile-failure? line))
              (set! in-failure? (compile-failure? line)))
@@ -196,8 +197,9 @@
 
 (define (load-script-as file compile?)
   (if compile?
-      (let ((warnings (filtering-warning-port (current-error-port)
-                                              ((@ (downstroke script-source) loaded-definitions) file))))
+      (let ((warnings (filtering-warning-port
+                       (current-error-port)
+                       (delay ((@ (downstroke script-source) loaded-definitions) file)))))
         (mend-warning-locations!)
         (parameterize ((current-warning-port warnings))
           (load file))

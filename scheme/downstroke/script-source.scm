@@ -29,9 +29,8 @@
         ((quoted? form) '())
         ((and (eq? (car form) 'load) (pair? (cdr form)) (string? (cadr form)))
          (list (if (absolute-file-name? (cadr form)) (cadr form) (string-append dir "/" (cadr form)))))
-        (else (let walk ((rest form) (acc '()))
-                (cond ((pair? rest) (walk (cdr rest) (append acc (loads-in (car rest) dir))))
-                      (else acc))))))
+        (else (let walk ((rest form))
+                (if (pair? rest) (append (loads-in (car rest) dir) (walk (cdr rest))) '())))))
 
 (define (defined-names form)
   ;; The top-level names FORM defines: any (define… NAME …) or
