@@ -98,6 +98,7 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f, CategoryTable* table) 
                 name_failed_entity(f, i, e);
                 return false;
             }
+            if (d.slips.count != 0) [[unlikely]] queue_slips(d.slips, i, printable_id(e));
             c = {d.places, watched_fields(d), scm_is_true(d.tween), d.body.reports_pairs(), d.categorized()};
             if (c.categorized) batch.category_names[i] = CategoryNames::of(d.category, d.collides_with);
             batch.known[i] = d.body;

@@ -317,6 +317,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: key ~S has no value in ~S");
             return false;
         }
+        if (k == kNotPhysics) note_unknown_key(key, d.slips);
         if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) {  // first occurrence wins
             // A circular plist has finitely many first occurrences of physics
             // keys, then only entries like this one: it always gets here.

@@ -9,6 +9,7 @@
 
 #include "body.hpp"
 #include "failure.hpp"
+#include "key_slips.hpp"
 #include "keys.hpp"
 
 namespace ds::guile {
@@ -35,6 +36,7 @@ struct Decoded {
     // absent: a CategoryTable turns them into the body's bits.
     SCM category = SCM_UNDEFINED;
     SCM collides_with = SCM_UNDEFINED;
+    EntitySlips slips;  // keys that are a slip of an engine key (decode_batch queues them)
     bool categorized() const { return !SCM_UNBNDP(category) || !SCM_UNBNDP(collides_with); }
     bool has(PhysKey k) const { return (present >> k) & 1u; }
 };

@@ -63,6 +63,7 @@ extern "C" void ds_init_native() {
     register_hash_procedures();
     register_gc_procedures();
     register_query_procedures();
+    register_key_slip_procedures();
     register_constants();
     register_render_procedures();
     apply_gc_policy();

@@ -118,6 +118,7 @@ void register_frame_procedures();
 void register_hash_procedures();
 void register_gc_procedures();
 void register_query_procedures();  // spatial and tile queries
+void register_key_slip_procedures();  // misspelt entity keys (key_slips.hpp)
 void register_constants();  // the rules' numbers: %gravity, %jump-force, …
 void register_render_procedures();  // render_procs.cpp, or render_missing.cpp without SDL2
 

@@ -17,7 +17,7 @@
                           %display-open-window! %display-close-window! %open-audio!
                           %display-set-fullscreen! %display-fullscreen? %display-refresh-rate %display-vsync?
                           %play-sound %play-music %stop-music %set-volume!
-                          %note-pushed-pairs! %max-substeps))
+                          %note-pushed-pairs! %max-substeps %take-key-slips))
   #:export (make-game game? game-title game-width game-height game-frame-delay
             game-scene game-scene-set! game-input game-frame game-sounds
             game-collision-mode game-collision-mode-set!
@@ -28,7 +28,7 @@
             input-mouse mouse-world-position game-fullscreen-set! game-fullscreen?
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
-            frame-pacing hook-error-reporter hook-time-limit main-script? script-number-argument engine-stats
+            strict-games frame-pacing hook-error-reporter hook-time-limit main-script? script-number-argument engine-stats
             gc-space-divisor set-gc-space-divisor!
             game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log))
 
@@ -65,7 +65,8 @@ picture (or there is no window, and the input script holds no mouse)."
   (%make-game title width height frame-delay scene update render engine-update
               collision-mode substeps resting-contacts
               input input-script script-cursor frame sounds music history-size history
-              display debug-draw input-log stack-limit pause-when-unfocused interpolate)
+              display debug-draw input-log stack-limit pause-when-unfocused interpolate
+              strict slips-warned)
   game?
   (title game-title)
   (width game-width)
@@ -91,7 +92,9 @@ picture (or there is no window, and the input script holds no mouse)."
   (input-log %game-input-log %game-input-log-set!)  ; an <input-log>: (frame . held) at each change
   (stack-limit game-stack-limit)    ; bytes of Scheme stack each hook may use
   (pause-when-unfocused game-pause-when-unfocused?)
-  (interpolate game-interpolate?))
+  (interpolate game-interpolate?)
+  (strict game-strict?)             ; a misspelt entity key is an error, not a warning
+  (slips-warned game-slips-warned)) ; the misspelt keys warned of, a hash table: once each
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -199,7 +202,8 @@ collision mode, substeps and resting contacts."
                     (engine-update default-engine-update)
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
                     (input-script '()) (history 0) (input-map #f) (background #f)
-                    (stack-limit default-stack-limit) (pause-when-unfocused? #f) (interpolate? #t))
+                    (stack-limit default-stack-limit) (pause-when-unfocused? #f) (interpolate? #t)
+                    (strict? (strict-games)))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
@@ -217,7 +221,9 @@ keyboard focus; it resumes where it stopped, with no burst of catch-up
 steps. INTERPOLATE? (in a window) draws each entity and the camera between
 their last two steps, at the fraction of a step the clock has run, so
 motion is smooth at any refresh rate; physics is not touched, and headless
-runs and captures draw the stepped state."
+runs and captures draw the stepped state. STRICT? makes an entity key that
+is a slip of an engine key (#:sensr? for #:sensor?) an error instead of a
+warning; it defaults to (strict-games), which `downstroke test' sets."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
@@ -256,8 +262,11 @@ runs and captures draw the stepped state."
                             (make-input '() '()) input-script #f 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
                             display #f empty-input-log stack-limit (and pause-when-unfocused? #t)
-                            (and interpolate? #t))))
+                            (and interpolate? #t) (and strict? #t) (make-hash-table))))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
+      ;; Slips decoded before this game was made (a step-scene of its own)
+      ;; are not this game's.
+      (%take-key-slips)
       game)))
 
 ;;; ---------------------------------------------------------------- time travel
@@ -929,8 +938,36 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
           (display (game-display game)))
       (when display (%display-clear-commands! display))
       (when render (call-bounded game "render:" (lambda () (render game)))))
+    (report-key-slips! game)
     ;; unless the frame rewound the game, the next frame is frame + 1
     (when (= (game-frame game) frame) (game-frame-set! game (+ frame 1)))))
+
+;;; ---------------------------------------------------------------- misspelt keys
+;;; An entity key the engine does not read but that is a slip of one it does
+;;; (#:sensr? for #:sensor?) turns a behaviour off without a word. Decoding
+;;; notices it (bindings/key_slips.hpp: which keys are slips, and why it
+;;; costs nothing measurable); here each is said once per game, or refused.
+
+;; #t: games made without strict?: are strict. `downstroke test' sets it, so
+;; a test suite does not pass on a game with a misspelt key.
+(define strict-games (make-parameter #f))
+
+(define (slip-text key suggestion index id)
+  (format #f "entity key ~s is not one the engine reads (entity ~a of the list~a): did you mean ~s?"
+          key index (if id (format #f ", #:id ~s" id) "") suggestion))
+
+(define (report-key-slips! game)
+  ;; The slips decoded in this frame, on this thread: one native call that
+  ;; gives () in a game without any.
+  (for-each (lambda (slip)
+              (let ((key (car slip)) (warned (game-slips-warned game)))
+                (unless (hashq-ref warned key)
+                  (hashq-set! warned key #t)
+                  (if (game-strict? game)
+                      (scm-error 'misc-error "game-run!" "~a (make-game strict?: #t makes this an error)"
+                                 (list (apply slip-text slip)) #f)
+                      (format (current-warning-port) "game-run!: warning: ~a~%" (apply slip-text slip))))))
+            (%take-key-slips)))
 
 (define (frame-file dir frame)
   (string-append dir "/" (string-pad (number->string frame) 6 #\0) ".png"))

@@ -177,14 +177,19 @@ load is one failure naming its error. Returns its results."
 returns; print each failure (file:line, the check's name, expected and
 actual) and then `N passed, N failed'. With JUNIT, also write a JUnit XML
 report there. LOAD-FILE loads one file (the host's compiles it quietly).
-Returns the exit status: 0 only when nothing failed."
+Games made while they run are strict (strict-games): an entity key that is
+a slip of an engine key is an error. Returns the exit status: 0 only when
+nothing failed."
   (let* ((missing (remove file-exists? paths))
          (files (test-files paths))
          (by-file (append
                    (map (lambda (p) (cons p (list (list p "(no such file or folder)" 'error #f
                                                          (format #f "no such file or folder: ~a~%" p) #f))))
                         missing)
-                   (map (lambda (f) (cons f (run-file f make-environment load-file))) files)))
+                   ;; Games made in tests are strict: a misspelt entity key
+                   ;; fails the test that runs it (make-game strict?: #f opts out).
+                   (parameterize ((strict-games #t))
+                     (map (lambda (f) (cons f (run-file f make-environment load-file))) files))))
          (all (append-map cdr by-file))
          (passed (count (lambda (r) (eq? (caddr r) 'pass)) all))
          (failed (- (length all) passed)))
