@@ -83,6 +83,7 @@
     (game-resting-contacts-set! . "Turn GAME's resting contacts on (#t) or off (#f) from the next frame on.")
     (game-input . "The input of GAME's current frame: ask it with input-held?, input-pressed? and input-released?.")
     (game-debug-draw? . "Whether GAME is drawn with the debug overlay (see game-debug-draw-set!).")
+    (strict-games . "A parameter, #f by default: when true, a game made without strict?: is strict, so an entity key that is a slip of an engine key (#:sensr? for #:sensor?) is an error instead of a warning. `downstroke test' sets it while the tests run.")
     (frame-pacing . "A parameter, #f by default: when true, game-run! waits so that each frame lasts its frame delay in real time, as a game someone watches must; when #f it runs as fast as it can. The host sets it for a window or a REPL server.")
     (hook-error-reporter . "A parameter, #f by default: a procedure given the text of each error raised by a frame hook or a frame, which then pauses the game instead of ending the run. The host sets it when it serves a REPL.")
     (hook-time-limit . "A parameter, #f by default: a procedure (what thunk) each hook call runs through — engine-update:, update:, render: and frame hooks, WHAT naming it. The host sets one that interrupts a hook with an error past --repl-timeout when it serves a REPL.")
