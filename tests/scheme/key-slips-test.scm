@@ -1,0 +1,81 @@
+;;; Misspelt entity keys: a key a slip away from an engine key is said once
+;;; per key per game (or refused, strict?), and the author's own keys are not.
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing))
+
+(load "support.scm")
+
+(test-begin "key-slips")
+
+;; Fresh plists each time: a plist the engine has decoded at the same place
+;; before is taken from its cache and not read again.
+(define (misspelt-scene)
+  (make-scene entities: (list (list #:id 'player #:x 0 #:y 0 #:width 8 #:height 8 #:sensr? #t
+                                    #:score 10 #:life 3 #:weight 2 #:dx 1 #:hp 3 #:sprite 1 #:tag 'p)
+                              (list #:x 20 #:y 0 #:width 8 #:height 8 #:bounse 1/2
+                                    #:colides-with '(default) #:gravty? #t)
+                              (list #:id "coin" #:x 40 #:sensr? #t))))
+
+;; The entities rewritten each frame, so each is decoded afresh every frame.
+(define (drift game dt)
+  (let ((s (game-scene game)))
+    (game-scene-set! game (update-scene s entities: (map (lambda (e) (entity-set e #:x (+ 1 (entity-ref e #:x))))
+                                                          (scene-entities s))))))
+
+(define (warnings-of thunk)
+  (let ((port (open-output-string)))
+    (parameterize ((current-warning-port port)) (thunk))
+    (get-output-string port)))
+
+(define expected-warnings
+  (string-append
+   "game-run!: warning: entity key #:sensr? is not one the engine reads (entity 0 of the list, #:id player): did you mean #:sensor??\n"
+   "game-run!: warning: entity key #:bounse is not one the engine reads (entity 1 of the list): did you mean #:bounce?\n"
+   "game-run!: warning: entity key #:colides-with is not one the engine reads (entity 1 of the list): did you mean #:collides-with?\n"
+   "game-run!: warning: entity key #:gravty? is not one the engine reads (entity 1 of the list): did you mean #:gravity??\n"))
+
+(test-equal "each near miss is one warning per game, naming the key, the entity and the engine key; far keys are silent"
+  expected-warnings
+  (warnings-of (lambda () (play (make-game strict?: #f scene: (misspelt-scene) update: drift) #:frames 5))))
+
+(test-equal "… and a second game is told again"
+  expected-warnings
+  (warnings-of (lambda () (play (make-game strict?: #f scene: (misspelt-scene) update: drift) #:frames 2))))
+
+(test-equal "the author's own keys, however many, say nothing"
+  ""
+  (warnings-of
+   (lambda ()
+     (play (make-game strict?: #t
+                      scene: (make-scene entities: (list (list #:x 0 #:score 1 #:life 2 #:weight 3 #:type 'coin
+                                                               #:name "a" #:facing 'left #:state 'idle #:timer 4
+                                                               #:flip-x? #t #:sprite 2 #:tag 't #:vx 1))))
+           #:frames 3))))
+
+(test-equal "strict?: #t makes the first one an error, naming the key, the entity and the engine key"
+  "In procedure game-run!: entity key #:sensr? is not one the engine reads (entity 0 of the list, #:id player): did you mean #:sensor?? (make-game strict?: #t makes this an error)\n"
+  (error-text (lambda () (play (make-game strict?: #t scene: (misspelt-scene)) #:frames 1))))
+
+(test-equal "a string #:id is named as written"
+  "In procedure game-run!: entity key #:sensr? is not one the engine reads (entity 0 of the list, #:id \"coin\"): did you mean #:sensor?? (make-game strict?: #t makes this an error)\n"
+  (error-text (lambda () (play (make-game strict?: #t
+                                          scene: (make-scene entities: (list (list #:id "coin" #:x 40 #:sensr? #t))))
+                               #:frames 1))))
+
+(test-equal "strict?: defaults to (strict-games): #f, and #t under downstroke test"
+  '(#f #t #f)
+  (list (strict-games)
+        (parameterize ((strict-games #t))
+          (and (error-text (lambda () (play (make-game scene: (misspelt-scene)) #:frames 1))) #t))
+        (parameterize ((strict-games #t))
+          ;; a test opts out with strict?: #f
+          (and (error-text (lambda () (warnings-of (lambda () (play (make-game strict?: #f scene: (misspelt-scene))
+                                                                     #:frames 1)))))
+               #t))))
+
+(test-equal "slips decoded outside the game (a step-scene of its own) are not the game's"
+  ""
+  (begin
+    (step-scene (make-scene entities: (list (list #:x 0 #:gravty? #t))) 16)
+    (warnings-of (lambda () (play (make-game strict?: #t) #:frames 1)))))
+
+(test-end "key-slips")
