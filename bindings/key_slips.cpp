@@ -45,7 +45,7 @@ size_t distance(const char* a, size_t n, const char* b, size_t m) {
 // anything, and typing slips rarely fall there.
 size_t edits_allowed(size_t len) { return len <= 3 ? 0 : len <= 7 ? 1 : 2; }
 
-constexpr uint8_t kFar = 0xff;
+constexpr uint8_t kFar = SlipTable::kFar;
 
 // The engine key a name is a slip of, or kFar (also for an engine key itself).
 uint8_t suggestion_for(const char* name, size_t n) {
@@ -63,35 +63,7 @@ uint8_t suggestion_for(const char* name, size_t n) {
     return best;
 }
 
-// The unknown keywords seen on this thread, by address: each was classified
-// once. Keywords are protected once remembered, so an address never comes
-// to mean another keyword. The bound keeps a program that makes keywords
-// without end (string->keyword per entity) from growing it: past it, new
-// unknown keys go unchecked (docs/limits.org, "Entity keys").
-struct SlipTable {
-    static constexpr size_t kSlots = 1024;  // a power of two, at most half full
-    static constexpr size_t kMaxKeys = 512;
-    SCM key[kSlots];
-    uint8_t suggestion[kSlots];
-    bool queued[kSlots];
-    size_t used = 0;
-    SCM pending = SCM_BOOL_F;  // a protected 1-slot vector: the queued reports, newest first
-
-    SlipTable() {
-        std::fill_n(key, kSlots, SCM_BOOL_F);
-        std::fill_n(queued, kSlots, false);
-    }
-    static size_t hash(SCM obj) {
-        return static_cast<size_t>((SCM_UNPACK(obj) >> 3) * 0x9E3779B97F4A7C15ull >> 54);
-    }
-};
-
 thread_local SlipTable* table = nullptr;  // made at the first unknown key, kept for the thread's life
-
-SlipTable& slip_table() {
-    if (!table) table = new SlipTable;
-    return *table;
-}
 
 uint8_t classify(SCM keyword) {
     size_t n = 0;
@@ -111,25 +83,26 @@ bool near_miss(const char* name, size_t n, const char* known) {
     return d >= 1 && d <= allowed;
 }
 
-void note_unknown_key(SCM keyword, EntitySlips& out) {
-    SlipTable& t = slip_table();
-    size_t slot = SlipTable::hash(keyword);
-    for (;; slot = (slot + 1) & (SlipTable::kSlots - 1)) {
-        if (scm_is_eq(t.key[slot], keyword)) break;
-        if (scm_is_false(t.key[slot])) {
-            if (t.used == SlipTable::kMaxKeys) return;
-            t.key[slot] = scm_gc_protect_object(keyword);
-            t.suggestion[slot] = classify(keyword);
-            ++t.used;
-            break;
-        }
-    }
-    if (t.suggestion[slot] != kFar && out.count < EntitySlips::kMaxSlipsPerEntity)
-        out.slot[out.count++] = static_cast<uint16_t>(slot);
+SlipTable::SlipTable() {
+    std::fill_n(key, kSlots, SCM_BOOL_F);
+    std::fill_n(queued, kSlots, false);
+}
+
+bool SlipTable::add(SCM keyword, size_t slot) {
+    if (used == kMaxKeys) return false;
+    key[slot] = scm_gc_protect_object(keyword);
+    suggestion[slot] = classify(keyword);
+    ++used;
+    return true;
+}
+
+SlipTable& this_thread_slips() {
+    if (!table) table = new SlipTable;
+    return *table;
 }
 
 void queue_slips(const EntitySlips& slips, size_t index, SCM id) {
-    SlipTable& t = slip_table();
+    SlipTable& t = this_thread_slips();
     for (uint8_t i = 0; i < slips.count; ++i) {
         const uint16_t slot = slips.slot[i];
         if (t.queued[slot]) continue;

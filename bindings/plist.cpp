@@ -306,6 +306,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
     d = Decoded{};
     SCM p = plist;
     size_t passed = 0, index = 0;
+    SlipTable* slips = nullptr;  // this thread's, from the first unknown key
     for (; scm_is_pair(p); p = SCM_CDR(SCM_CDR(p)), ++index) {
         SCM key = SCM_CAR(p);
         const uint8_t k = keys->lookup(key);  // a physics key is a keyword: no need to ask
@@ -317,7 +318,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             fail(f, "wrong-type-arg", scm_list_2(key, plist), "malformed entity: key ~S has no value in ~S");
             return false;
         }
-        if (k == kNotPhysics) note_unknown_key(key, d.slips);
+        if (k == kNotPhysics) note_unknown_key(slips, key, d.slips);
         if (k == kNotPhysics || d.has(static_cast<PhysKey>(k))) {  // first occurrence wins
             // A circular plist has finitely many first occurrences of physics
             // keys, then only entries like this one: it always gets here.
