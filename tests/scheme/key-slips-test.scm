@@ -78,4 +78,23 @@
     (step-scene (make-scene entities: (list (list #:x 0 #:gravty? #t))) 16)
     (warnings-of (lambda () (play (make-game strict?: #t) #:frames 1)))))
 
+;; The tutorial's aside shows the warning as the engine prints it.
+(define (tutorial-warning)
+  ;; The line of the example block after the aside about #:sensr?.
+  (let* ((text (call-with-input-file (string-append (dirname (current-filename)) "/../../docs/tutorial.org")
+                 (@ (ice-9 textual-ports) get-string-all)))
+         (aside (string-contains text "=#:sensr? #t="))
+         (start (+ (string-contains text "#+begin_example\n" aside) (string-length "#+begin_example\n"))))
+    (substring text start (+ 1 (string-index text #\newline start)))))
+(test-equal "docs/tutorial.org shows the warning exactly"
+  (tutorial-warning)
+  (warnings-of
+   (lambda ()
+     (play (make-game strict?: #f
+                      scene: (make-scene entities: (list (list #:id 'player #:x 0 #:y 0 #:width 12 #:height 16)
+                                                         (list #:id 'coin-0 #:x 40 #:sensor? #t)
+                                                         (list #:id 'coin-1 #:kind 'coin #:x 60 #:y 0 #:width 8 #:height 8
+                                                               #:sensr? #t #:collides-with '(player)))))
+           #:frames 1))))
+
 (test-end "key-slips")
