@@ -78,6 +78,26 @@
     (step-scene (make-scene entities: (list (list #:x 0 #:gravty? #t))) 16)
     (warnings-of (lambda () (play (make-game strict?: #t) #:frames 1)))))
 
+;; downstroke test itself (the host, in a child): the game of a test file is strict.
+(test-equal "downstroke test makes games strict: a misspelt key fails the check that plays the game"
+  '(1 "FAIL slip-test.scm:3: plays: expected #f, raised: In procedure game-run!: entity key #:sensr? is not one the engine reads (entity 0 of the list): did you mean #:sensor?? (make-game strict?: #t makes this an error)")
+  (let* ((dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-slips-XXXXXX")))
+         (file (string-append dir "/slip-test.scm"))
+         (out (string-append dir "/out")))
+    (call-with-output-file file
+      (lambda (port)
+        (for-each (lambda (form) (write form port) (newline port))
+                  '((use-modules (downstroke testing))
+                    (test-begin "slip")
+                    (test-assert "plays" (game? (play (make-game scene: (make-scene entities: (list (list #:x 0 #:sensr? #t))))
+                                                      #:frames 1)))
+                    (test-end "slip")))))
+    (let* ((status (system (string-append "cd '" dir "' && '" (readlink "/proc/self/exe") "' test slip-test.scm >out 2>&1")))
+           (text (call-with-input-file out (@ (ice-9 textual-ports) get-string-all))))
+      (for-each delete-file (list file out))
+      (rmdir dir)
+      (list (status:exit-val status) (find (lambda (line) (string-prefix? "FAIL" line)) (string-split text #\newline))))))
+
 ;; The tutorial's aside shows the warning as the engine prints it.
 (define (tutorial-warning)
   ;; The line of the example block after the aside about #:sensr?.
