@@ -2,6 +2,7 @@
 (define-module (downstroke physics)
   #:use-module (downstroke native)
   #:use-module (downstroke world)
+  #:use-module (downstroke read-only)
   #:re-export (resolve-entity-collisions sync-groups aabb-overlap?)
   #:export (*gravity* *jump-force* *on-solid-tolerance* collision-mode
             resting-contacts?
@@ -10,9 +11,19 @@
             resolve-tile-collisions-y detect-on-solid carry-riders step-scene))
 
 ;; The rules' numbers, from the core (src/constants.hpp): one home for each.
-(define *gravity* %gravity)
-(define *jump-force* %jump-force)
-(define *on-solid-tolerance* %on-solid-tolerance)
+;; Read-only, for the core never reads a Scheme variable: a set! would change
+;; nothing but the game's own idea of the number.
+(define-read-only *gravity* %gravity
+  (format #f "*gravity* is read-only: the engine's gravity is fixed, adding ~a px/frame \
+to each #:gravity? entity's #:vy every frame; for a stronger or weaker fall, \
+add to its #:ay every frame (a make-scene gravity: setting is planned: issue 47)" %gravity))
+(define-read-only *jump-force* %jump-force
+  (format #f "*jump-force* is read-only: it is the usual jump speed, ~a px/frame, \
+which the engine itself never reads; jump at another speed by setting #:ay \
+to your own number, e.g. (entity-set player #:ay -18)" %jump-force))
+(define-read-only *on-solid-tolerance* %on-solid-tolerance
+  (format #f "*on-solid-tolerance* is read-only: detect-on-solid always looks ~a px \
+below the feet for ground, a fixed rule of the engine" %on-solid-tolerance))
 
 (define collision-mode
   (make-parameter 'swept

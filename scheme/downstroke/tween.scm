@@ -4,6 +4,7 @@
   #:use-module (srfi srfi-9)
   #:use-module (downstroke native)
   #:use-module (downstroke entity)
+  #:use-module (downstroke read-only)
   #:export (make-tween tween? tween-props tween-duration tween-delay tween-ease
             tween-repeat tween-yoyo? tween-on-complete tween-elapsed
             tween-with-elapsed ease easing-names))
@@ -38,7 +39,12 @@
                (tween-ease tween) (tween-ease-index tween) (tween-repeat tween)
                (tween-yoyo? tween) (tween-on-complete tween) elapsed))
 
-(define easing-names
+;; Read-only: the stepper knows its curves by number (%ease-index), not from
+;; this list, so a set! would only make the list wrong.
+(define-read-only easing-names built-in-easings
+  "easing-names is read-only: it lists the easings the engine has built in; \
+an easing of your own is a procedure of t in [0, 1], given as make-tween's #:ease")
+(define built-in-easings
   (cons 'linear
         (append-map (lambda (family)
                       (map (lambda (variant) (symbol-append family '- variant))

@@ -470,4 +470,47 @@
       (let ((g (make-game))) (game-fullscreen-set! g #t) (game-fullscreen? g))
       #t))
 
+;;; ---------------------------------------------------------------- read-only settings
+;;; The engine's constants read as their values and refuse set!, compiled or
+;;; interpreted alike, with a syntax error naming the setting and what to
+;;; do instead.
+
+;; A fresh module of a game's, using (downstroke).
+(define (game-module)
+  (let ((m (make-fresh-user-module)))
+    (eval '(use-modules (downstroke)) m)
+    m))
+
+;; TEXT read as the file game.scm, its one form compiled (COMPILE? #t) or
+;; evaluated, and run: its value, or (key . printed error).
+(define (run-text text compile?)
+  (let ((form (call-with-input-string text
+                (lambda (port) (set-port-filename! port "game.scm") (read port))))
+        (m (game-module)))
+    (catch #t
+      (lambda () (if compile? (compile form #:env m) (eval form m)))
+      (lambda (key . args)
+        (cons key (call-with-output-string (lambda (port) (print-exception port #f key args))))))))
+
+(test-equal "the constants read as their values"
+  (list 1 15 4 25)
+  (run-text "(list *gravity* *jump-force* *on-solid-tolerance* (length easing-names))" #t))
+(for-each
+ (lambda (case)
+   (for-each
+    (lambda (compile?)
+      (test-equal (format #f "(set! ~a …) is refused (~a)" (car case) (if compile? "compiled" "interpreted"))
+        (cons 'syntax-error (cadr case))
+        (run-text (format #f "\n  (set! ~a 2)" (car case)) compile?)))
+    '(#t #f)))
+ '(("*gravity*" "Syntax error:\ngame.scm:2:2: set!: *gravity* is read-only: the engine's gravity is fixed, adding 1 px/frame to each #:gravity? entity's #:vy every frame; for a stronger or weaker fall, add to its #:ay every frame (a make-scene gravity: setting is planned: issue 47) in form (set! *gravity* 2)\n")
+   ("*jump-force*" "Syntax error:\ngame.scm:2:2: set!: *jump-force* is read-only: it is the usual jump speed, 15 px/frame, which the engine itself never reads; jump at another speed by setting #:ay to your own number, e.g. (entity-set player #:ay -18) in form (set! *jump-force* 2)\n")
+   ("*on-solid-tolerance*" "Syntax error:\ngame.scm:2:2: set!: *on-solid-tolerance* is read-only: detect-on-solid always looks 4 px below the feet for ground, a fixed rule of the engine in form (set! *on-solid-tolerance* 2)\n")
+   ("easing-names" "Syntax error:\ngame.scm:2:2: set!: easing-names is read-only: it lists the easings the engine has built in; an easing of your own is a procedure of t in [0, 1], given as make-tween's #:ease in form (set! easing-names 2)\n")))
+(test-equal "a game may still define a name of its own that shadows one" 2
+  (let ((m (game-module)))
+    (eval '(define *gravity* 1) m)
+    (eval '(set! *gravity* 2) m)
+    (eval '*gravity* m)))
+
 (test-end "engine")
