@@ -9,6 +9,7 @@
   #:use-module (downstroke tilemap)
   #:use-module (downstroke history)
   #:use-module (downstroke render)
+  #:use-module (downstroke arity)
   #:use-module ((downstroke native)
                 #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor! %make-display
                           %display-draw! %display-stats %display-save-png %display-pixel
@@ -119,6 +120,14 @@ collision mode, substeps and resting contacts."
   (unless (or (not proc) (procedure? proc))
     (scm-error 'wrong-type-arg who "~A: expected a procedure or #f, got ~S" (list what proc) #f)))
 
+;; The arguments the frame loop calls each of a game's hooks with
+;; (step-game!): one home, for the checks and the messages.
+(define hook-arguments '((engine-update game dt) (update game dt) (render game)))
+
+(define (check-hook-or-false who what proc)
+  (check-procedure-or-false who what proc)
+  (when proc (check-hook who what proc (assq-ref hook-arguments what))))
+
 (define (mouse-entry? x)
   ;; (mouse x y buttons): the pointer in picture pixels and the buttons held.
   (and (pair? x) (eq? (car x) 'mouse) (list? x) (= (length x) 4)
@@ -163,13 +172,13 @@ collision mode, substeps and resting contacts."
 (define (game-update-set! game update)
   "Make UPDATE, (lambda (game dt) …) or #f, GAME's update from the next frame on."
   (check-game "game-update-set!" game)
-  (check-procedure-or-false "game-update-set!" "update" update)
+  (check-hook-or-false "game-update-set!" 'update update)
   (%game-update-set! game update))
 
 (define (game-engine-update-set! game engine-update)
   "Make ENGINE-UPDATE, (lambda (game dt) …) or #f, run first in GAME's frames."
   (check-game "game-engine-update-set!" game)
-  (check-procedure-or-false "game-engine-update-set!" "engine-update" engine-update)
+  (check-hook-or-false "game-engine-update-set!" 'engine-update engine-update)
   (%game-engine-update-set! game engine-update))
 
 ;; Checked where it is given, not first in a frame, where the error would
@@ -251,7 +260,7 @@ warning; it defaults to (strict-games), which `downstroke test' sets."
                (list max-frame-delay frame-delay) #f))
   (check-input-script "make-game" input-script)
   (check-scene-or-false "make-game" scene)
-  (for-each (lambda (what proc) (check-procedure-or-false "make-game" what proc))
+  (for-each (lambda (what proc) (check-hook-or-false "make-game" what proc))
             '(update render engine-update) (list update render engine-update))
   (let ((display (and (renderer-available?) (%make-display width height))))
     (when display
@@ -374,6 +383,7 @@ every game run from now on, after the hooks added before it."
   (unless (procedure? proc)
     (scm-error 'wrong-type-arg "add-frame-hook!" "proc: expected a procedure of no arguments, got ~S"
                (list proc) #f))
+  (check-hook "add-frame-hook!" "proc" proc '())
   (set! frame-hooks (append frame-hooks (list proc))))
 (define (remove-frame-hook! proc)
   "Stop calling PROC (the very procedure add-frame-hook! was given) each frame."

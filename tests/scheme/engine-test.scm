@@ -513,4 +513,49 @@
     (eval '(set! *gravity* 2) m)
     (eval '*gravity* m)))
 
+;;; ---------------------------------------------------------------- hooks of the wrong shape
+;;; Refused where they are given, naming the hook, what it must take, what
+;;; the procedure takes and where it was written.
+(for-each
+ (lambda (case)
+   (test-equal (car case) (cons 'wrong-type-arg (cadr case)) (run-text (caddr case) #t)))
+ '(("make-game update: of one argument"
+    "In procedure make-game: update: expected a procedure of (game dt), got a procedure of (game), at game.scm:1:19\n"
+    "(make-game update: (lambda (game) game))")
+   ("… named, at its define"
+    "In procedure make-game: update: expected a procedure of (game dt), got update-player, a procedure of (game), at game.scm:1:8\n"
+    "(let () (define (update-player game) game) (make-game update: update-player))")
+   ("make-game render: of two"
+    "In procedure make-game: render: expected a procedure of (game), got a procedure of (game dt), at game.scm:1:19\n"
+    "(make-game render: (lambda (game dt) game))")
+   ("make-game engine-update: needing a third, optional shown in brackets"
+    "In procedure make-game: engine-update: expected a procedure of (game dt), got a procedure of (game dt scene [x]), at game.scm:1:26\n"
+    "(make-game engine-update: (lambda* (game dt scene #:optional x) game))")
+   ("a case-lambda none of whose clauses takes two"
+    "In procedure make-game: update: expected a procedure of (game dt), got a procedure of (g) or (g d e), at game.scm:1:19\n"
+    "(make-game update: (case-lambda ((g) 1) ((g d e) 2)))")
+   ("game-update-set! to a thunk"
+    "In procedure game-update-set!: update: expected a procedure of (game dt), got a procedure of no arguments, at game.scm:1:30\n"
+    "(game-update-set! (make-game) (lambda () 1))")
+   ("game-engine-update-set! to one of three"
+    "In procedure game-engine-update-set!: engine-update: expected a procedure of (game dt), got a procedure of (a b c), at game.scm:1:37\n"
+    "(game-engine-update-set! (make-game) (lambda (a b c) 1))")
+   ("add-frame-hook! on a procedure of the game"
+    "In procedure add-frame-hook!: proc: expected a procedure of no arguments, got a procedure of (game), at game.scm:1:17\n"
+    "(add-frame-hook! (lambda (game) game))")
+   ("a procedure with no source (Guile's own) is described by its count"
+    "In procedure make-game: update: expected a procedure of (game dt), got car, a procedure of 1 argument\n"
+    "(make-game update: car)")
+   ("an interpreted one, whose location Guile does not keep, by its count too"
+    "In procedure make-game: update: expected a procedure of (game dt), got a procedure of 1 argument\n"
+    "(make-game update: (primitive-eval '(lambda (game) game)))")))
+(test-assert "hooks that can take their arguments are taken: optional, rest, case-lambda, keywords"
+  (every game?
+         (list (make-game update: (lambda (game dt . more) #t) render: (lambda* (game #:optional dt) #t))
+               (make-game update: (case-lambda ((game) #t) ((game dt) #t)) render: (lambda args #t))
+               (make-game update: (lambda* (game dt #:key verbose?) #t) engine-update: #f)
+               (make-game update: (primitive-eval '(case-lambda ((g) 1) ((g d) 2)))))))
+(test-assert "an interpreted case-lambda is taken: only its fewest arguments are certain"
+  (game? (make-game update: (primitive-eval '(case-lambda ((g) 1) ((g d e) 2))))))
+
 (test-end "engine")
