@@ -7,8 +7,10 @@
 ;;; written.
 (define-module (downstroke arity)
   #:use-module (srfi srfi-1)
-  #:use-module ((system vm program)
-                #:select (program? program-arguments-alists program-source))
+  ;; Loaded only for a hook that may not fit: (system vm program) brings
+  ;; the VM's debugging modules, which a game that runs need not carry
+  ;; (docs/engine.org, "Memory against time").
+  #:autoload (system vm program) (program? program-arguments-alists program-source)
   #:export (check-hook))
 
 ;; One clause's (required …) (optional …) (rest . name-or-#f) alist.
@@ -18,28 +20,30 @@
     (and (<= required n) (or (assq-ref clause 'rest) (<= n (+ required optional))))))
 
 (define (takes? proc n)
-  ;; Only a certain mismatch is refused. A compiled procedure lists each
-  ;; clause (a case-lambda has several); an interpreted one with optional or
-  ;; rest arguments lists only a rest argument, and then only its minimum
-  ;; arity, the fewest arguments any clause requires, can be trusted.
+  ;; Only a certain mismatch is refused. The minimum arity is exact for a
+  ;; procedure of one clause; of a case-lambda it is the fewest arguments
+  ;; any clause requires, so a count beyond it asks the clauses: a compiled
+  ;; procedure lists each, an interpreted one with optional or rest
+  ;; arguments only a rest argument (taking it, unchecked).
   (let ((arity (procedure-minimum-arity proc)))
     (cond ((not arity) #t)
           ((< n (car arity)) #f)
+          ((or (caddr arity) (<= n (+ (car arity) (cadr arity)))) #t)
           ((program? proc)
            (let ((clauses (program-arguments-alists proc)))
              (or (not clauses) (any (lambda (clause) (clause-takes? clause n)) clauses))))
-          (else (or (caddr arity) (<= n (+ (car arity) (cadr arity))))))))
+          (else #f))))
 
 ;; The evaluator's own file: an interpreted procedure's source is the
 ;; evaluator's closure there, not where its author wrote it.
 (define evaluator-file
-  (let ((source (program-source (primitive-eval '(lambda () #f)) 0)))
-    (and source (cadr source))))
+  (delay (let ((source (program-source (primitive-eval '(lambda () #f)) 0)))
+           (and source (cadr source)))))
 
 (define (authored-source proc)
   ;; (file line . column), line counted from 0, or #f when unknown.
   (let ((source (and (program? proc) (program-source proc 0))))
-    (and source (cadr source) (not (equal? (cadr source) evaluator-file))
+    (and source (cadr source) (not (equal? (cadr source) (force evaluator-file)))
          (cdr source))))
 
 (define (count-text n)
