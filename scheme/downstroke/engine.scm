@@ -33,22 +33,87 @@
             gc-space-divisor set-gc-space-divisor!
             game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log))
 
-;;; Input: what is held this frame, and what was held the frame before.
+;;; What a game's input map binds, for its input to check queries against
+;;; and complete scripted clicks with. BOUND holds each action some key,
+;;; button or mouse input names: a query of any other action is a
+;;; misspelling or a missing binding, as no player can hold it, and is
+;;; warned about once per game (WARNED). CLICKS is ((action button …) …),
+;;; in the map's order: the actions a mouse button holds.
+(define-record-type <bindings>
+  (make-bindings bound warned clicks)
+  bindings?
+  (bound bindings-bound)      ; hashq: action → #t
+  (warned bindings-warned)    ; hashq: action → #t, once warned about
+  (clicks bindings-clicks))
+
+;; The button a mouse input's name holds, as input-mouse lists it: names
+;; are read in any case, as the renderer reads them (parse_binding).
+(define mouse-button-names '(("mouse:left" . left) ("mouse:middle" . middle) ("mouse:right" . right)))
+
+(define (map-bindings map)
+  ;; MAP is as %display-set-input-map! accepted it; a build without the
+  ;; renderer checks nothing, so what is not (action name …) is passed over.
+  (let ((bound (make-hash-table)))
+    (let loop ((entries (if (list? map) map '())) (clicks '()))
+      (if (null? entries)
+          (make-bindings bound (make-hash-table) (reverse clicks))
+          (let* ((entry (car entries))
+                 (names (if (and (list? entry) (pair? entry) (symbol? (car entry)))
+                            (filter string? (cdr entry))
+                            '()))
+                 (buttons (filter-map (lambda (name) (assoc-ref mouse-button-names (string-downcase name)))
+                                      names)))
+            (unless (null? names) (hashq-set! bound (car entry) #t))
+            (loop (cdr entries)
+                  (if (null? buttons) clicks (cons (cons (car entry) buttons) clicks))))))))
+
+(define (warn-unbound! bindings who action)
+  (hashq-set! (bindings-warned bindings) action #t)
+  (let ((bound (sort (hash-map->list (lambda (action _) (symbol->string action)) (bindings-bound bindings))
+                     string<?)))
+    (format (current-warning-port)
+            "~a: warning: no key, button or mouse input in the game's input map holds the action '~a, so only an input script can; the map binds ~a~%"
+            who action (if (null? bound) "none" (string-join bound " ")))))
+
+;;; Input: what is held this frame, and what was held the frame before,
+;;; with the game's bindings (#f when they are not known: no renderer and
+;;; no input-map:).
 (define-record-type <input>
-  (make-input held previous)
+  (make-input held previous bindings)
   input?
   (held input-held-list)
-  (previous input-previous-list))
+  (previous input-previous-list)
+  (bindings input-bindings))
+
+(define (check-action who input action)
+  ;; One hash lookup a query; the warning is printed once per action and game.
+  (unless (input? input)
+    (scm-error 'wrong-type-arg who "input: expected a game's input (game-input), got ~S" (list input) #f))
+  (unless (symbol? action)
+    (scm-error 'wrong-type-arg who "action: expected a symbol, got ~S" (list action) #f))
+  (let ((bindings (input-bindings input)))
+    (when (and bindings
+               (not (hashq-ref (bindings-bound bindings) action))
+               (not (hashq-ref (bindings-warned bindings) action)))
+      (warn-unbound! bindings who action))))
 
 (define (input-held? input action)
-  "Whether ACTION (a symbol) is held this frame."
+  "Whether ACTION (a symbol) is held this frame. Asking for an action that
+no key, button or mouse input of the game's input map holds prints a
+warning naming it and the actions the map binds, once per action and game:
+no player could hold it, only an input script."
+  (check-action "input-held?" input action)
   (and (memq action (input-held-list input)) #t))
 (define (input-pressed? input action)
-  "Whether ACTION went down this frame."
-  (and (input-held? input action) (not (memq action (input-previous-list input)))))
+  "Whether ACTION went down this frame (held now, not the frame before);
+an action the input map does not bind is warned about as by input-held?."
+  (check-action "input-pressed?" input action)
+  (and (memq action (input-held-list input)) (not (memq action (input-previous-list input))) #t))
 (define (input-released? input action)
-  "Whether ACTION went up this frame."
-  (and (memq action (input-previous-list input)) (not (input-held? input action))))
+  "Whether ACTION went up this frame (held the frame before, not now); an
+action the input map does not bind is warned about as by input-held?."
+  (check-action "input-released?" input action)
+  (and (memq action (input-previous-list input)) (not (memq action (input-held-list input))) #t))
 
 ;;; The pointer rides in the held list as one element (mouse x y buttons),
 ;;; so the input log records it and a script replays it as it does keys.
@@ -67,7 +132,7 @@ picture (or there is no window, and the input script holds no mouse)."
               collision-mode substeps resting-contacts
               input input-script script-cursor frame sounds music history-size history
               display debug-draw input-log stack-limit pause-when-unfocused interpolate
-              strict slips-warned)
+              strict slips-warned bindings)
   game?
   (title game-title)
   (width game-width)
@@ -95,7 +160,8 @@ picture (or there is no window, and the input script holds no mouse)."
   (pause-when-unfocused game-pause-when-unfocused?)
   (interpolate game-interpolate?)
   (strict game-strict?)             ; a misspelt entity key is an error, not a warning
-  (slips-warned game-slips-warned)) ; the misspelt keys warned of, a hash table: once each
+  (slips-warned game-slips-warned)  ; the misspelt keys warned of, a hash table: once each
+  (bindings game-bindings))         ; a <bindings> of its input map, or #f when it is not known
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -262,16 +328,20 @@ warning; it defaults to (strict-games), which `downstroke test' sets."
   (check-scene-or-false "make-game" scene)
   (for-each (lambda (what proc) (check-hook-or-false "make-game" what proc))
             '(update render engine-update) (list update render engine-update))
-  (let ((display (and (renderer-available?) (%make-display width height))))
+  (let ((display (and (renderer-available?) (%make-display width height)))
+        ;; Without the renderer, no input-map: means no map is known (its
+        ;; default-input-map is ()): queries are not checked against it.
+        (bindings (and (or input-map (renderer-available?))
+                       (map-bindings (or input-map (default-input-map))))))
     (when display
       (%display-set-input-map! display (or input-map (default-input-map)))
       (%display-set-background! display background))
     (let ((game (%make-game title width height frame-delay scene update render engine-update
                             collision-mode substeps (and resting-contacts? #t)
-                            (make-input '() '()) input-script #f 0 (make-bounded-log) (make-bounded-log)
+                            (make-input '() '() bindings) input-script #f 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
                             display #f empty-input-log stack-limit (and pause-when-unfocused? #t)
-                            (and interpolate? #t) (and strict? #t) (make-hash-table))))
+                            (and interpolate? #t) (and strict? #t) (make-hash-table) bindings)))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       ;; Slips decoded before this game was made (a step-scene of its own)
       ;; are not this game's.
@@ -938,7 +1008,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
   (let ((frame (game-frame game)))
     (remember-scene! game)
     (record-input! game frame held)
-    (game-input-set! game (make-input held (input-held-list (game-input game))))
+    (game-input-set! game (make-input held (input-held-list (game-input game)) (game-bindings game)))
     (let ((engine (game-engine-update game)))
       (when engine (call-bounded game "engine-update:" (lambda () (engine game dt)))))
     (let ((update (game-update game)))

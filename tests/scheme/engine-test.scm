@@ -463,6 +463,55 @@
             (test-equal (format #f "a malformed pointer in a script is refused: ~s" bad) 'wrong-type-arg
               (catch #t (lambda () (make-game input-script: (list (cons 0 bad))) 'accepted) (lambda (key . _) key))))
           '(((mouse 1 2)) ((mouse 1 2 (fourth))) ((mouse "1" 2 ())) ((mouse 1 2 ()) (mouse 3 4 ())) ((mouse +nan.0 2 ()))))
+;;; ---------------------------------------------------------------- actions nobody can press
+;; The warning port's text while THUNK runs.
+(define (warnings-of thunk)
+  (let ((port (open-output-string)))
+    (parameterize ((current-warning-port port)) (thunk))
+    (get-output-string port)))
+(define (querying map actions)
+  ;; A game with input map MAP (#f: the default) whose update asks input-held?,
+  ;; input-pressed? and input-released? for each of ACTIONS, every frame.
+  (make-game engine-update: #f input-map: map input-script: '((1 . (jump)))
+             update: (lambda (game dt)
+                       (let ((in (game-input game)))
+                         (for-each (lambda (action)
+                                     (input-held? in action) (input-pressed? in action) (input-released? in action))
+                                   actions)))))
+(test-equal "an action no input binds: one warning per action and game, naming it and the bound actions, sorted"
+  (if (renderer-available?)
+      (string-append
+       "input-held?: warning: no key, button or mouse input in the game's input map holds the action 'jump, so only an input script can; the map binds a b down left quit right select start up wheel-down wheel-up\n"
+       "input-held?: warning: no key, button or mouse input in the game's input map holds the action 'fier, so only an input script can; the map binds a b down left quit right select start up wheel-down wheel-up\n")
+      "")  ; no renderer: no default map to check against
+  (warnings-of (lambda () (game-run! (querying #f '(jump a fier left jump)) frames: 3))))
+(test-equal "… and again for another game"
+  "input-released?: warning: no key, button or mouse input in the game's input map holds the action 'jump, so only an input script can; the map binds fire\n"
+  (warnings-of (lambda ()
+                 (let ((g (make-game input-map: '((fire "mouse:left") (jump)))))
+                   ;; (jump) names no input: nothing holds it.
+                   (input-released? (game-input g) 'jump)
+                   (input-held? (game-input g) 'fire)
+                   (input-pressed? (game-input g) 'jump)))))
+(test-equal "an empty input map binds none"
+  "input-pressed?: warning: no key, button or mouse input in the game's input map holds the action 'a, so only an input script can; the map binds none\n"
+  (warnings-of (lambda () (input-pressed? (game-input (make-game input-map: '())) 'a))))
+(test-equal "a scripted action still holds: the warning changes nothing"
+  '(#t #t #f)
+  (let ((g (make-game engine-update: #f input-map: '() input-script: '((0 . (jump)))))
+        (answers #f))
+    (game-run! g frames: 1)
+    (warnings-of (lambda ()
+                   (let ((in (game-input g)))
+                     (set! answers (list (input-held? in 'jump) (input-pressed? in 'jump) (input-released? in 'jump))))))
+    answers))
+(test-equal "an action must be a symbol"
+  "In procedure input-held?: action: expected a symbol, got \"jump\"\n"
+  (error-text (lambda () (input-held? (game-input (make-game)) "jump"))))
+(test-equal "… asked of a game's input"
+  "In procedure input-pressed?: input: expected a game's input (game-input), got #f\n"
+  (error-text (lambda () (input-pressed? #f 'a))))
+
 (test-equal "game-fullscreen? of a game never shown: #f" #f
   (if (renderer-available?) (game-fullscreen? (make-game)) #f))
 (test-equal "game-fullscreen-set! before the window opens is kept for it" #t
