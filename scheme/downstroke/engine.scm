@@ -38,7 +38,8 @@
 ;;; button or mouse input names: a query of any other action is a
 ;;; misspelling or a missing binding, as no player can hold it, and is
 ;;; warned about once per game (WARNED). CLICKS is ((action button …) …),
-;;; in the map's order: the actions a mouse button holds.
+;;; in the map's order: the actions a mouse button holds, so a scripted
+;;; click holds them as a real one does (scripted-held!).
 (define-record-type <bindings>
   (make-bindings bound warned clicks)
   bindings?
@@ -284,9 +285,11 @@ physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
 rest (both off by default). HISTORY keeps the scenes of
 that many past frames for game-rewind!. WIDTH × HEIGHT is the picture in
-pixels (a window shows it scaled up). INPUT-MAP binds keys and controller
-inputs to actions in a window, as ((action name …) …) — see
-default-input-map, which is used when it is #f. BACKGROUND, (r g b), is the
+pixels (a window shows it scaled up). INPUT-MAP binds keys, controller and
+mouse inputs to actions in a window, as ((action name …) …) — see
+default-input-map, which is used when it is #f; a click in the
+INPUT-SCRIPT, (mouse x y (left)), holds the actions bound to \"mouse:left\"
+as a real one does (middle and right likewise). BACKGROUND, (r g b), is the
 colour a frame is cleared to; #f uses the map's backgroundcolor, else the
 engine's (24 28 40). STACK-LIMIT is the Scheme stack, in bytes, each hook
 (engine-update, update, render, a frame hook) may use: past it the hook
@@ -640,11 +643,31 @@ has a tilemap — never past the map's right or bottom edge."
     (let pass ()
       (let ((ahead (cursor-ahead cursor)))
         (when (and (pair? ahead) (<= (caar ahead) frame))
-          (cursor-held-set! cursor (cdar ahead))
+          (cursor-held-set! cursor (with-clicked-actions (cdar ahead) (game-bindings game)))
           (cursor-since-set! cursor (caar ahead))
           (cursor-ahead-set! cursor (cdr ahead))
           (pass))))
     (cursor-held cursor)))
+
+;;; A scripted click holds what the input map binds to its buttons, as a
+;;; real click in a window does: HELD's actions, then those it lacks in the
+;;; map's order, then its pointer. A recording made in a window holds them
+;;; already and comes back as it is (eq?), so it replays frame for frame.
+(define (with-clicked-actions held bindings)
+  (let* ((pointer (mouse-element held))
+         (buttons (if pointer (cadddr pointer) '()))
+         (clicked (if (and bindings (pair? buttons))
+                      (fold (lambda (click acc)
+                              (if (and (any (lambda (b) (memq b buttons)) (cdr click))
+                                       (not (memq (car click) held))
+                                       (not (memq (car click) acc)))
+                                  (cons (car click) acc)
+                                  acc))
+                            '() (bindings-clicks bindings))
+                      '())))
+    (if (null? clicked)
+        held
+        (append (remove pair? held) (reverse clicked) (list pointer)))))
 
 ;;; Recording input, to replay a run exactly (a bug report, a determinism test).
 

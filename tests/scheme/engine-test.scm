@@ -463,6 +463,50 @@
             (test-equal (format #f "a malformed pointer in a script is refused: ~s" bad) 'wrong-type-arg
               (catch #t (lambda () (make-game input-script: (list (cons 0 bad))) 'accepted) (lambda (key . _) key))))
           '(((mouse 1 2)) ((mouse 1 2 (fourth))) ((mouse "1" 2 ())) ((mouse 1 2 ()) (mouse 3 4 ())) ((mouse +nan.0 2 ()))))
+;;; ---------------------------------------------------------------- scripted clicks
+;; A scripted click holds what the map binds to its buttons, as a real click
+;; in a window does: the script need not name fire too.
+(define clicking-map (append (default-input-map) '((fire "mouse:left" "X") (aim "MOUSE:RIGHT") (zoom "mouse:middle"))))
+(define (clicker script)
+  (let ((seen '()))
+    (let ((g (make-game engine-update: #f input-map: clicking-map input-script: script
+                        update: (lambda (game dt)
+                                  (let ((in (game-input game)))
+                                    (set! seen (cons (list (game-frame game) (input-held-actions in)
+                                                           (input-pressed? in 'fire) (input-released? in 'fire))
+                                                     seen)))))))
+      (game-run! g frames: 6)
+      (list g (reverse seen)))))
+(define clicked
+  (clicker '((0 . ()) (1 . ((mouse 3 4 (left)))) (2 . (up (mouse 3 4 (left right middle))))
+             (3 . ((mouse 5 4 (right)))) (4 . (fire (mouse 5 4 ()))) (5 . ()))))
+(test-equal "a scripted click holds the actions bound to its buttons: held, fire pressed, fire released"
+  '((0 () #f #f)
+    (1 (fire (mouse 3 4 (left))) #t #f)
+    (2 (up fire aim zoom (mouse 3 4 (left right middle))) #f #f)
+    (3 (aim (mouse 5 4 (right))) #f #t)
+    (4 (fire (mouse 5 4 ())) #t #f)
+    (5 () #f #t))
+  (cadr clicked))
+;; A window's recording holds the click's actions already: replayed, it
+;; holds each frame's list as recorded, no action twice.
+(define window-recording
+  '((0) (1 fire (mouse 3 4 (left))) (2 up fire aim zoom (mouse 3 4 (left right middle))) (3 aim (mouse 5 4 (right))) (4 fire (mouse 5 4 ())) (5)))
+(test-equal "the input log records what the clicks held: a window's recording"
+  window-recording (input-log->script (game-input-log (car clicked))))
+(test-equal "a window's recording replays frame for frame"
+  (cadr clicked) (cadr (clicker window-recording)))
+(test-equal "a script's own actions come first, those its click adds after them in the map's order, then the pointer"
+  '(a aim fire (mouse 0 0 (right left)))
+  (let ((g (make-game engine-update: #f input-map: '((quit "Escape") (aim "mouse:right") (fire "mouse:left") (a "Z"))
+                      input-script: '((0 . ((mouse 0 0 (right left)) a))))))
+    (game-run! g frames: 1)
+    (input-held-actions (game-input g))))
+(test-equal "a click no input map binds holds no action" '((mouse 1 1 (middle)))
+  (let ((g (make-game engine-update: #f input-map: clicking-map input-script: '((0 . ((mouse 1 1 (middle))))))))
+    (game-run! g frames: 1)
+    (delete 'zoom (input-held-actions (game-input g)))))
+
 ;;; ---------------------------------------------------------------- actions nobody can press
 ;; The warning port's text while THUNK runs.
 (define (warnings-of thunk)
