@@ -5,7 +5,7 @@
 ;;; picture scaled ×2 pixel-exactly with the box where the held key walked
 ;;; it; a change made from the REPL shows in the next screenshot; then Escape
 ;;; quits. Every wait is bounded.
-(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 rdelim) (ice-9 popen) (ice-9 binary-ports) (rnrs bytevectors))
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing) (ice-9 rdelim) (ice-9 popen) (ice-9 binary-ports) (rnrs bytevectors))
 
 (load "support.scm")
 
@@ -69,7 +69,8 @@
 
 (define out (pipe))
 (define socket-path (string-append dir "/repl.sock"))
-(define game (spawn host (list "--window" "--scale" "2" "--repl-server" socket-path game-script)
+(define recording (string-append dir "/recording.scm"))
+(define game (spawn host (list "--window" "--scale" "2" "--repl-server" socket-path "--record" recording game-script)
                     (port->fdes (cdr out))))
 (close-port (cdr out))
 (define from-game (car out))
@@ -208,6 +209,20 @@
   (kill game SIGKILL)
   (waitpid game))
 (test-equal "… which exits with status 0" 0 status)
+;; Its recording (--record) holds the click as the window saw it: the action
+;; bound to "mouse:left" with the pointer. Replayed headless, where a
+;; scripted click holds its bound actions too, every frame holds what it
+;; held in the window: nothing twice, nothing more.
+(define recorded (false-if-exception (read-input-script recording)))
+(test-assert "the window's recording holds the click: click, and the pointer at (30 12) with left held"
+  (and recorded (any (lambda (entry) (and (memq 'click entry) (member '(mouse 30 12 (left)) entry))) recorded)))
+(test-equal "… and replays headless as it was recorded" recorded
+  (and recorded
+       (let ((replay (make-game width: 64 height: 48 input-script: recorded
+                                input-map: (append (default-input-map) '((click "mouse:left"))))))
+         ;; To its last change: the quit that ended it is not in it.
+         (game-run! replay frames: (+ 1 (car (last recorded))))
+         (input-log->script (game-input-log replay)))))
 ;; pause-when-unfocused?: focus taken to the root window, the game stops
 ;; stepping; given back, it steps again at its own pace, no catch-up burst.
 (define (lines-within port seconds)
