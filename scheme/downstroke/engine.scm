@@ -87,15 +87,20 @@
   (bindings input-bindings))
 
 (define (check-action who input action)
-  ;; One hash lookup a query; the warning is printed once per action and game.
+  ;; A query of a bound action costs one hash lookup; the rest is the rare
+  ;; path: a wrong argument, no known map, or an action to warn about once
+  ;; per game.
+  (let ((bindings (and (input? input) (input-bindings input))))
+    (unless (and bindings (hashq-ref (bindings-bound bindings) action))
+      (check-unbound-action who input action))))
+
+(define (check-unbound-action who input action)
   (unless (input? input)
     (scm-error 'wrong-type-arg who "input: expected a game's input (game-input), got ~S" (list input) #f))
   (unless (symbol? action)
     (scm-error 'wrong-type-arg who "action: expected a symbol, got ~S" (list action) #f))
   (let ((bindings (input-bindings input)))
-    (when (and bindings
-               (not (hashq-ref (bindings-bound bindings) action))
-               (not (hashq-ref (bindings-warned bindings) action)))
+    (when (and bindings (not (hashq-ref (bindings-warned bindings) action)))
       (warn-unbound! bindings who action))))
 
 (define (input-held? input action)
