@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 # libbox2d-dev and gnuplot-nox only serve the benchmarks (the box2d path; the accuracy plot);
 # the SDL2 set is the renderer (window, capture, input, sound), with libvorbis-dev (libvorbisfile:
-# Ogg sounds are decoded by the sound bank itself, capped at the length they claim); xvfb, xauth, x11-apps (xwd)
+# Ogg sounds are decoded by the sound bank itself, capped at the length they claim) and libasound2-dev (alsa-lib,
+# given a silent error handler so that a machine without a sound card prints only the engine's one line); xvfb, xauth, x11-apps (xwd)
 # and xdotool serve the one test that opens a real window on a virtual display; clang and
 # libclang-rt-dev (libFuzzer, not pulled in by --no-install-recommends) build the fuzz targets;
 # emacs-nox and elpa-geiser (Debian 12's Geiser 0.10, Guile support included) run the test
@@ -16,7 +17,7 @@ cd "$(dirname "$0")/.."
 # corpus test's independent decoder (tests/tilemap_corpus/decode_tiled.py); tiled brings
 # tmxrasterizer, Tiled's own renderer, the oracle render.tiled-oracle compares drawn maps with.
 packages=(make pkg-config guile-3.0-dev libtinyxml2-dev doctest-dev zlib1g-dev libzstd-dev nlohmann-json3-dev libbox2d-dev gnuplot-nox
-          libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev libvorbis-dev xvfb xauth x11-apps xdotool clang libclang-rt-dev
+          libsdl2-dev libsdl2-image-dev libsdl2-mixer-dev libvorbis-dev libasound2-dev xvfb xauth x11-apps xdotool clang libclang-rt-dev
           emacs-nox elpa-geiser python3 python3-zstandard tiled)
 missing=()
 for p in "${packages[@]}"; do

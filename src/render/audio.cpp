@@ -11,6 +11,7 @@
 #include <span>
 #include <string_view>
 
+#include "alsa_quiet.hpp"
 #include "bounded_file.hpp"
 #include "constants.hpp"
 #include "music_format.hpp"
@@ -171,6 +172,8 @@ int mixer_volume(double v) { return int(std::lround(std::clamp(v, 0.0, 1.0) * MI
 
 SoundBank::SoundBank(bool audible) {
     if (audible) {
+        // The line below is all a machine without sound prints.
+        silence_alsa_messages();
         audible_ = open_mixer(nullptr);
         if (!audible_)
             std::fprintf(stderr, "downstroke: no audio device (%s); sound is off\n",

@@ -333,6 +333,23 @@
 (test-assert "opening the real audio device (as a window does) keeps the sounds loaded before"
   (begin ((@ (downstroke native) %open-audio!) #t)
          ((@ (downstroke native) %play-sound) 'jump)))
+;; A window on a machine without a sound card: the engine's one line is all
+;; of stderr (issue 46), not alsa-lib's eight "ALSA lib …" lines before it.
+;; ALSA is made to find no device on any machine: SDL is sent to it (not to
+;; a PulseAudio or PipeWire server) and its configuration, an empty file,
+;; defines no PCM at all.
+(define no-sound-card-stderr
+  (let ((empty-conf (string-append dir "/empty-asound.conf")))
+    (call-with-output-file empty-conf (lambda (port) #t))
+    (let* ((p (open-pipe* OPEN_READ "/bin/sh" "-c"
+                          (string-append "SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=alsa ALSA_CONFIG_PATH='" empty-conf
+                                         "' exec '" host "' --no-auto-compile --window '" data
+                                         "/scripts/capture-game.scm' 2 2>&1 >/dev/null")))
+           (text (get-string-all p)))
+      (list (status:exit-val (close-pipe p)) text))))
+(test-equal "a window with no sound card prints one line, and no ALSA lib lines"
+  '(0 "downstroke: no audio device (ALSA: Couldn't open audio device: No such file or directory); sound is off\n")
+  no-sound-card-stderr)
 (test-assert "a missing sound file is named"
   (mentions? (error-text (lambda () (load-sound 'x (string-append dir "/none.wav")))) "load-sound" "none.wav"))
 (test-assert "a directory is not a sound"
