@@ -1,6 +1,7 @@
 // The public entry points of loading a map, and the dispatch that sends each
 // file (map, tileset, template) to the reader its content calls for.
 #include "tile_shapes.hpp"
+#include "image_files.hpp"
 #include "map_build.hpp"
 #include "project.hpp"
 #include "readers.hpp"
@@ -65,6 +66,7 @@ Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
     inherit_tile_classes(map);
     warn_bad_shapes(map);
     check_object_gids(map, s);
+    check_image_files(s, map);
     for (ObjectLayer& layer : map.object_layers) layer.index = index_objects(map, layer);
     return map;
 }

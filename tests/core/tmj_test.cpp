@@ -468,9 +468,12 @@ TEST_CASE("project file refusals name the project file") {
 }
 
 TEST_CASE("a gid beyond every tileset: a warning naming map, layer and cell, or strict's error") {
+    // The tileset's picture is there (only opened at load, so any bytes do):
+    // the one warning is the gid's.
+    const TempFile image("beyond.png", "stand-in");
     const TempFile f("beyond.tmj", R"({"width":2,"height":1,"tilewidth":8,"tileheight":8,
         "tilesets":[{"firstgid":1,"name":"t","tilewidth":8,"tileheight":8,"tilecount":2,"columns":2,
-                     "image":"t.png","imagewidth":16,"imageheight":8}],
+                     "image":"ds-tmj-beyond.png","imagewidth":16,"imageheight":8}],
         "layers":[{"type":"tilelayer","name":"a","width":2,"height":1,"data":[1,9]}]})");
     const Tilemap m = load_tilemap(f.path, LoadOptions{});
     REQUIRE(m.warnings.size() == 1);

@@ -367,6 +367,24 @@
   (string-append "In procedure load-tilemap: " (map-file "scheme/says_nothing.tmj") ": " nothing-problem "\n")
   (error-text (lambda () (load-tilemap (map-file "scheme/says_nothing.tmj") #:strict? #t))))
 
+;; A tileset whose picture is missing (issue 46): found when the map loads,
+;; headless too, not only when a window first draws a tile of it.
+(define no-image-output (open-output-string))
+(define no-image-problem
+  (string-append "tileset 'gone' (no-image.tsx): image '" (map-file "render/absent.png")
+                 "' cannot be opened: No such file or directory"))
+(test-equal "a missing tileset picture is a warning naming the map, the tileset and the file"
+  (list (string-append (map-file "render/no-image.tmx") ": " no-image-problem "; its tiles cannot be drawn"))
+  (tilemap-warnings (parameterize ((current-warning-port no-image-output))
+                      (load-tilemap (map-file "render/no-image.tmx")))))
+(test-equal "… on the warning port"
+  (string-append "load-tilemap: warning: " (map-file "render/no-image.tmx") ": " no-image-problem
+                 "; its tiles cannot be drawn\n")
+  (get-output-string no-image-output))
+(test-equal "… and #:strict? #t refuses the map"
+  (string-append "In procedure load-tilemap: " (map-file "render/no-image.tmx") ": " no-image-problem "\n")
+  (error-text (lambda () (load-tilemap (map-file "render/no-image.tmx") #:strict? #t))))
+
 ;;; ---------------------------------------------------------------- errors
 (test-assert "missing file: the message names the file"
   (mentions? (error-text (lambda () (load-tilemap (map-file "no-such-map.tmx")))) "load-tilemap" "no-such-map.tmx"))
