@@ -19,7 +19,9 @@ its tile layers together (default 67108864, 64 M), MAX-BYTES the bytes read
 for the map and every file it names together (default 67108864, 64 MiB); #f
 keeps the default. Only regular files are read. A gid beyond every tileset
 loads as an empty, non-solid cell with a warning on (current-warning-port),
-kept in (tilemap-warnings map); STRICT? #t makes it an error instead.
+kept in (tilemap-warnings map), and so does a picture it names (a tileset's,
+a tile's, an image layer's) that cannot be opened; STRICT? #t makes each an
+error instead.
 PROJECT names a Tiled project file (.tiled-project) whose class types fill in
 the members a class property leaves at their defaults."
   (let ((tm (%load-tilemap path solid-gids max-cells max-bytes strict? project)))

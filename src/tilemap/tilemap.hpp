@@ -118,7 +118,8 @@ struct Tileset {
     int image_width = 0, image_height = 0;
     // The folder image paths are relative to: the .tsx's, or the map's when
     // the tileset is embedded. Empty for maps made in memory. Loading a map
-    // never opens its images; a renderer does when it first draws a tile.
+    // opens each of its images only to see that it can be read
+    // (image_files.hpp); a renderer decodes it when it first draws a tile.
     std::string image_dir;
     std::vector<TileInfo> tiles;  // sorted by id
     std::string type;  // class= of the tileset itself
@@ -248,8 +249,9 @@ struct Tilemap {
     // where tiles larger than a cell overlap.
     RenderOrder render_order = RenderOrder::RightDown;
     // Things the map does that Tiled allows but the loader had to interpret
-    // (a gid beyond every tileset, loaded as an empty, non-solid cell).
-    // Each names the file, the layer and the cell.
+    // (a gid beyond every tileset, loaded as an empty, non-solid cell; a
+    // picture that cannot be opened). Each names the file and where in it:
+    // the layer and the cell, the tileset or layer and the picture.
     std::vector<std::string> warnings;
     std::vector<uint32_t> extra_solid_gids;  // solid-gids: from the script
     std::vector<uint32_t> extra_one_way_gids;  // one-way-gids: from the script
@@ -314,8 +316,8 @@ private:
 struct LoadOptions {
     std::vector<uint32_t> solid_gids;  // more solid gids (extra_solid_gids)
     MapLimits limits;
-    // A gid beyond every tileset is an error (MapError) instead of a
-    // warning and an empty cell.
+    // A gid beyond every tileset, a tileset that says nothing or a picture
+    // that cannot be opened is an error (MapError) instead of a warning.
     bool strict = false;
     // A Tiled project file (.tiled-project), for the members a class
     // property leaves at its defaults; empty reads none and leaves them out.
