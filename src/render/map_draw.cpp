@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <numeric>
 
 #include "constants.hpp"
@@ -179,9 +178,8 @@ size_t draw_object_layer(Canvas& c, TileArt& art, const Tilemap& map, const Obje
 // it repeats on to fill the canvas.
 size_t draw_image_layer(Canvas& c, TileArt& art, const Tilemap& map, const LayerInfo& info, const LayerPaint& p) {
     if (info.image.empty()) return 0;
-    std::filesystem::path path(info.image);
-    if (path.is_relative() && !map.path.empty()) path = std::filesystem::path(map.path).parent_path() / path;
-    SDL_Surface* pic = art.picture(path.string(), info.image_trans, info.image_width, info.image_height);
+    SDL_Surface* pic = art.picture(layer_image_path(map, info.image), info.image_trans, info.image_width,
+                                   info.image_height);
     if (!pic || pic->w <= 0 || pic->h <= 0) return 0;
     const auto first = [](int64_t origin, int64_t size, bool repeat) {
         return repeat ? origin - floor_div(origin, size) * size - size : origin;

@@ -2,7 +2,6 @@
 
 #include <SDL_image.h>
 
-#include <filesystem>
 #include <span>
 #include <string_view>
 
@@ -109,11 +108,6 @@ const char* sdl_image_type(const ImageHeader& h) {
 
 }  // namespace
 
-std::string image_path(const Tileset& ts, const std::string& image) {
-    if (ts.image_dir.empty() || std::filesystem::path(image).is_absolute()) return image;
-    return (std::filesystem::path(ts.image_dir) / image).string();
-}
-
 bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rect& out, int columns) {
     const int tw = ts.tile_width, th = ts.tile_height;
     if (tw <= 0 || th <= 0) return false;
@@ -177,12 +171,12 @@ SDL_Surface* TileArt::cut(const Tileset& ts, uint32_t local_id, uint32_t flips) 
     if (ts.image.empty()) {  // an image collection: each tile its own picture
         const TileInfo* info = ts.tile(local_id);
         if (!info || info->image.empty()) return nullptr;
-        const std::string path = image_path(ts, info->image);
+        const std::string path = tileset_image_path(ts, info->image);
         img = image(path, ts.trans, "tileset image");
         note_size(path, img, info->image_width, info->image_height, "tileset image");
         r = {0, 0, img->w, img->h};
     } else {
-        const std::string path = image_path(ts, ts.image);
+        const std::string path = tileset_image_path(ts, ts.image);
         img = image(path, ts.trans, "tileset image");
         // Tiled cuts an image whose size is not the one its tileset declares
         // by its real size, counting its columns anew.

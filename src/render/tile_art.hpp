@@ -73,10 +73,6 @@ private:
     std::unordered_set<std::string> warned_;  // image paths warned of: has_animation
 };
 
-// The image path of a tileset (or of one of its collection tiles) as the
-// renderer opens it: relative to the tileset's image folder.
-std::string image_path(const Tileset& ts, const std::string& image);
-
 // Where local tile `id` sits in a single-image tileset of an image
 // `image_w` × `image_h` px, in `columns` columns (0: as many as fit);
 // false when it is beyond the image.

@@ -1,6 +1,5 @@
 #include "image_files.hpp"
 
-#include <filesystem>
 #include <unordered_map>
 
 #include "bounded_file.hpp"
@@ -75,17 +74,6 @@ void check_layers(const LoadState& s, Tilemap& map, const std::vector<LayerInfo>
 }
 
 }  // namespace
-
-std::string tileset_image_path(const Tileset& ts, const std::string& image) {
-    if (ts.image_dir.empty() || std::filesystem::path(image).is_absolute()) return image;
-    return (std::filesystem::path(ts.image_dir) / image).string();
-}
-
-std::string layer_image_path(const Tilemap& map, const std::string& image) {
-    const std::filesystem::path p(image);
-    if (p.is_absolute() || map.path.empty()) return image;
-    return (std::filesystem::path(map.path).parent_path() / p).string();
-}
 
 void check_image_files(const LoadState& s, Tilemap& map) {
     OpenProblems problems;

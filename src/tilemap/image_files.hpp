@@ -12,13 +12,6 @@
 
 namespace ds::build {
 
-// Where the renderer opens a picture `image` written in tileset `ts`: the
-// tileset's folder (image_dir) joined to it, unless it is absolute or the
-// tileset was made in memory.
-std::string tileset_image_path(const Tileset& ts, const std::string& image);
-// Where it opens an image layer's `image`: the map's folder joined to it.
-std::string layer_image_path(const Tilemap& map, const std::string& image);
-
 // Every tileset's image, every image-collection tile's image and every
 // image layer's image of `map` (nested in groups too), each distinct file
 // opened once. One that cannot be opened is a warning on the map naming

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <limits>
 #include <unordered_map>
 
@@ -250,6 +251,17 @@ void Tilemap::set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid) {
     if (c < 0 || r < 0 || c >= l.width || r >= l.height)
         throw std::out_of_range("tilemap: cell outside the layer");
     l.cells[static_cast<size_t>(r * l.width + c)] = gid;
+}
+
+std::string tileset_image_path(const Tileset& ts, const std::string& image) {
+    if (ts.image_dir.empty() || std::filesystem::path(image).is_absolute()) return image;
+    return (std::filesystem::path(ts.image_dir) / image).string();
+}
+
+std::string layer_image_path(const Tilemap& map, const std::string& image) {
+    const std::filesystem::path p(image);
+    if (p.is_absolute() || map.path.empty()) return image;
+    return (std::filesystem::path(map.path).parent_path() / p).string();
 }
 
 void set_tile(Tilemap& map, TileGrid& grid, size_t layer, int64_t col, int64_t row, uint32_t gid) {

@@ -290,6 +290,14 @@ struct Tilemap {
     void set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid);
 };
 
+// Where a picture the map names is opened (the loader checks it there, the
+// renderer decodes it there): a tileset's `image` (its own, or one of its
+// collection tiles') joined to the tileset's folder (image_dir), and an
+// image layer's joined to the map's folder; an absolute path, or one of a
+// map or tileset made in memory, as written.
+std::string tileset_image_path(const Tileset& ts, const std::string& image);
+std::string layer_image_path(const Tilemap& map, const std::string& image);
+
 // Edits a map and its physics grid in place: cell (col, row) of tile layer
 // `layer` holds the raw gid `gid` (0 clears it), and the grid's cell becomes
 // what the map now makes it (cell_kind), which gives the grid a new revision
