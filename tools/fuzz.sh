@@ -38,6 +38,8 @@ cmake --build "$build" --target downstroke-fuzzers >/dev/null
 mapfile -t args < "$fuzz_dir/$target.args"
 # plist: Guile's collector frees by scanning, so leak reports are noise there.
 [ "$target" = plist ] && export ASAN_OPTIONS=detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}
+# decode: SDL_image's JPEG loader leaks on some refused files (tests/fuzz/lsan-sdl.supp).
+[ "$target" = decode ] && export LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan-sdl.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}
 parallel=()
 ((jobs > 1)) && parallel=(-fork="$jobs" -ignore_crashes=0)
 echo "fuzz.sh: $target for $minutes min; findings in $fuzz_dir/artifacts/$target/"
