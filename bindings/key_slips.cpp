@@ -13,13 +13,15 @@ namespace {
 
 // The entity keys the engine reads besides the physics keys (keys.hpp):
 // the renderer's and the camera's.
-constexpr const char* kOtherEngineKeys[] = {"sprite", "flip-x?", "tag"};
+constexpr const char* kOtherEngineKeys[] = {"sprite",   "flip-x?",   "visible?",        "color",
+                                            "sprite-offset", "sprite-scale", "rotation", "animation",
+                                            "animation-start", "tag"};
 constexpr size_t kOtherCount = sizeof kOtherEngineKeys / sizeof *kOtherEngineKeys;
 constexpr size_t kEngineKeyCount = kPhysKeyCount + kOtherCount;
 
 const char* engine_key(size_t i) { return i < kPhysKeyCount ? key_name(static_cast<uint8_t>(i)) : kOtherEngineKeys[i - kPhysKeyCount]; }
 
-// The longest engine key is 14 characters (skip-pipelines): a name more than
+// The longest engine key is 15 characters (animation-start): a name more than
 // two longer is no slip, and the distance table stays on the stack.
 constexpr size_t kMaxCompared = 16;
 

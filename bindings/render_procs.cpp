@@ -3,6 +3,8 @@
 // with its input), the draw-* commands, frame capture, and sounds. Built only
 // with SDL2 (render_missing.cpp stands in without it).
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +28,7 @@
 #include "interpolate.hpp"
 #include "frame_compare.hpp"
 #include "scene_draw.hpp"
+#include "tile_animation.hpp"
 #include "tile_art.hpp"
 #include "window.hpp"
 
@@ -51,6 +54,7 @@ struct Display {
     std::vector<int64_t> now_ids, before_ids;   // their #:id tags
     std::vector<Trail> trails;
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    std::vector<AnimationFrame> frames;  // an #:animation list's, while it is read
     DrawCounts counts;
     size_t culled = 0;
     double ms = 0;
@@ -60,7 +64,8 @@ struct Display {
 
 SCM display_type = SCM_BOOL_F;
 SCM sym_world, sym_screen;
-SCM key_sprite, key_flip_x;
+SCM key_sprite, key_flip_x, key_visible, key_color, key_sprite_offset, key_sprite_scale, key_rotation,
+    key_animation, key_animation_start;
 
 void finalize_display(SCM obj) {
     delete static_cast<Display*>(scm_foreign_object_ref(obj, 0));
@@ -79,7 +84,7 @@ Display* display_of(SCM obj, const char* proc, Failure& f) {
 // ---------------------------------------------------------------- arguments
 
 // (r g b) or (r g b a), each an exact integer 0–255.
-bool color_arg(SCM v, Rgba& out, Failure& f) {
+bool color_arg(SCM v, Rgba& out, Failure& f, Arg what = "color") {
     uint8_t c[4] = {0, 0, 0, 255};
     const long n = scm_ilength(v);
     bool ok = n == 3 || n == 4;
@@ -89,7 +94,7 @@ bool color_arg(SCM v, Rgba& out, Failure& f) {
         if (ok) c[i] = static_cast<uint8_t>(scm_to_uint(SCM_CAR(p)));
     }
     if (!ok) {
-        fail_arg(f, "color", v, "(r g b) or (r g b a) of integers 0–255");
+        fail_arg(f, what, v, "(r g b) or (r g b a) of integers 0–255");
         return false;
     }
     out = {c[0], c[1], c[2], c[3]};
@@ -209,7 +214,120 @@ bool proper_list(SCM v, const char* what, Failure& f) {
     return false;
 }
 
-bool entity_view(SCM e, size_t index, EntityView& out, Failure& f) {
+// The game's clock as drawing reads it: the frame's ms (frame number ×
+// frame delay) and the frame delay, which turns an #:animation-start frame
+// into ms.
+struct SpriteClock {
+    double time_ms = 0, frame_ms = 0;
+};
+
+// A real in (0, kMaxSpriteScale].
+bool scale_factor(SCM v, double& out) {
+    Failure quiet;
+    return from_scm(v, out, "#:sprite-scale", quiet) && out > 0 && out <= kMaxSpriteScale;
+}
+
+// #:animation's picture at `ms` of the entity's own clock: a gid (its
+// tile's Tiled animation plays, as a map cell's does), or a list of
+// (gid . ms) played in order and over again.
+bool animation_gid(SCM v, double ms, EntityView& out, std::vector<AnimationFrame>& frames, Failure& f) {
+    if (!scm_is_pair(v) && !scm_is_null(v)) {
+        out.sprite_ms = ms;
+        return gid_arg(v, "#:animation", out.sprite, f);
+    }
+    const long n = scm_ilength(v);
+    if (n < 1 || n > kMaxAnimationFrames) {
+        fail_arg(f, "#:animation", v, "a gid or a list of 1 to %d (gid . ms)", int(kMaxAnimationFrames));
+        return false;
+    }
+    frames.clear();
+    for (SCM p = v; scm_is_pair(p); p = SCM_CDR(p)) {
+        SCM entry = SCM_CAR(p);
+        AnimationFrame a;
+        Failure quiet;
+        if (!scm_is_pair(entry) || !from_scm(SCM_CAR(entry), a.tile_id, "gid", quiet) ||
+            !from_scm(SCM_CDR(entry), a.duration_ms, "ms", quiet, 0, INT_MAX)) {
+            fail_arg(f, "#:animation", entry, "a frame (gid . ms): a gid and an exact integer of ms ≥ 0");
+            return false;
+        }
+        frames.push_back(a);
+    }
+    // The listed gids may be animated tiles themselves: they play by the
+    // same clock.
+    out.sprite_ms = ms;
+    out.sprite = animation_frame(frames, ms, frames.front().tile_id);
+    return true;
+}
+
+// The keys that say how an entity looks, read in one walk of its plist
+// (the first of a repeated key counts, as entity-ref reads it). With no
+// clock (the overlay's trails, the step before) only the body is wanted.
+bool entity_looks(SCM e, const SpriteClock& clock, EntityView& out, std::vector<AnimationFrame>& frames, Failure& f) {
+    SCM sprite = SCM_UNDEFINED, flip = SCM_UNDEFINED, visible = SCM_UNDEFINED, color = SCM_UNDEFINED,
+        offset = SCM_UNDEFINED, scale = SCM_UNDEFINED, rotation = SCM_UNDEFINED, animation = SCM_UNDEFINED,
+        start = SCM_UNDEFINED;
+    const std::pair<SCM, SCM*> wanted[] = {{key_sprite, &sprite},       {key_flip_x, &flip},
+                                           {key_visible, &visible},     {key_color, &color},
+                                           {key_sprite_offset, &offset}, {key_sprite_scale, &scale},
+                                           {key_rotation, &rotation},   {key_animation, &animation},
+                                           {key_animation_start, &start}};
+    for (SCM p = e; scm_is_pair(p) && scm_is_pair(SCM_CDR(p)); p = SCM_CDR(SCM_CDR(p))) {
+        SCM k = SCM_CAR(p);
+        if (!scm_is_keyword(k)) continue;
+        for (const auto& [key, slot] : wanted)
+            if (scm_is_eq(k, key)) {
+                if (SCM_UNBNDP(*slot)) *slot = SCM_CADR(p);
+                break;
+            }
+    }
+    const auto given = [](SCM v) { return !SCM_UNBNDP(v) && scm_is_true(v); };
+    out.visible = SCM_UNBNDP(visible) || scm_is_true(visible);
+    out.flip_x = given(flip);
+    if (given(sprite) && !gid_arg(sprite, "#:sprite", out.sprite, f)) return false;
+    if (given(color)) {
+        Rgba c;
+        if (!color_arg(color, c, f, "#:color")) return false;
+        out.color = c;
+    }
+    if (given(offset)) {
+        Failure quiet;  // one message for the pair, whichever half is bad
+        if (!(scm_is_pair(offset) && from_scm(SCM_CAR(offset), out.sprite_dx, "dx", quiet) &&
+              from_scm(SCM_CDR(offset), out.sprite_dy, "dy", quiet))) {
+            fail_arg(f, "#:sprite-offset", offset, "(dx . dy) of finite reals, in px");
+            return false;
+        }
+    }
+    if (given(scale)) {
+        const bool pair = scm_is_pair(scale);
+        if (!(pair ? scale_factor(SCM_CAR(scale), out.scale_x) && scale_factor(SCM_CDR(scale), out.scale_y)
+                   : scale_factor(scale, out.scale_x))) {
+            fail_arg(f, "#:sprite-scale", scale, "a real > 0 and at most %d, or a pair (sx . sy) of them",
+                     int(kMaxSpriteScale));
+            return false;
+        }
+        if (!pair) out.scale_y = out.scale_x;
+    }
+    if (given(rotation)) {
+        if (!from_scm(rotation, out.degrees, "#:rotation", f, "a finite real number of degrees")) return false;
+        out.degrees = std::fmod(out.degrees, 360.0);  // a turn of 10^20 degrees keeps its precision
+    }
+    if (given(animation)) {
+        int64_t first = 0;
+        if (given(start)) {
+            if (!scm_is_signed_integer(start, -kMaxAnimationStart, kMaxAnimationStart)) {
+                fail_arg(f, "#:animation-start", start, "a frame number: an exact integer from %lld to %lld",
+                         -(long long)kMaxAnimationStart, (long long)kMaxAnimationStart);
+                return false;
+            }
+            first = scm_to_int64(start);
+        }
+        if (!animation_gid(animation, clock.time_ms - double(first) * clock.frame_ms, out, frames, f)) return false;
+    }
+    return true;
+}
+
+bool entity_view(SCM e, size_t index, EntityView& out, Failure& f, const SpriteClock* clock = nullptr,
+                 std::vector<AnimationFrame>* frames = nullptr) {
     if (scm_ilength(e) < 0) {
         fail(f, "wrong-type-arg", scm_list_1(scm_from_size_t(index)),
              "entity ~S: expected a keyword plist, got a circular or improper list");
@@ -218,21 +336,22 @@ bool entity_view(SCM e, size_t index, EntityView& out, Failure& f) {
     Decoded dec;
     if (!decode_entity(e, dec, f)) return false;
     const Body& b = dec.body;
-    out = {b.x.v, b.y.v, b.w.v, b.h.v, b.vx.v, b.vy.v, 0, false,
-           b.solid, b.immovable, b.skips(kSkipEntityCollisions), b.on_ground, b.sensor};
-    SCM sprite = plist_get(e, key_sprite, SCM_BOOL_F);
-    if (scm_is_true(sprite) && !gid_arg(sprite, "#:sprite", out.sprite, f)) return false;
-    out.flip_x = scm_is_true(plist_get(e, key_flip_x, SCM_BOOL_F));
-    return true;
+    out = EntityView{};
+    out.x = b.x.v, out.y = b.y.v, out.w = b.w.v, out.h = b.h.v, out.vx = b.vx.v, out.vy = b.vy.v;
+    out.solid = b.solid, out.immovable = b.immovable, out.ghost = b.skips(kSkipEntityCollisions);
+    out.on_ground = b.on_ground, out.sensor = b.sensor;
+    return !clock || entity_looks(e, *clock, out, *frames, f);
 }
 
-bool entity_views(SCM entities, std::vector<EntityView>& out, Failure& f) {
+// The entities' bodies, and with a clock how each looks.
+bool entity_views(SCM entities, std::vector<EntityView>& out, Failure& f, const SpriteClock* clock = nullptr,
+                  std::vector<AnimationFrame>* frames = nullptr) {
     out.clear();
     if (!proper_list(entities, "entities", f)) return false;
     size_t i = 0;
     for (SCM p = entities; scm_is_pair(p); p = SCM_CDR(p), ++i) {
         out.emplace_back();
-        if (!entity_view(SCM_CAR(p), i, out.back(), f)) return false;
+        if (!entity_view(SCM_CAR(p), i, out.back(), f, clock, frames)) return false;
     }
     return true;
 }
@@ -336,7 +455,7 @@ bool between_steps(Display& d, SceneView& view, SCM entities, SCM between, Failu
 }
 
 SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, SCM debug, SCM history,
-                 SCM time_ms, SCM between) {
+                 SCM time_ms, SCM between, SCM frame_ms) {
     Failure f;
     Display* d = display_of(display, "game-draw", f);
     SceneView view;
@@ -347,9 +466,11 @@ SCM display_draw(SCM display, SCM tilemap, SCM cam_x, SCM cam_y, SCM entities, S
     if (d && !f && view.map) entity_layer_of(*view.map, view, f);
     if (d) view.background = d->background;
     if (d && !f && !SCM_UNBNDP(time_ms)) from_scm(time_ms, view.time_ms, "time-ms", f);
+    SpriteClock clock{view.time_ms, 0};
+    if (d && !f && !SCM_UNBNDP(frame_ms)) from_scm(frame_ms, clock.frame_ms, "frame-ms", f);
     if (d && !f && from_scm(cam_x, view.camera_x, "camera x", f) && from_scm(cam_y, view.camera_y, "camera y", f))
         guarded(f, nullptr, [&] {  // decoding the entities fills C++ vectors too
-            if (!entity_views(entities, d->entities, f)) return;
+            if (!entity_views(entities, d->entities, f, &clock, &d->frames)) return;
             if (!between_steps(*d, view, entities, between, f)) return;
             view.debug = scm_is_true(debug);
             d->trails.clear();
@@ -706,6 +827,13 @@ void register_render_procedures() {
     sym_screen = scm_permanent_object(scm_from_utf8_symbol("screen"));
     key_sprite = scm_permanent_object(scm_from_utf8_keyword("sprite"));
     key_flip_x = scm_permanent_object(scm_from_utf8_keyword("flip-x?"));
+    key_visible = scm_permanent_object(scm_from_utf8_keyword("visible?"));
+    key_color = scm_permanent_object(scm_from_utf8_keyword("color"));
+    key_sprite_offset = scm_permanent_object(scm_from_utf8_keyword("sprite-offset"));
+    key_sprite_scale = scm_permanent_object(scm_from_utf8_keyword("sprite-scale"));
+    key_rotation = scm_permanent_object(scm_from_utf8_keyword("rotation"));
+    key_animation = scm_permanent_object(scm_from_utf8_keyword("animation"));
+    key_animation_start = scm_permanent_object(scm_from_utf8_keyword("animation-start"));
 
     // The native code of (downstroke render)'s and (downstroke engine)'s
     // procedures, documented there; then the game loop's building blocks.
@@ -741,11 +869,11 @@ void register_render_procedures() {
         "(display): whether its window presents on the display's vertical blank.");
     define_procedure<1, 0, 0, refresh_rate>("%display-refresh-rate",
         "(display): the refresh rate, in Hz, of the display its window is on (60 when unknown).");
-    define_procedure<7, 2, 0, display_draw>("%display-draw!",
-        "(display tilemap camera-x camera-y entities debug? history [time-ms between]): draws a frame (and "
-        "shows it in the window); time-ms, the game's clock, picks each animated tile's frame; between, "
+    define_procedure<7, 3, 0, display_draw>("%display-draw!",
+        "(display tilemap camera-x camera-y entities debug? history [time-ms between frame-ms]): draws a frame "
+        "(and shows it in the window); time-ms, the game's clock, picks each animated tile's frame; between, "
         "(previous-entities alpha camera-x camera-y) of the step before, draws each entity and the camera "
-        "alpha of the way from then to now.");
+        "alpha of the way from then to now; frame-ms, the frame delay, turns #:animation-start into ms.");
     define_procedure<4, 0, 0, display_compare_png>("%display-compare-png",
         "(display golden actual diff): the last frame drawn against the golden PNG: #f when the same, (size w h) "
         "or (count x y expected actual) when not (then writing the frame to ACTUAL and a diff picture to DIFF).");

@@ -845,9 +845,11 @@ window."
                     (if scene (scene-entities scene) '())
                     (game-debug-draw? game)
                     (trail-scenes game)
-                    ;; The game's clock, for animated tiles.
+                    ;; The game's clock, for animated tiles, and a frame's
+                    ;; ms, for each entity's #:animation-start.
                     (* (game-frame game) (game-frame-delay game))
-                    between)))
+                    between
+                    (game-frame-delay game))))
 
 (define (game-capture game file)
   "Draw GAME's current frame — its map, entities, what its render: procedure

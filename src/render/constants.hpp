@@ -62,6 +62,19 @@ constexpr int64_t kMaxMidiFileBytes = int64_t(4) << 20;
 // 20 MB instead of growing until the machine runs out.
 constexpr int64_t kMaxDrawCommands = int64_t(1) << 18;
 
+// The largest #:sprite-scale: 64 makes a 16 px sprite 1024 px, past any
+// game's screen; a larger factor is a typo (a size given for a factor). A
+// drawn sprite costs at most the canvas's pixels whatever its scale.
+constexpr double kMaxSpriteScale = 64;
+// The most frames an #:animation list holds: every entity's list is read
+// each frame it is drawn, so its length is that entity's cost; a sprite
+// sheet's run of frames is a few to a few dozen, and 256 is ten seconds of
+// distinct pictures at 25 a second.
+constexpr long kMaxAnimationFrames = 256;
+// The largest #:animation-start, either side of 0: 2^53, where a frame
+// number stops being exact as a double (the clock is frame × delay, in ms).
+constexpr int64_t kMaxAnimationStart = int64_t(1) << 53;
+
 // The largest window scale tried when fitting the screen: beyond this a
 // pixel-art game is already huge, and a 64× surface blit would be wasteful.
 constexpr int kMaxScale = 16;
@@ -69,15 +82,13 @@ constexpr int kMaxScale = 16;
 // commonest refresh rate, and what Xvfb's displays are paced as.
 constexpr int kDefaultRefreshHz = 60;
 
-// A box for an entity with no #:sprite, and the overlay's boxes, by role.
-// Hues far apart so a glance tells them apart; alpha keeps the map visible.
+// The overlay's boxes, by role: hues far apart so a glance tells them apart.
 constexpr Rgba kSolidColor{80, 220, 100, 255};      // solid: takes part in push-apart
 constexpr Rgba kImmovableColor{80, 150, 255, 255};  // solid and never pushed
 constexpr Rgba kGhostColor{200, 110, 230, 255};     // solid but skips entity collisions
 constexpr Rgba kPlainColor{170, 170, 170, 255};     // not solid: moves through entities
 constexpr Rgba kRestingColor{250, 210, 70, 255};    // on the ground and not moving
 constexpr Rgba kSensorColor{90, 225, 225, 255};     // a sensor: notices overlaps, pushes nothing
-constexpr uint8_t kBoxFillAlpha = 64;               // the fill behind a box's outline
 
 // A cell whose gid no tileset holds: magenta, the colour no tileset uses
 // and every artist reads as "texture missing"; filled faintly and outlined

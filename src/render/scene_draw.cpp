@@ -10,6 +10,7 @@ namespace ds::render {
 
 namespace {
 
+// The debug overlay's colour for an entity's role.
 Rgba role_color(const EntityView& e) {
     if (e.sensor) return kSensorColor;
     if (e.immovable && e.solid) return kImmovableColor;
@@ -28,13 +29,6 @@ Box screen_box(const EntityView& e, int64_t cx, int64_t cy) {
 
 int clamp_int(int64_t v) { return int(std::clamp<int64_t>(v, -(1 << 30), 1 << 30)); }
 
-void draw_box(Canvas& c, const Box& b, Rgba color) {
-    Rgba fill = color;
-    fill.a = kBoxFillAlpha;
-    c.fill_rect(clamp_int(b.left), clamp_int(b.top), clamp_int(b.w), clamp_int(b.h), fill);
-    c.outline_rect(clamp_int(b.left), clamp_int(b.top), clamp_int(b.w), clamp_int(b.h), color);
-}
-
 // A box more than this far off the canvas cannot show: skipped before any
 // work, so entities far from the view cost one comparison.
 bool off_canvas(const Canvas& c, const Box& b, int margin) {
@@ -42,17 +36,57 @@ bool off_canvas(const Canvas& c, const Box& b, int margin) {
            b.top - margin > c.height();
 }
 
+// Where an entity's sprite goes: standing bottom-centred on its box (whole
+// px, as ever), then scaled about its bottom edge's middle (the feet stay
+// on the ground), moved by its offset and turned about its own centre.
+PictureBox sprite_box(const EntityView& e, const Box& b, SDL_Surface* pic) {
+    const int64_t left = b.left + (b.w - pic->w) / 2, bottom = b.top + b.h;
+    PictureBox p;
+    p.w = pic->w * e.scale_x, p.h = pic->h * e.scale_y;
+    p.cx = double(left) + pic->w / 2.0 + e.sprite_dx;
+    p.cy = double(bottom) - p.h / 2 + e.sprite_dy;
+    p.degrees = e.degrees, p.pivot_x = p.cx, p.pivot_y = p.cy;
+    return p;
+}
+
+// Whether a turned or scaled picture's box, turned any way about its
+// centre, misses the canvas.
+bool off_canvas(const Canvas& c, const PictureBox& p) {
+    const double r = std::hypot(p.w, p.h) / 2 + 1;
+    return !(p.cx + r >= 0 && p.cy + r >= 0 && p.cx - r <= c.width() && p.cy - r <= c.height());
+}
+
+void draw_sprite(Canvas& c, SDL_Surface* pic, const EntityView& e, const Box& b) {
+    if (e.plain_sprite()) {
+        c.blit(pic, clamp_int(b.left + (b.w - pic->w) / 2), clamp_int(b.top + b.h - pic->h));
+        return;
+    }
+    const PictureBox p = sprite_box(e, b, pic);
+    const double left = p.cx - p.w / 2, top = p.cy - p.h / 2;
+    if (p.degrees == 0 && p.w == pic->w && p.h == pic->h && left == std::floor(left) && top == std::floor(top) &&
+        std::fabs(left) < 1e9 && std::fabs(top) < 1e9)
+        c.blit(pic, int(left), int(top));  // moved by whole px: a copy, as an unmoved one
+    else
+        c.draw_picture(pic, p);
+}
+
+// An entity is its sprite, else (no sprite, or one no tileset holds) a box
+// filled with its #:color, else nothing: the overlay shows every body.
 void draw_entities(Canvas& c, TileArt& art, const SceneView& v, int64_t cx, int64_t cy,
                    DrawCounts& n) {
     for (const EntityView& e : v.entities) {
+        if (!e.visible || (!e.sprite && !e.color)) continue;
         const Box b = screen_box(e, cx, cy);
-        if (off_canvas(c, b, 256)) continue;
-        SDL_Surface* pic = e.sprite ? art.tile(e.sprite ^ (e.flip_x ? kFlipHorizontal : 0), v.time_ms) : nullptr;
+        const bool plain = e.plain_sprite();
+        if ((plain || !e.sprite) && off_canvas(c, b, 256)) continue;
+        SDL_Surface* pic =
+            e.sprite ? art.tile(e.sprite ^ (e.flip_x ? kFlipHorizontal : 0), e.sprite_ms.value_or(v.time_ms)) : nullptr;
         if (pic) {
-            c.blit(pic, clamp_int(b.left + (b.w - pic->w) / 2), clamp_int(b.top + b.h - pic->h));
+            if (!plain && off_canvas(c, sprite_box(e, b, pic))) continue;
+            draw_sprite(c, pic, e, b);
             ++n.sprites;
-        } else {
-            draw_box(c, b, role_color(e));
+        } else if (e.color) {
+            c.fill_rect(clamp_int(b.left), clamp_int(b.top), clamp_int(b.w), clamp_int(b.h), *e.color);
             ++n.boxes;
         }
     }

@@ -17,10 +17,26 @@ namespace ds::render {
 struct EntityView {
     double x = 0, y = 0, w = 0, h = 0;
     double vx = 0, vy = 0;
-    uint32_t sprite = 0;  // a raw gid of the map's tilesets; 0: draw a box
+    uint32_t sprite = 0;  // a raw gid of the map's tilesets; 0: none (a box only with `color`)
     bool flip_x = false;
     bool solid = false, immovable = false, ghost = false, on_ground = false;
     bool sensor = false;
+    // How the entity looks, never where its body is (#:visible?, #:color,
+    // #:sprite-offset, #:sprite-scale, #:rotation).
+    bool visible = true;
+    std::optional<Rgba> color = {};  // without a sprite: a box filled with it
+    double sprite_dx = 0, sprite_dy = 0;
+    double scale_x = 1, scale_y = 1;  // > 0: flips are flip_x's
+    double degrees = 0;               // clockwise, about the sprite's centre
+    // The clock its sprite's animated tile plays by (#:animation-start moves
+    // it); unset: the scene's, as a map cell's.
+    std::optional<double> sprite_ms = {};
+
+    // Whether the sprite is drawn as it stands in its sheet, with no offset,
+    // scale or turn: then it is a plain copy, culled by the body's box.
+    bool plain_sprite() const {
+        return sprite_dx == 0 && sprite_dy == 0 && scale_x == 1 && scale_y == 1 && degrees == 0;
+    }
 };
 
 // One entity's centres over the remembered frames, oldest first.

@@ -174,7 +174,7 @@ TEST_CASE("entities draw in the object layer the view names, so the layers after
     };
     m.layer_tree = {info(LayerKind::Tile, "back", 0), info(LayerKind::Object, "actors", 0),
                     info(LayerKind::Tile, "front", 1)};
-    const std::vector<EntityView> entities{{.x = 0, .y = 0, .w = 8, .h = 4, .solid = true}};
+    const std::vector<EntityView> entities{{.x = 0, .y = 0, .w = 8, .h = 4, .solid = true, .color = Rgba{255, 0, 255, 255}}};
     for (const bool between : {false, true}) {
         SceneView v;
         v.map = &m;
@@ -183,8 +183,8 @@ TEST_CASE("entities draw in the object layer the view names, so the layers after
         Canvas c(8, 4);
         TileArt art;
         draw_scene(c, art, v);
-        // The box's outline pixel at (4, 0) is the front tile's when the
-        // entities are between the layers, the box's when they are on top.
+        // The box's pixel at (4, 0) is the front tile's when the entities
+        // are between the layers, the box's when they are on top.
         CAPTURE(between);
         CHECK((c.pixel(4, 0) == sheet_color(3, 0, 0)) == between);
         CHECK(c.pixel(0, 0) != sheet_color(0, 0, 0));  // cell 0 has no front tile: the box shows

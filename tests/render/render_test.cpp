@@ -203,7 +203,7 @@ TEST_CASE("a sprite stands bottom-centred in its entity's box, flip-x mirrors it
     check_tile_at(c, 10, 0, 1, kFlipHorizontal);
 }
 
-TEST_CASE("an entity with no sprite is a box coloured by its role") {
+TEST_CASE("an entity with no sprite draws nothing unless it has a colour; the overlay outlines it by role") {
     std::vector<EntityView> es(6);
     es[0] = {.x = 0, .y = 0, .w = 4, .h = 4, .vx = 1, .solid = true};
     es[1] = {.x = 5, .y = 0, .w = 4, .h = 4, .solid = true, .immovable = true};
@@ -211,29 +211,143 @@ TEST_CASE("an entity with no sprite is a box coloured by its role") {
     es[3] = {.x = 15, .y = 0, .w = 4, .h = 4};
     es[4] = {.x = 20, .y = 0, .w = 4, .h = 4, .solid = true, .on_ground = true};
     es[5] = {.x = 25, .y = 0, .w = 4, .h = 4, .solid = true, .immovable = true, .sensor = true};
-    Canvas c(30, 4);
+    Canvas c(30, 20);  // the overlay's legend is along the bottom, below them
     TileArt art;
     SceneView v;
     v.entities = es;
+    const DrawCounts n = draw_scene(c, art, v);
+    CHECK(n.boxes == 0);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 30; ++x) CHECK(c.pixel(x, y) == kBackground);
+    v.debug = true;
     draw_scene(c, art, v);
     const Rgba roles[] = {kSolidColor, kImmovableColor, kGhostColor, kPlainColor, kRestingColor, kSensorColor};
     for (int i = 0; i < 6; ++i) {
         CAPTURE(i);
         CHECK(c.pixel(i * 5, 0) == roles[i]);  // the outline
-        CHECK(c.pixel(i * 5 + 3, 3) == roles[i]);
-        CHECK(c.pixel(i * 5 + 1, 1) == blended(roles[i], kBackground, kBoxFillAlpha));  // the fill
+        CHECK(c.pixel(i * 5 + 3, 1) == roles[i]);  // its right edge, above the ground mark
+        CHECK(c.pixel(i * 5 + 1, 1) == kBackground);  // an outline only
     }
-    CHECK(c.pixel(4, 0) == kBackground);  // between boxes
 }
 
-TEST_CASE("entities far outside the view are not drawn") {
-    std::vector<EntityView> es = {{.x = 1000, .y = 0, .w = 4, .h = 4}, {.x = 0, .y = 0, .w = 4, .h = 4}};
-    Canvas c(8, 8);
+TEST_CASE("an entity's colour fills its box, blended by its alpha; a sprite no map holds falls back to it") {
+    std::vector<EntityView> es(3);
+    es[0] = {.x = 1, .y = 1, .w = 3, .h = 2, .color = Rgba{200, 40, 60, 255}};
+    es[1] = {.x = 6, .y = 0, .w = 2, .h = 2, .color = Rgba{0, 100, 200, 128}};
+    es[2] = {.x = 9, .y = 0, .w = 1, .h = 1, .sprite = 3, .color = Rgba{1, 2, 3, 255}};  // no map: no picture
+    Canvas c(12, 4);
     TileArt art;
     SceneView v;
     v.entities = es;
+    CHECK(draw_scene(c, art, v).boxes == 3);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) CHECK(c.pixel(x, y) == (x >= 1 && x < 4 && y >= 1 && y < 3 ? Rgba{200, 40, 60, 255} : kBackground));
+    CHECK(c.pixel(7, 1) == blended({0, 100, 200, 255}, kBackground, 128));
+    CHECK(c.pixel(9, 0) == Rgba{1, 2, 3, 255});
+}
+
+TEST_CASE("a hidden entity draws nothing, sprite or colour") {
+    Tilemap m = map_with(1, 1, {0});
+    std::vector<EntityView> es(2);
+    es[0] = {.x = 0, .y = 0, .w = 4, .h = 4, .sprite = 2, .visible = false};
+    es[1] = {.x = 4, .y = 0, .w = 4, .h = 4, .visible = false, .color = Rgba{255, 0, 0, 255}};
+    Canvas c(8, 4);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
     const DrawCounts n = draw_scene(c, art, v);
-    CHECK(n.boxes == 1);
+    CHECK(n.sprites + n.boxes == 0);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x) CHECK(c.pixel(x, y) == kBackground);
+}
+
+TEST_CASE("a sprite's offset moves it by exactly (dx, dy); its body stays") {
+    Tilemap m = map_with(1, 1, {0});
+    std::vector<EntityView> es(1);
+    es[0] = {.x = 2, .y = 1, .w = 6, .h = 5, .sprite = 4, .sprite_dx = 5, .sprite_dy = -1};  // unmoved at (3, 2)
+    Canvas c(16, 8);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
+    CHECK(draw_scene(c, art, v).sprites == 1);
+    check_tile_at(c, 8, 1, 3, 0);
+    CHECK(c.pixel(3, 5) == kBackground);  // where it stood unmoved (below the moved one's rows)
+    CHECK(c.pixel(7, 2) == kBackground);
+}
+
+TEST_CASE("a sprite scaled 2 is twice its size, standing on the same bottom-centre") {
+    Tilemap m = map_with(1, 1, {0});
+    std::vector<EntityView> es(2);
+    // Unscaled, tile 1 would cover (4..7, 8..11): its bottom-centre is (6, 12).
+    es[0] = {.x = 4, .y = 8, .w = 4, .h = 4, .sprite = 2, .scale_x = 2, .scale_y = 2};
+    // Only x doubled: 8 × 4 on the same bottom-centre (18, 4).
+    es[1] = {.x = 16, .y = 0, .w = 4, .h = 4, .sprite = 3, .scale_x = 2};
+    Canvas c(28, 16);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
+    CHECK(draw_scene(c, art, v).sprites == 2);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            CAPTURE(x);
+            CAPTURE(y);
+            CHECK(c.pixel(2 + x, 4 + y) == sheet_color(1, x / 2, y / 2));
+        }
+    CHECK(c.pixel(1, 8) == kBackground);
+    CHECK(c.pixel(10, 8) == kBackground);
+    CHECK(c.pixel(5, 3) == kBackground);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x) CHECK(c.pixel(14 + x, y) == sheet_color(2, x / 2, y));
+    CHECK(c.pixel(13, 0) == kBackground);
+    CHECK(c.pixel(22, 0) == kBackground);
+}
+
+TEST_CASE("a sprite turned 90 degrees turns clockwise about its centre") {
+    Tilemap m = map_with(1, 1, {0});
+    std::vector<EntityView> es(1);
+    es[0] = {.x = 4, .y = 4, .w = 4, .h = 4, .sprite = 2, .degrees = 90};  // unturned: (4..7, 4..7), centre (6, 6)
+    Canvas c(12, 12);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
+    draw_scene(c, art, v);
+    // Clockwise on screen (y down): the offset (a, b) from the centre goes to
+    // (−b, a), so pixel (u, v)'s centre (4.5 + u, 4.5 + v) lands on
+    // (7.5 − v, 4.5 + u): pixel (7 − v, 4 + u). The top-left corner goes top-right.
+    for (int sv = 0; sv < kTile; ++sv)
+        for (int su = 0; su < kTile; ++su) {
+            CAPTURE(su);
+            CAPTURE(sv);
+            CHECK(c.pixel(7 - sv, 4 + su) == sheet_color(1, su, sv));
+        }
+    CHECK(c.pixel(7, 4) == sheet_color(1, 0, 0));
+    CHECK(c.pixel(8, 4) == kBackground);
+}
+
+TEST_CASE("each entity's animated sprite plays by its own clock; without one, by the scene's") {
+    Tilemap m = map_with(1, 1, {0});
+    TileInfo anim;  // local tile 0 plays 1 (100 ms), 3 (50 ms)
+    anim.id = 0;
+    anim.animation = {{1, 100}, {3, 50}};
+    m.tilesets[0].tiles = {anim};
+    std::vector<EntityView> es(3);
+    es[0] = {.x = 0, .y = 0, .w = 4, .h = 4, .sprite = 1, .sprite_ms = 0.0};
+    es[1] = {.x = 4, .y = 0, .w = 4, .h = 4, .sprite = 1, .sprite_ms = 100.0};
+    es[2] = {.x = 8, .y = 0, .w = 4, .h = 4, .sprite = 1};
+    Canvas c(12, 4);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
+    v.time_ms = 120;
+    draw_scene(c, art, v);
+    check_tile_at(c, 0, 0, 1, 0);
+    check_tile_at(c, 4, 0, 3, 0);
+    check_tile_at(c, 8, 0, 3, 0);
 }
 
 TEST_CASE("the debug overlay: outlines, velocity, ground mark, pushed pairs, trails") {

@@ -103,10 +103,29 @@
                          scene: (make-scene entities: (list '(#:x 2 #:y 2 #:width 10 #:height 10 #:solid? #t #:vx 2)
                                                             '(#:x 30 #:y 2 #:width 10 #:height 10 #:solid? #t #:immovable? #t)))))
 (capture-of boxes)
-(test-equal "an entity without a sprite is a box in its role's colour: solid" solid-green (game-pixel boxes 2 2))
+(test-equal "an entity without a sprite or #:color draws nothing" background (game-pixel boxes 2 2))
+(test-equal "… nor inside" background (game-pixel boxes 33 5))
+(game-debug-draw-set! boxes #t)
+(capture-of boxes)
+(test-equal "the overlay outlines it in its role's colour: solid" solid-green (game-pixel boxes 2 2))
 (test-equal "… immovable" immovable-blue (game-pixel boxes 30 2))
-(test-equal "… the overlay is off: no velocity" (game-pixel boxes 7 3) (game-pixel boxes 7 3))
-(test-assert "… and its centre is not the velocity colour" (not (equal? velocity-yellow (game-pixel boxes 11 7))))
+(game-debug-draw-set! boxes #f)
+(define coloured (make-game width: 16 height: 8
+                            scene: (make-scene entities: (list '(#:x 1 #:y 1 #:width 3 #:height 2 #:color (200 40 60))
+                                                               '(#:x 8 #:y 0 #:width 2 #:height 2 #:color (0 100 200 128))))))
+(capture-of coloured)
+(test-equal "#:color fills the entity's box: every pixel of it, and none beside"
+  '((200 40 60 255) (200 40 60 255) (200 40 60 255) (24 28 40 255) (24 28 40 255) (24 28 40 255))
+  (map (lambda (xy) (game-pixel coloured (car xy) (cdr xy))) '((1 . 1) (3 . 2) (2 . 1) (4 . 1) (1 . 3) (0 . 1))))
+;; Alpha 128 blends: c × 128/255 + background × 127/255, rounded.
+(test-equal "… blended by its alpha"
+  (append (map (lambda (c b) (inexact->exact (round (/ (+ (* c 128) (* b 127)) 255)))) '(0 100 200) '(24 28 40)) '(255))
+  (game-pixel coloured 8 0))
+(test-assert "a bad #:color is named by game-draw with its value"
+  (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8
+                                                             scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 1 #:height 1 #:color red))))
+                                                  (string-append dir "/x.png"))))
+             "game-draw" "#:color" "red"))
 (game-debug-draw-set! boxes #t)
 (test-assert "game-debug-draw? follows the setter" (game-debug-draw? boxes))
 (capture-of boxes)
@@ -195,9 +214,9 @@
     (game-capture game (string-append dir "/grass.png"))
     (append-map (lambda (y) (map (lambda (x) (game-pixel game (+ 96 x) (+ 160 y))) (iota 16))) (iota 16))))
 (define without-box (grass-cell-pixels '()))
-(define with-box (grass-cell-pixels (list '(#:x 96 #:y 160 #:width 16 #:height 16 #:solid? #t))))
+(define with-box (grass-cell-pixels (list '(#:x 96 #:y 160 #:width 16 #:height 16 #:solid? #t #:color (255 0 255)))))
 (define kept (count equal? without-box with-box))
-;; A box drawn on top would change all 256 pixels (its fill blends over each).
+;; A box drawn on top would change all 256 pixels (its colour covers each).
 (test-assert "an entity in the entity-layer is drawn under the layers after it: the grass stays in front, the box shows where it is clear"
   (< 0 kept 256))
 (define bad-layer-map (string-append dir "/bad-entity-layer.tmx"))
@@ -394,9 +413,9 @@
 (define between-game (make-game width: 32 height: 8))
 (define (draw-between previous alpha)
   ((@ (downstroke native) %display-draw!) ((@@ (downstroke engine) game-display) between-game) #f 0 0
-   (list '(#:x 10 #:y 0 #:width 4 #:height 4)) #f '() 0
+   (list '(#:x 10 #:y 0 #:width 4 #:height 4 #:color (170 170 170))) #f '() 0
    (and previous (list previous alpha 0 0))))
-(draw-between (list '(#:x 2 #:y 0 #:width 4 #:height 4)) 0.5)
+(draw-between (list '(#:x 2 #:y 0 #:width 4 #:height 4 #:color (170 170 170))) 0.5)
 (test-equal "between steps, a box is drawn α of the way: x 6 at α 0.5 from 2 to 10"
   '((170 170 170) (24 28 40) (24 28 40))
   (map (lambda (x) (list-head ((@ (downstroke native) %display-pixel) ((@@ (downstroke engine) game-display) between-game) x 0) 3)) '(6 5 10)))
