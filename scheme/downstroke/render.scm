@@ -2,12 +2,14 @@
 ;;; and how the host asked frames to be shown (headless, a window, captures).
 (define-module (downstroke render)
   #:use-module (downstroke native)
+  #:use-module ((downstroke entity) #:select (entity-set))
   #:export (renderer-available? display-mode capture-directory window-scale window-fullscreen frame-log-file
             record-file
             debug-draw-default
             current-display default-input-map
             draw-rect draw-line draw-sprite draw-text draw-label text-width
-            color-rgba load-sound load-music))
+            color-rgba load-sound load-music
+            entity-animate))
 
 (define (renderer-available?)
   "Whether this build can draw (it was built with SDL2)."
@@ -105,6 +107,18 @@ to 'screen (a HUD); the plate reaches 2 px beyond the text on every side."
                (+ (* 9 scale (- lines 1)) (* 7 scale) 4) label-plate #:fill? #t #:space space)
     (draw-text text (+ x scale) (+ y scale) label-shadow #:scale scale #:space space)
     (draw-text text x y color #:scale scale #:space space)))
+
+(define (entity-animate entity animation frame)
+  "ENTITY playing ANIMATION from FRAME on: #:animation set to ANIMATION (a
+gid whose tile has a Tiled animation, or a list of (gid . ms)) and
+#:animation-start to FRAME (an exact integer, a frame number). Pass the
+game's frame to start it now, and again to restart it; entities given
+different frames play out of phase. The picture depends only on the scene
+and the frame drawn, so rewinding shows it again as it was."
+  (unless (exact-integer? frame)
+    (scm-error 'wrong-type-arg "entity-animate" "frame: expected an exact integer (a frame number), got ~S"
+               (list frame) #f))
+  (entity-set (entity-set entity #:animation animation) #:animation-start frame))
 
 ;;; A file a build without the renderer can only check is there.
 (define (check-sound-file who what name file)

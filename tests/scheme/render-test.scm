@@ -202,6 +202,122 @@
 (test-assert "a bad sprite gid is named"
   (mentions? (error-in-render (lambda () (draw-sprite -1 0 0))) "draw-sprite" "gid" "-1"))
 
+;;; ---------------------------------------------------------------- sprites that act like sprites
+;; The game is 96 px wide and the map 48: from x 48 on, only the background
+;; is under the entities. Expected pixels come from the sheet's definition:
+;; tile T's pixel (u, v) is (sheet T u v).
+(define (sprite-game . entities)
+  (let ((game (make-game width: 96 height: 32 scene: (make-scene tilemap: level entities: entities))))
+    (capture-of game)
+    game))
+(define (pixels game left top w h)
+  (append-map (lambda (y) (map (lambda (x) (game-pixel game (+ left x) (+ top y))) (iota w))) (iota h)))
+(define (all-background? game left top w h)
+  (every (lambda (p) (equal? p background)) (pixels game left top w h)))
+
+(test-assert "an entity with a sprite is drawn …"
+  (tile-drawn? (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2)) 48 0 1 #f #f #f))
+(test-assert "… and #:visible? #f hides it"
+  (all-background? (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2 #:visible? #f)) 48 0 8 8))
+(define offset-game (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2 #:sprite-offset (5 . 3))))
+(test-assert "#:sprite-offset (5 . 3) moves the picture by exactly 5 right and 3 down" (tile-drawn? offset-game 53 3 1 #f #f #f))
+(test-assert "… leaving no pixel where it stood" (all-background? offset-game 48 0 5 3))
+(test-equal "… and the body where it was" '(48 0)
+  (let ((e (car (scene-entities (game-scene offset-game))))) (list (entity-ref e #:x) (entity-ref e #:y))))
+;; Unscaled, the sprite would cover (60..67, 8..15); scaled 2 it keeps its
+;; bottom-centre (64, 16): 16 × 16 px from (56, 0), each sheet pixel 2 × 2.
+(test-equal "#:sprite-scale 2 doubles the picture about its bottom-centre"
+  (append-map (lambda (y) (map (lambda (x) (sheet 1 (quotient x 2) (quotient y 2))) (iota 16))) (iota 16))
+  (pixels (sprite-game '(#:x 60 #:y 8 #:width 8 #:height 8 #:sprite 2 #:sprite-scale 2)) 56 0 16 16))
+(test-equal "#:sprite-scale (2 . 1) doubles only its width"
+  (append-map (lambda (y) (map (lambda (x) (sheet 1 (quotient x 2) y)) (iota 16))) (iota 8))
+  (pixels (sprite-game '(#:x 60 #:y 0 #:width 8 #:height 8 #:sprite 2 #:sprite-scale (2 . 1))) 56 0 16 8))
+;; Turned 90° clockwise (y down) about its centre (52, 20): the offset (a, b)
+;; from the centre goes to (−b, a), so pixel (u, v) lands on (48 + 7 − v, 16 + u).
+(test-equal "#:rotation 90 turns the picture clockwise about its centre"
+  (append-map (lambda (y) (map (lambda (x) (sheet 1 y (- 7 x))) (iota 8))) (iota 8))
+  (pixels (sprite-game '(#:x 48 #:y 16 #:width 8 #:height 8 #:sprite 2 #:rotation 90)) 48 16 8 8))
+
+;; Two enemies play the same animation, gid 2 then gid 3, 100 ms each, one
+;; from frame 0 and one from frame 7: at 16 ms a frame, frame 10 is 160 ms
+;; into the first's (gid 3) and 48 ms into the second's (gid 2).
+(define walk '((2 . 100) (3 . 100)))
+(define animated
+  (make-game width: 96 height: 32 history: 30
+             scene: (make-scene tilemap: level
+                                entities: (list (entity-animate '(#:x 48 #:y 0 #:width 8 #:height 8) walk 0)
+                                                (entity-animate '(#:x 64 #:y 0 #:width 8 #:height 8) walk 7)))))
+(define (animation-tiles game)
+  (capture-of game)
+  (map (lambda (x) (find (lambda (t) (tile-drawn? game x 0 t #f #f #f)) '(1 2))) '(48 64)))
+(game-run! animated frames: 10)
+(define at-10 (animation-tiles animated))
+(test-equal "two entities with one animation and different starts show different frames (tiles 2 and 1 at frame 10)"
+  '(2 1) at-10)
+(game-run! animated frames: 15)   ; on to frame 15
+(test-equal "… each moves on by its own clock (frame 15: 240 and 128 ms in)" '(1 2) (animation-tiles animated))
+(game-rewind! animated 5)
+(test-equal "… and rewound to frame 10 they show frame 10's pictures again" at-10 (animation-tiles animated))
+(test-equal "… drawn twice, the same" at-10 (animation-tiles animated))
+(test-equal "an animation starting later than the frame drawn shows its first picture" '(1)
+  (let ((g (make-game width: 96 height: 32
+                      scene: (make-scene tilemap: level entities: (list (entity-animate '(#:x 48 #:y 0 #:width 8 #:height 8) walk 50))))))
+    (list-head (animation-tiles g) 1)))
+(test-equal "entity-animate sets both keys" '((4 . 10) 3)
+  (let ((e (entity-animate '(#:x 0) '((4 . 10)) 3))) (list (car (entity-ref e #:animation)) (entity-ref e #:animation-start))))
+
+;; A gid whose tile has a Tiled animation plays it from #:animation-start.
+(define animated-sheet (string-append dir "/animated.tmx"))
+(call-with-output-file animated-sheet
+  (lambda (port)
+    (format port "<map orientation=\"orthogonal\" width=\"1\" height=\"1\" tilewidth=\"8\" tileheight=\"8\">
+ <tileset firstgid=\"1\" name=\"sheet\" tilewidth=\"8\" tileheight=\"8\" tilecount=\"4\" columns=\"2\">
+  <image source=\"~a/maps/render/sheet.png\" width=\"16\" height=\"16\"/>
+  <tile id=\"0\"><animation><frame tileid=\"1\" duration=\"100\"/><frame tileid=\"2\" duration=\"100\"/></animation></tile>
+ </tileset>
+ <layer name=\"ground\" width=\"1\" height=\"1\"><data encoding=\"csv\">0</data></layer>
+</map>" data)))
+(define tiled-animated
+  (make-game width: 32 height: 8
+             scene: (make-scene tilemap: (load-tilemap animated-sheet)
+                                entities: (list (entity-animate '(#:x 0 #:y 0 #:width 8 #:height 8) 1 0)
+                                                (entity-animate '(#:x 16 #:y 0 #:width 8 #:height 8) 1 7)))))
+(game-run! tiled-animated frames: 10)
+(capture-of tiled-animated)
+(test-assert "#:animation as a gid plays its tile's Tiled animation by the entity's clock: tile 2 at 160 ms …"
+  (tile-drawn? tiled-animated 0 0 2 #f #f #f))
+(test-assert "… tile 1 at 48 ms" (tile-drawn? tiled-animated 16 0 1 #f #f #f))
+
+(define (look-error . entity)
+  (error-text (lambda () (game-capture (make-game width: 8 height: 8 scene: (make-scene tilemap: level entities: (list entity)))
+                                       (string-append dir "/x.png")))))
+(test-equal "a bad #:sprite-offset is named by game-draw with its value"
+  "In procedure game-draw: #:sprite-offset: expected (dx . dy) of finite reals, in px, got (1 . +nan.0)\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:sprite 2 #:sprite-offset '(1 . +nan.0)))
+(test-equal "a #:sprite-scale of 0 is refused"
+  "In procedure game-draw: #:sprite-scale: expected a real > 0 and at most 64, or a pair (sx . sy) of them, got 0\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:sprite 2 #:sprite-scale 0))
+(test-equal "… and one past 64"
+  "In procedure game-draw: #:sprite-scale: expected a real > 0 and at most 64, or a pair (sx . sy) of them, got (1 . 65)\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:sprite 2 #:sprite-scale '(1 . 65)))
+(test-equal "a bad #:rotation is named"
+  "In procedure game-draw: #:rotation: expected a finite real number of degrees, got left\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:sprite 2 #:rotation 'left))
+(test-equal "a bad #:animation frame is named"
+  "In procedure game-draw: #:animation: expected a frame (gid . ms): a gid and an exact integer of ms ≥ 0, got (3 . -5)\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:animation '((2 . 10) (3 . -5))))
+(test-equal "an empty #:animation is refused"
+  "In procedure game-draw: #:animation: expected a gid or a list of 1 to 256 (gid . ms), got ()\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:animation '()))
+(test-assert "… and one of 257 frames"
+  (mentions? (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:animation (make-list 257 '(2 . 10)))
+             "game-draw" "#:animation" "a list of 1 to 256 (gid . ms)"))
+(test-equal "a bad #:animation-start is named"
+  "In procedure game-draw: #:animation-start: expected a frame number: an exact integer from -9007199254740992 to 9007199254740992, got 1.5\n"
+  (look-error #:x 0 #:y 0 #:width 1 #:height 1 #:animation 2 #:animation-start 1.5))
+(test-assert "entity-animate names a bad frame"
+  (mentions? (error-text (lambda () (entity-animate '(#:x 0) 2 'now))) "entity-animate" "frame" "now"))
+
 ;;; ---------------------------------------------------------------- entities between layers
 ;; The platformer's map names its object layer "spawns" in the property
 ;; entity-layer; its layer "front" (grass at cell (6, 10)) comes after it, so
