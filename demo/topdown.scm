@@ -6,7 +6,8 @@
 ;;; and the coins come from the map's object layer; walking over a coin
 ;;; (found with scene-query-rect) collects it. A guard patrols the bottom of
 ;;; the room and turns where a ray (scene-raycast) finds a wall just ahead;
-;;; it is not solid and does the player no harm.
+;;; it is not solid and does the player no harm. The guard's walk and the
+;;; coins' glints are #:animation lists, out of phase by #:animation-start.
 ;;;
 ;;; Keys (in a window): the arrows or WASD walk (diagonals too), Return
 ;;; starts again, Escape quits.
@@ -30,7 +31,14 @@
 (define player-standing (sprite 0))
 (define player-walking (sprite 1))
 (define coin-picture (sprite 10))
-(define guard-pictures (vector (sprite 3) (sprite 4)))
+;;; Animations, as (gid . ms) lists the renderer plays by the game's clock
+;;; from each entity's #:animation-start: a guard's two-step walk, and a
+;;; coin's glint (the picture mirrored for a moment, its highlight jumping
+;;; across). Each coin starts its glint at its own frame, so they glint one
+;;; after another, not all together.
+(define guard-walk (list (cons (sprite 3) 128) (cons (sprite 4) 128)))
+(define coin-glint (list (cons coin-picture 600) (cons (logior coin-picture #x80000000) 120)))
+(define coin-phase 9)                   ; frames between two coins' glints: 5 coins × 9 = the 45-frame cycle
 
 (load-demo-sounds! 'coin)
 (load-demo-music!)
@@ -52,12 +60,13 @@
             (list #:speed (entity-ref spawn #:speed 3) #:vx 0 #:vy 0 #:gravity? #f #:score 0))))
 
 (define coins0
-  (map (lambda (o) (append (object->entity o) (list #:sprite coin-picture))) (objects-of-type 'coin)))
+  (map (lambda (o i) (entity-animate (object->entity o) coin-glint (- (* i coin-phase))))
+       (objects-of-type 'coin) (iota (length (objects-of-type 'coin)))))
 
 ;;; The guard walks along rows 12–13, between the block and the bottom wall.
 (define guard0
   (list #:id 'guard #:type 'guard #:x 100 #:y 196 #:width 12 #:height 12 #:vx 2 #:vy 0
-        #:gravity? #f #:sprite (vector-ref guard-pictures 0)))
+        #:gravity? #f #:animation guard-walk))
 
 (define (entities-of-type scene type)
   (filter (lambda (e) (eq? (entity-ref e #:type) type)) (scene-entities scene)))
@@ -157,13 +166,13 @@
                               (lambda (e) #f)))
          (vx (if wall (- vx) vx)))
     (when wall (note! game (list 'turn (entity-ref guard #:id) 'x x)))
-    (entity-set (entity-set (entity-set guard #:vx vx) #:flip-x? (negative? vx))
-                #:sprite (vector-ref guard-pictures (modulo (quotient (game-frame game) 8) 2)))))
+    (entity-set (entity-set guard #:vx vx) #:flip-x? (negative? vx))))
 
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
 (define (draw-hud! game)
-  ;; The player and the coins are drawn by the engine from their #:sprite.
+  ;; The entities are drawn by the engine: the player from its #:sprite, the
+  ;; coins and the guard from their #:animation.
   (let* ((entities (scene-entities (game-scene game)))
          (left (length (entities-of-type (game-scene game) 'coin)))
          (total (length coins0))

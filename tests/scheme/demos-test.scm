@@ -279,6 +279,10 @@ demos' top-level names stay in that module."
     '((92 turn guard x 286) (224 turn guard x 22) (356 turn guard x 286))
     (filter (lambda (e) (eq? (cadr e) 'turn)) (events-of topdown)))
   (test-equal "a 'coin sound for each" '(17 73 147 210 325) (map car (game-sounds (game-of topdown))))
+  (test-equal "the coins glint out of phase: each starts its animation 9 frames before the next"
+    '(0 -9 -18 -27 -36) (map (lambda (c) (entity-ref c #:animation-start)) (ref topdown 'coins0)))
+  (test-equal "the guard walks by its #:animation, not a #:sprite set each frame" '(#f #t)
+    (let ((g (by-id 'guard (entities-of topdown)))) (list (entity-ref g #:sprite) (pair? (entity-ref g #:animation)))))
   (test-assert "walked over the grass at cell (5, 5) (not solid)"
     (any (lambda (k) (let ((x (entity-ref (t-at k) #:x)) (y (entity-ref (t-at k) #:y)))
                        (aabb-overlap? x y 12 12 80 80 16 16)))
