@@ -10,7 +10,7 @@
 
 (define (walker)
   (make-game width: 32 height: 16
-             scene: (make-scene entities: '((#:id w #:x 0 #:y 4 #:width 4 #:height 4)))
+             scene: (make-scene entities: '((#:id w #:x 0 #:y 4 #:width 4 #:height 4 #:color (170 170 170))))
              update: (lambda (game dt)
                        (let* ((s (game-scene game)) (e (car (scene-entities s))))
                          (when (input-held? (game-input game) 'right)
@@ -61,7 +61,7 @@
       (test-assert "… and writes the frame and a diff picture beside the golden one"
         (and (file-exists? (string-append dir "/walker.actual.png"))
              (file-exists? (string-append dir "/walker.diff.png"))))
-      (test-assert "… naming the two colours there: the golden box's outline expected, the background got"
+      (test-assert "… naming the two colours there: the golden box's colour expected, the background got"
         (mentions? text "expected (170 170 170 255)" "got (24 28 40 255)")))
     (let ((broken (string-append dir "/broken.png")))
       (call-with-output-file broken (lambda (p) (display "\x89PNG\r\n\x1a\nnot a picture" p)))
