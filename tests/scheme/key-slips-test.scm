@@ -51,6 +51,16 @@
                                                                #:flip-x? #t #:sprite 2 #:tag 't #:vx 1))))
            #:frames 3))))
 
+(test-equal "the renderer's look keys are engine keys, and a slip of one is said"
+  "game-run!: warning: entity key #:rotaton is not one the engine reads (entity 0 of the list): did you mean #:rotation?\n"
+  (warnings-of
+   (lambda ()
+     (play (make-game strict?: #f
+                      scene: (make-scene entities: (list (list #:x 0 #:visible? #t #:color '(1 2 3) #:sprite-offset '(1 . 2)
+                                                               #:sprite-scale 2 #:rotation 90 #:animation '((1 . 10))
+                                                               #:animation-start 0 #:rotaton 5))))
+           #:frames 2))))
+
 (test-equal "strict?: #t makes the first one an error, naming the key, the entity and the engine key"
   "In procedure game-run!: entity key #:sensr? is not one the engine reads (entity 0 of the list, #:id player): did you mean #:sensor?? (make-game strict?: #t makes this an error)\n"
   (error-text (lambda () (play (make-game strict?: #t scene: (misspelt-scene)) #:frames 1))))
