@@ -260,8 +260,8 @@ bool animation_gid(SCM v, double ms, EntityView& out, std::vector<AnimationFrame
 }
 
 // The keys that say how an entity looks, read in one walk of its plist
-// (the first of a repeated key counts, as entity-ref reads it). With no
-// clock (the overlay's trails, the step before) only the body is wanted.
+// (the first of a repeated key counts, as entity-ref reads it), so an
+// entity costs one walk whichever of them it has.
 bool entity_looks(SCM e, const SpriteClock& clock, EntityView& out, std::vector<AnimationFrame>& frames, Failure& f) {
     SCM sprite = SCM_UNDEFINED, flip = SCM_UNDEFINED, visible = SCM_UNDEFINED, color = SCM_UNDEFINED,
         offset = SCM_UNDEFINED, scale = SCM_UNDEFINED, rotation = SCM_UNDEFINED, animation = SCM_UNDEFINED,
@@ -309,7 +309,7 @@ bool entity_looks(SCM e, const SpriteClock& clock, EntityView& out, std::vector<
     }
     if (given(rotation)) {
         if (!from_scm(rotation, out.degrees, "#:rotation", f, "a finite real number of degrees")) return false;
-        out.degrees = std::fmod(out.degrees, 360.0);  // a turn of 10^20 degrees keeps its precision
+        out.degrees = std::fmod(out.degrees, 360.0);  // a whole turn is none: 360 draws as 0 does, a copy
     }
     if (given(animation)) {
         int64_t first = 0;
@@ -326,6 +326,8 @@ bool entity_looks(SCM e, const SpriteClock& clock, EntityView& out, std::vector<
     return true;
 }
 
+// An entity's body, and with a clock how it looks; without one (the
+// overlay's trails, the step before) only the body is wanted.
 bool entity_view(SCM e, size_t index, EntityView& out, Failure& f, const SpriteClock* clock = nullptr,
                  std::vector<AnimationFrame>* frames = nullptr) {
     if (scm_ilength(e) < 0) {
