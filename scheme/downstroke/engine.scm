@@ -412,9 +412,10 @@ the bytes it allocated (Boehm's count, exact to a few KB) and the time the
 collections took, which the decode and encode times leave out. It is the
 last step-scene run on this thread, which for a running game is its own
 last frame. A last row (render drawn culled ms) says what drawing the last
-frame cost: tiles, sprites, boxes and commands drawn, entities outside the
-view, and time (zeros until a frame is drawn, and always in a build without
-the renderer)."
+frame cost: tiles, sprites, boxes and commands drawn, entities not drawn
+(outside the view, hidden, or with neither a picture nor a #:color), and
+time (zeros until a frame is drawn, and always in a build without the
+renderer)."
   (let ((display (game-display game)))
     (append (%frame-stats) (list (if display (%display-stats display) '(render 0 0 0.0))))))
 

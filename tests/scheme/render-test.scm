@@ -217,8 +217,12 @@
 
 (test-assert "an entity with a sprite is drawn …"
   (tile-drawn? (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2)) 48 0 1 #f #f #f))
-(test-assert "… and #:visible? #f hides it"
-  (all-background? (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2 #:visible? #f)) 48 0 8 8))
+(define hidden-game (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2 #:visible? #f)
+                                 '(#:x 56 #:y 0 #:width 8 #:height 8)
+                                 '(#:x 64 #:y 0 #:width 8 #:height 8 #:sprite 2)))
+(test-assert "… and #:visible? #f hides it" (all-background? hidden-game 48 0 8 8))
+(test-equal "engine-stats counts the hidden one and the one with nothing to draw as not drawn" 2
+  (caddr (assq 'render (engine-stats hidden-game))))
 (define offset-game (sprite-game '(#:x 48 #:y 0 #:width 8 #:height 8 #:sprite 2 #:sprite-offset (5 . 3))))
 (test-assert "#:sprite-offset (5 . 3) moves the picture by exactly 5 right and 3 down" (tile-drawn? offset-game 53 3 1 #f #f #f))
 (test-assert "… leaving no pixel where it stood" (all-background? offset-game 48 0 5 3))
