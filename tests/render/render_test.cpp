@@ -277,6 +277,21 @@ TEST_CASE("a sprite's offset moves it by exactly (dx, dy); its body stays") {
     CHECK(c.pixel(7, 2) == kBackground);
 }
 
+TEST_CASE("a moved, scaled or turned sprite is culled where its picture is, not its body") {
+    Tilemap m = map_with(1, 1, {0});
+    std::vector<EntityView> es(3);
+    es[0] = {.x = -40, .y = 0, .w = 4, .h = 4, .sprite = 4, .scale_x = 64, .scale_y = 64, .degrees = 45};  // huge, reaching in
+    es[1] = {.x = 0, .y = 0, .w = 4, .h = 4, .sprite = 3, .sprite_dx = 2000};      // body in view, picture far away
+    es[2] = {.x = 1000, .y = 0, .w = 4, .h = 4, .sprite = 2, .sprite_dx = -1000};  // body far away, picture at (0, 0)
+    Canvas c(8, 4);
+    TileArt art;
+    SceneView v;
+    v.map = &m;
+    v.entities = es;
+    CHECK(draw_scene(c, art, v).sprites == 2);
+    check_tile_at(c, 0, 0, 1, 0);
+}
+
 TEST_CASE("a sprite scaled 2 is twice its size, standing on the same bottom-centre") {
     Tilemap m = map_with(1, 1, {0});
     std::vector<EntityView> es(2);
