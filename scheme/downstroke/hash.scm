@@ -4,6 +4,7 @@
 (define-module (downstroke hash)
   #:use-module ((downstroke native) #:select (%scene-hash-entities))
   #:use-module (downstroke world)
+  #:use-module ((downstroke plain-data) #:select (plain-data-hash))
   #:export (scene-hash))
 
 (define (scene-hash scene)
@@ -13,7 +14,14 @@
 zero count; a missing key is exact 0) and #:on-ground?. Nothing else counts:
 not other keys (#:id, #:solid?, your own), not key order, not the tilemap
 or the camera. The byte layout is in src/state_hash.hpp;
-(downstroke reference-hash) computes the same value in plain Scheme."
+(downstroke reference-hash) computes the same value in plain Scheme.
+A scene whose scene-data is not #f hashes it too, after the entities: its
+written text, so equal? data hashes alike. The data must then be plain data
+(numbers, symbols, keywords, strings, chars, booleans, lists, pairs and
+vectors of them); anything else (a procedure, a record, a hash table) is an
+error naming scene-hash, never hashed as if it were something else."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "scene-hash" "expected a scene, got ~S" (list scene) #f))
-  (%scene-hash-entities (scene-entities scene)))
+  (let ((h (%scene-hash-entities (scene-entities scene)))
+        (data (scene-data scene)))
+    (if data (plain-data-hash h "scene-hash" data) h)))

@@ -10,6 +10,7 @@
   #:use-module (rnrs bytevectors)
   #:use-module (srfi srfi-1)
   #:use-module (downstroke world)
+  #:use-module ((downstroke plain-data) #:select (plain-data-hash))
   #:export (scene-hash))
 
 ;;; ---------------------------------------------------------------- FNV-1a 64
@@ -83,8 +84,10 @@ the native decoder does: keys in order, each physics key's first value."
 hash) hashes it, computed in plain Scheme."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "scene-hash" "expected a scene, got ~S" (list scene) #f))
-  (let ((entities (scene-entities scene)))
-    (let loop ((p entities) (h fnv-offset-basis))
-      (cond ((null? p) h)
-            ((pair? p) (loop (cdr p) (hash-entity h (car p))))
-            (else (fail "expected a list of entities, got ~S" entities))))))
+  (let* ((entities (scene-entities scene))
+         (h (let loop ((p entities) (h fnv-offset-basis))
+              (cond ((null? p) h)
+                    ((pair? p) (loop (cdr p) (hash-entity h (car p))))
+                    (else (fail "expected a list of entities, got ~S" entities))))))
+    ;; The data is text, not physics: one implementation serves both.
+    (if (scene-data scene) (plain-data-hash h "scene-hash" (scene-data scene)) h)))

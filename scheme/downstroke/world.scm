@@ -4,7 +4,7 @@
   #:use-module ((downstroke native) #:select (tilemap?))
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
-            scene-contacts
+            scene-contacts scene-data
             scene-map-entities scene-transform-entities
             make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
 
@@ -44,7 +44,7 @@ X and Y must be finite real numbers."
   (%camera-y-set! camera y))
 
 (define-record-type <scene>
-  (%make-scene* entities tilemap camera camera-target contacts)
+  (%make-scene* entities tilemap camera camera-target contacts data)
   scene?
   (entities scene-entities)
   (tilemap scene-tilemap)
@@ -52,10 +52,19 @@ X and Y must be finite real numbers."
   (camera-target scene-camera-target)
   ;; The pairs the last step-scene pushed apart with a #:contacts? entity
   ;; (semantics §10): a report of the frame that made the scene.
-  (contacts %scene-contacts))
+  (contacts %scene-contacts)
+  ;; The game's own state (score, lives, flags): any Scheme value, carried
+  ;; by every scene made from this one, so a rewind restores it.
+  (data %scene-data))
 
-(define (%make-scene entities tilemap camera camera-target)
-  (%make-scene* entities tilemap camera camera-target '()))
+(define (scene-data scene)
+  "The game's own value SCENE holds (make-scene data:, update-scene data:),
+#f unless one was given. Every scene made from SCENE (update-scene,
+step-scene, scene-map-entities, a frame of the game) keeps it, so a rewound
+game has the data it had in that frame."
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg "scene-data" "expected a scene, got ~S" (list scene) #f))
+  (%scene-data scene))
 
 (define (scene-contacts scene)
   "The pairs (name-a . name-b) the step-scene that made SCENE pushed apart
@@ -87,33 +96,35 @@ made. update-scene keeps them."
     (scm-error 'wrong-type-arg who "camera: expected a camera (make-camera), got ~S" (list camera) #f)))
 
 (define* (make-scene #:key (entities '()) (tilemap #f) (camera (make-camera))
-                     (camera-target #f))
-  "A scene: the entity list, an optional tilemap, a camera, and optionally the
-#:id (or #:tag) of the entity the camera follows."
+                     (camera-target #f) (data #f))
+  "A scene: the entity list, an optional tilemap, a camera, optionally the
+#:id (or #:tag) of the entity the camera follows, and DATA, any value the
+game keeps with the scene (score, lives, flags; #f by default)."
   (check-entities "make-scene" entities)
   (check-scene-parts "make-scene" tilemap camera)
-  (%make-scene entities tilemap camera camera-target))
+  (%make-scene* entities tilemap camera camera-target '() data))
 
 (define* (update-scene scene #:key (entities (scene-entities (checked-scene scene)))
                        (tilemap (scene-tilemap (checked-scene scene)))
                        (camera (scene-camera (checked-scene scene)))
-                       (camera-target (scene-camera-target (checked-scene scene))))
+                       (camera-target (scene-camera-target (checked-scene scene)))
+                       (data (%scene-data (checked-scene scene))))
   "A copy of SCENE with the given fields replaced."
   (check-scene "update-scene" scene)
   (check-entities "update-scene" entities)
   (check-scene-parts "update-scene" tilemap camera)
-  (%make-scene* entities tilemap camera camera-target (%scene-contacts scene)))
+  (%make-scene* entities tilemap camera camera-target (%scene-contacts scene) data))
 
 (define (%scene-with-entities scene entities)
   "SCENE with ENTITIES, a list the caller vouches for (no O(n) list? check):
 for the native steps, whose result is always a proper list."
   (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
-                (scene-camera-target scene) (%scene-contacts scene)))
+                (scene-camera-target scene) (%scene-contacts scene) (%scene-data scene)))
 
 (define (%scene-after-frame scene entities contacts)
   "SCENE after a frame: its ENTITIES and its CONTACTS (a step-scene's)."
   (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
-                (scene-camera-target scene) contacts))
+                (scene-camera-target scene) contacts (%scene-data scene)))
 
 (define (map-keeping proc lst)
   ;; Like map, but returns LST itself when PROC returned every element as is.
