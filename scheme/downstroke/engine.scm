@@ -29,6 +29,7 @@
             input-mouse mouse-world-position game-fullscreen-set! game-fullscreen?
             default-engine-update camera-follow! game-run!
             game-history game-rewind! add-frame-hook! remove-frame-hook!
+            game-paused? game-paused-set!
             strict-games frame-pacing hook-error-reporter hook-time-limit main-script? script-number-argument engine-stats
             gc-space-divisor set-gc-space-divisor!
             game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log))
@@ -138,7 +139,7 @@ picture (or there is no window, and the input script holds no mouse)."
               collision-mode substeps resting-contacts
               input input-script script-cursor frame sounds music history-size history
               display debug-draw input-log stack-limit pause-when-unfocused interpolate
-              strict slips-warned bindings)
+              strict slips-warned bindings paused paused-update paused-ticks pause-marks)
   game?
   (title game-title)
   (width game-width)
@@ -167,7 +168,14 @@ picture (or there is no window, and the input script holds no mouse)."
   (interpolate game-interpolate?)
   (strict game-strict?)             ; a misspelt entity key is an error, not a warning
   (slips-warned game-slips-warned)  ; the misspelt keys warned of, a hash table: once each
-  (bindings game-bindings))         ; a <bindings> of its input map, or #f when it is not known
+  (bindings game-bindings)          ; a <bindings> of its input map, or #f when it is not known
+  (paused game-paused? %game-paused-set!)      ; game-paused-set!: ticks run the paused: hook, not a frame
+  (paused-update game-paused-update)          ; (game dt) called in each paused tick, or #f
+  ;; Ticks spent paused so far: the input clock (input-clock) counts them.
+  (paused-ticks game-paused-ticks game-paused-ticks-set!)
+  ;; A bounded log of (frame . paused-ticks after the pause at that frame),
+  ;; newest first: where a rewind finds the input clock of the frame it goes to.
+  (pause-marks game-pause-marks game-pause-marks-set!))
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
@@ -194,7 +202,7 @@ collision mode, substeps and resting contacts."
 
 ;; The arguments the frame loop calls each of a game's hooks with
 ;; (step-game!): one home, for the checks and the messages.
-(define hook-arguments '((engine-update game dt) (update game dt) (render game)))
+(define hook-arguments '((engine-update game dt) (update game dt) (render game) (paused game dt)))
 
 (define (check-hook-or-false who what proc)
   (check-procedure-or-false who what proc)
@@ -284,7 +292,7 @@ collision mode, substeps and resting contacts."
                     (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
                     (input-script '()) (history 0) (input-map #f) (background #f)
                     (stack-limit default-stack-limit) (pause-when-unfocused? #f) (interpolate? #t)
-                    (strict? (strict-games)))
+                    (strict? (strict-games)) (paused #f))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
@@ -306,7 +314,10 @@ their last two steps, at the fraction of a step the clock has run, so
 motion is smooth at any refresh rate; physics is not touched, and headless
 runs and captures draw the stepped state. STRICT? makes an entity key that
 is a slip of an engine key (#:sensr? for #:sensor?) an error instead of a
-warning; it defaults to (strict-games), which `downstroke test' sets."
+warning; it defaults to (strict-games), which `downstroke test' sets.
+PAUSED, (lambda (game dt) …) or #f, is called instead of ENGINE-UPDATE and
+UPDATE in each tick while the game is paused (game-paused-set!): input and
+RENDER go on, nothing steps."
   (unless (and (exact-integer? history) (>= history 0))
     (scm-error 'wrong-type-arg "make-game" "history: expected a count of frames ≥ 0, got ~S"
                (list history) #f))
@@ -335,7 +346,7 @@ warning; it defaults to (strict-games), which `downstroke test' sets."
   (check-input-script "make-game" input-script)
   (check-scene-or-false "make-game" scene)
   (for-each (lambda (what proc) (check-hook-or-false "make-game" what proc))
-            '(update render engine-update) (list update render engine-update))
+            '(update render engine-update paused) (list update render engine-update paused))
   (let ((display (and (renderer-available?) (%make-display width height)))
         ;; Without the renderer, no input-map: means no map is known (its
         ;; default-input-map is ()): queries are not checked against it.
@@ -349,7 +360,8 @@ warning; it defaults to (strict-games), which `downstroke test' sets."
                             (make-input '() '() bindings) input-script #f 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
                             display #f empty-input-log stack-limit (and pause-when-unfocused? #t)
-                            (and interpolate? #t) (and strict? #t) (make-hash-table) bindings)))
+                            (and interpolate? #t) (and strict? #t) (make-hash-table) bindings
+                            #f paused 0 (make-bounded-log))))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       ;; Slips decoded before this game was made (a step-scene of its own)
       ;; are not this game's.
@@ -392,9 +404,52 @@ Returns that frame's number."
                  (list k (length past)) #f))
     (game-scene-set! game (cdr entry))
     (game-frame-set! game target)
+    (rewind-input-clock! game target)
     ;; Forget the future we left: the next frames record it anew.
     (game-history-log-set! game (list->bounded-log (filter (lambda (e) (< (car e) target)) past)))
     target))
+
+;;; ---------------------------------------------------------------- pause
+;;; A paused game ticks at its frame rate as it runs, but a tick steps
+;;; nothing: it reads input, calls the paused: hook and render:, and the
+;;; frame counter, the scene and the history stay as they were. Input is
+;;; read and recorded by the input clock, which counts every tick, paused
+;;; or not (frame + paused ticks): an input script can unpause a game, and
+;;; a session with pauses is recorded and replays as it was played.
+
+(define (game-paused-set! game on?)
+  "Pause GAME (ON? true) or go on (#f) from its next tick. While paused, a
+tick calls the paused: hook (make-game paused:) and render: with the tick's
+input, and nothing steps: not engine-update: nor update: (so no physics, no
+tweens), not the frame counter, not the history. Going on does not catch up:
+the next tick steps the frame the game stood at."
+  (check-game "game-paused-set!" game)
+  (%game-paused-set! game (and on? #t)))
+
+(define (input-clock game)
+  ;; The tick the input of the coming tick is read and recorded at.
+  (+ (game-frame game) (game-paused-ticks game)))
+
+(define (note-paused-tick! game)
+  ;; One more tick paused at the game's frame. The marks are only for
+  ;; rewinds, which go back at most history-size frames: that many marks
+  ;; (one a frame at most) are all a rewind can need.
+  (let* ((ticks (+ (game-paused-ticks game) 1))
+         (marks (game-pause-marks game))
+         (newest (bounded-log-newest marks 1))
+         (frame (game-frame game)))
+    (game-paused-ticks-set! game ticks)
+    (game-pause-marks-set! game (bounded-log-push (if (and (pair? newest) (= (caar newest) frame))
+                                                      (list->bounded-log (cdr (bounded-log-items marks)))
+                                                      marks)
+                                                  (cons frame ticks) (+ (game-history-size game) 1)))))
+
+(define (rewind-input-clock! game frame)
+  ;; Back to the input clock FRAME had when it was stepped: the ticks paused
+  ;; at or before it (a pause at FRAME came before its step).
+  (let ((kept (drop-while (lambda (mark) (> (car mark) frame)) (bounded-log-items (game-pause-marks game)))))
+    (game-pause-marks-set! game (list->bounded-log kept))
+    (game-paused-ticks-set! game (if (pair? kept) (cdar kept) 0))))
 
 ;;; ---------------------------------------------------------------- costs
 
@@ -731,7 +786,7 @@ frame 0 on: give it to input-log->script to replay a played session
 headless, frame for frame. A log that reached its bound (2^21 changes of
 input) ends at the frame before the first it did not record."
   (let* ((log (%game-input-log game))
-         (end (if (input-log-full-at log) (min (input-log-full-at log) (game-frame game)) (game-frame game))))
+         (end (if (input-log-full-at log) (min (input-log-full-at log) (input-clock game)) (input-clock game))))
     (let loop ((changes (input-log-changes log)) (frame end) (acc '()))
       ;; CHANGES is newest first: each (start . held) holds from START on.
       (if (null? changes)
@@ -747,9 +802,9 @@ input) ends at the frame before the first it did not record."
   ;; not record, so its replay stops where the recording did.
   (let* ((log (%game-input-log game))
          (full-at (input-log-full-at log))
-         (end (if full-at (min full-at (game-frame game)) (game-frame game)))
+         (end (if full-at (min full-at (input-clock game)) (input-clock game)))
          (kept (drop-while (lambda (c) (>= (car c) end)) (input-log-changes log))))
-    (reverse (if (and full-at (< full-at (game-frame game))) (cons (list full-at 'quit) kept) kept))))
+    (reverse (if (and full-at (< full-at (input-clock game))) (cons (list full-at 'quit) kept) kept))))
 
 (define (input-held-actions input)
   "The list of actions held in INPUT's frame: what an input log records."
@@ -776,11 +831,11 @@ where the script quits, and record-input says so on the error port."
     (scm-error 'wrong-type-arg "record-input" "file: expected a string, got ~S" (list file) #f))
   (let* ((script (recorded-script game))
          (full-at (input-log-full-at (%game-input-log game)))
-         (cut (and full-at (< full-at (game-frame game)) full-at)))  ; where the script quits
+         (cut (and full-at (< full-at (input-clock game)) full-at)))  ; where the script quits
     (call-with-output-file file
       (lambda (port)
         (format port ";;; The input of ~s, ~a frames, as an input script (record-input).~%" (game-title game)
-                (game-frame game))
+                (input-clock game))
         (when cut
           (format port ";;; Frames 0 to ~a only: the input log reached its bound of ~a changes, and the script quits at frame ~a.~%"
                   (- cut 1) *max-input-changes* cut))
@@ -797,7 +852,7 @@ where the script quits, and record-input says so on the error port."
     (when cut
       (format (current-error-port)
               "downstroke: record-input: ~s holds frames 0 to ~a of ~a: the input log reached its bound of ~a changes, and the script quits at frame ~a~%"
-              file (- cut 1) (game-frame game) *max-input-changes* cut))
+              file (- cut 1) (input-clock game) *max-input-changes* cut))
     script))
 
 (define (read-input-script file)
@@ -971,7 +1026,8 @@ game-capture, a capture run or a window)."
 (define paused-on (make-object-property))
 
 (define (game-levers game)
-  (list (game-engine-update game) (game-update game) (game-render game) (game-scene game)))
+  (list (game-engine-update game) (game-update game) (game-render game) (game-scene game)
+        (game-paused-update game)))
 
 (define (call-reporting what thunk on-error)
   ;; (system repl debug) is named with @, so it loads at the first failure:
@@ -1021,7 +1077,8 @@ game-capture, a capture run or a window)."
 
 (define (step-reporting! game dt held)
   (let ((frame (game-frame game)) (scene (game-scene game))
-        (input (game-input game)) (history (game-history-log game)))
+        (input (game-input game)) (history (game-history-log game))
+        (paused-ticks (game-paused-ticks game)) (marks (game-pause-marks game)))
     (call-reporting (lambda ()
                       (format #f "a hook raised an error in frame ~a; the game is paused on it until \
 a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" frame))
@@ -1031,24 +1088,43 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
                       (game-input-set! game input)
                       (game-history-log-set! game history)
                       (game-frame-set! game frame)
+                      (game-paused-ticks-set! game paused-ticks)
+                      (game-pause-marks-set! game marks)
                       (set! (paused-on game) (game-levers game))
                       #f))))
 
 (define (step-game! game dt held)
+  (if (game-paused? game) (pause-tick! game dt held) (step-frame! game dt held)))
+
+(define (render-tick! game)
+  (let ((render (game-render game))
+        (display (game-display game)))
+    (when display (%display-clear-commands! display))
+    (when render (call-bounded game "render:" (lambda () (render game))))))
+
+(define (pause-tick! game dt held)
+  ;; A paused tick: input, the paused: hook, render; nothing steps.
+  (record-input! game (input-clock game) held)
+  (game-input-set! game (make-input held (input-held-list (game-input game)) (game-bindings game)))
+  ;; Counted before the hook, which may rewind the game (and so set the count).
+  (note-paused-tick! game)
+  (let ((hook (game-paused-update game)))
+    (when hook (call-bounded game "paused:" (lambda () (hook game dt)))))
+  (render-tick! game)
+  (report-key-slips! game))
+
+(define (step-frame! game dt held)
   ;; One fixed step: input, engine-update, update, camera, render.
   (let ((frame (game-frame game)))
     (remember-scene! game)
-    (record-input! game frame held)
+    (record-input! game (input-clock game) held)
     (game-input-set! game (make-input held (input-held-list (game-input game)) (game-bindings game)))
     (let ((engine (game-engine-update game)))
       (when engine (call-bounded game "engine-update:" (lambda () (engine game dt)))))
     (let ((update (game-update game)))
       (when update (call-bounded game "update:" (lambda () (update game dt)))))
     (camera-follow! game)
-    (let ((render (game-render game))
-          (display (game-display game)))
-      (when display (%display-clear-commands! display))
-      (when render (call-bounded game "render:" (lambda () (render game)))))
+    (render-tick! game)
     (report-key-slips! game)
     ;; unless the frame rewound the game, the next frame is frame + 1
     (when (= (game-frame game) frame) (game-frame-set! game (+ frame 1)))))
@@ -1086,17 +1162,23 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
 (define (run-headless! game frames capture-dir)
   (let ((dt (game-frame-delay game))
         (tick (step-ticks game))
-        (start (get-internal-real-time)))
-    (let loop ((ticks 0))
+        (start (get-internal-real-time))
+        ;; Paused ticks do not bring the frame counter to FRAMES: a run makes
+        ;; at most as many as the frames it was asked for, so a game paused
+        ;; for good still ends.
+        (pause-budget (and frames (finite? frames) (max 0 (- frames (game-frame game))))))
+    (let loop ((ticks 0) (paused 0))
       (run-frame-hooks! game)
       (let* ((frame (game-frame game))
-             (held (scripted-held! game frame)))
-        (when (and (or (not frames) (< frame frames)) (not (memq 'quit held)))
-          (when (and (step-or-pause! game dt held) capture-dir)
+             (held (scripted-held! game (input-clock game)))
+             (paused? (game-paused? game)))
+        (when (and (or (not frames) (< frame frames)) (not (memq 'quit held))
+                   (not (and paused? pause-budget (>= paused pause-budget))))
+          (when (and (step-or-pause! game dt held) capture-dir (not paused?))
             (draw-game! game)
             (%display-save-png (game-display game) (frame-file capture-dir frame)))
           (when (frame-pacing) (wait-until (+ start (round (* (+ ticks 1) tick)))))
-          (loop (+ ticks 1)))))))
+          (loop (+ ticks 1) (if paused? (+ paused 1) paused)))))))
 
 ;; A display frame that finds more than this many fixed steps due runs only
 ;; these and drops the rest of the backlog: a stall (a breakpoint, a slow
