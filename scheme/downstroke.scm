@@ -14,6 +14,7 @@
   #:use-module (downstroke contacts)
   #:use-module (downstroke engine)
   #:use-module (downstroke hash)
+  #:use-module (downstroke scene-file)
   #:use-module (downstroke history)
   #:use-module (downstroke render)
   #:use-module (downstroke documentation))

@@ -29,6 +29,7 @@
     ((downstroke engine) . "The game: making one, its frame loop, input, sounds, rewinding, frame hooks.")
     ((downstroke render) . "Drawing, sounds and how the host shows frames (headless, a window, captures).")
     ((downstroke hash) . "A fingerprint of a scene's physical state, for checking that two runs are the same.")
+    ((downstroke scene-file) . "A whole scene in one readable file: saving a game, loading it, carrying a scene in a bug report.")
     ((downstroke history) . "Bounded records of a running game: a ring of the last frames, and a log of the newest items.")))
 
 (define user-modules (map car module-summaries))

@@ -20,16 +20,18 @@
 
 (define (check-plain-data who where value)
   "Refuse VALUE, naming WHO (the procedure) and WHERE (what it is, e.g.
-\"data\" or \"entity 3, #:on-hit\"), unless it is plain data: numbers,
+\"data\" or \"entity 3, #:on-hit,\", or a thunk that makes it, called only
+to say what was refused), unless it is plain data: numbers,
 symbols, keywords, strings, chars, booleans and '(), in lists, pairs and
 vectors, without cycles. Returns VALUE."
+  (define (where-text) (if (procedure? where) (where) where))
   (define (bad v)
     (refuse who "~a holds ~S, which is not plain data (numbers, symbols, keywords, strings, chars, booleans, and lists and vectors of them)"
-            (list where v)))
+            (list (where-text) v)))
   (let walk ((v value) (depth 0))
     (when (> depth max-plain-depth)
       (refuse who "~a: expected plain data nested at most ~a deep (a cycle through a car or a vector?)"
-              (list where max-plain-depth)))
+              (list (where-text) max-plain-depth)))
     (cond ((atom? v) #t)
           ((vector? v)
            (let loop ((i 0))
@@ -43,7 +45,7 @@ vectors, without cycles. Returns VALUE."
                     (walk (car p) (+ depth 1))
                     (let ((tortoise (if odd? (cdr tortoise) tortoise)))
                       (when (and odd? (eq? (cdr p) tortoise))
-                        (refuse who "~a holds a circular list, which is not plain data: ~S" (list where value)))
+                        (refuse who "~a holds a circular list, which is not plain data: ~S" (list (where-text) value)))
                       (loop (cdr p) tortoise (not odd?))))
                    (else (walk p (+ depth 1))))))
           (else (bad v))))

@@ -1,14 +1,20 @@
 ;;; (downstroke tilemap) — Tiled maps and in-memory grids.
 (define-module (downstroke tilemap)
-  #:use-module (downstroke native)
+  #:use-module ((downstroke native) #:hide (tilemap-set-tile))
+  #:use-module ((downstroke native) #:select ((tilemap-set-tile . %tilemap-set-tile)))
   #:re-export (make-tilemap tilemap? tilemap-width tilemap-height
                tilemap-tile-width tilemap-tile-height tilemap-cell-solid?
-               tilemap-cell-one-way? tilemap-set-tile
+               tilemap-cell-one-way?
                tilemap-solid-extent tilemap-cell-shape tilemap-steepest-ramp
                tilemap-objects tilemap-gid
                tilemap-properties tilemap-layers tilemap-tilesets
                tilemap-warnings)
-  #:export (load-tilemap))
+  #:export (load-tilemap tilemap-set-tile))
+
+;; A loaded map → the arguments it was loaded with, (path solid-gids
+;; max-cells max-bytes strict? project), kept by its edits (tilemap-set-tile):
+;; what scene-save writes to name it. Weak: a map no one holds is dropped.
+(define %tilemap-source (make-object-property))
 
 (define* (load-tilemap path #:key (solid-gids '()) (max-cells #f) (max-bytes #f)
                        (strict? #f) (project #f))
@@ -25,9 +31,18 @@ error instead.
 PROJECT names a Tiled project file (.tiled-project) whose class types fill in
 the members a class property leaves at their defaults."
   (let ((tm (%load-tilemap path solid-gids max-cells max-bytes strict? project)))
+    (set! (%tilemap-source tm) (list path solid-gids max-cells max-bytes strict? project))
     (for-each (lambda (warning)
                 (display "load-tilemap: warning: " (current-warning-port))
                 (display warning (current-warning-port))
                 (newline (current-warning-port)))
               (tilemap-warnings tm))
     tm))
+
+(define (tilemap-set-tile tm col row gid . layer)
+  "(tilemap-set-tile tm col row gid [layer]): a new map whose cell (col, row)
+of tile layer number layer (0) holds gid (0 clears it), solidity and all; tm
+is unchanged."
+  (let ((edited (apply %tilemap-set-tile tm col row gid layer)))
+    (set! (%tilemap-source edited) (%tilemap-source tm))
+    edited))
