@@ -20,8 +20,13 @@
 ;;; the game) that carries the player over a pit too wide to jump (its
 ;;; #:standing-on names the lift).
 ;;;
+;;; The coins picked up are the scene's data (scene-data), so a rewind
+;;; (game-rewind!, history: 600) gives back the count of the frame it goes
+;;; to, with the coins themselves.
+;;;
 ;;; Keys (in a window): Left/Right or A/D run, Z or Space jumps, Down or S
-;;; drops through a plank, Return starts again, Escape quits.
+;;; drops through a plank, P pauses and goes on (the paused: hook), Return
+;;; starts again, Escape quits.
 ;;;
 ;;; Run: build/bin/downstroke demo/platformer.scm
 ;;; Headless: it plays the built-in input script below for `demo-frames'
@@ -114,7 +119,6 @@ the last 1000."
 (define last-wanted 0)                  ; the #:vx asked for last frame
 (define was-standing-on #f)             ; the #:id of what it stood on last frame
 (define reached-goal? #f)
-(define coins 0)                        ; picked up since the run (re)started
 (define start-frame 0)                  ; the frame the run (re)started at
 (define goal-frame #f)                  ; the frame the goal was reached at
 
@@ -138,10 +142,10 @@ running on the ground."
   (set! last-wanted 0)
   (set! was-standing-on #f)
   (set! reached-goal? #f)
-  (set! coins 0)
   (set! start-frame (+ (game-frame game) 1))
   (set! goal-frame #f)
-  (game-scene-set! game (update-scene (game-scene game) entities: (start-entities) tilemap: level)))
+  (game-scene-set! game (update-scene (game-scene game) entities: (start-entities) tilemap: level
+                                      data: 0)))
 
 (define (start-entities) (cons* (dress player0 0 #f 0) lift0 goal0 coins0))
 
@@ -192,9 +196,16 @@ removed, and how many there were."
 
 (define (update game dt)
   (theme-from-the-start game)
-  (if (input-pressed? (game-input game) 'start)
-      (restart! game)
-      (play! game dt)))
+  (cond ((input-pressed? (game-input game) 'start) (restart! game))
+        ;; Paused after this frame: the next ticks call paused-update.
+        ((input-pressed? (game-input game) 'pause) (game-paused-set! game #t) (note! game 'paused))
+        (else (play! game dt))))
+
+(define (paused-update game dt)
+  ;; Nothing steps while paused: only P, to go on from the frame it stood at.
+  (when (input-pressed? (game-input game) 'pause)
+    (game-paused-set! game #f)
+    (note! game 'resumed)))
 
 (define (entity-find entities id)
   (find (lambda (e) (eq? (entity-ref e #:id) id)) entities))
@@ -232,7 +243,6 @@ removed, and how many there were."
     (when (and blocked? (not was-blocked?)) (note! game 'bumped))
     (when (and (eq? standing-on 'lift) (not (eq? was-standing-on 'lift))) (note! game 'boarded))
     (for-each (lambda (name)
-                (set! coins (+ coins 1))
                 (play-sound 'coin)
                 (note! game (list 'coin name)))
               picked)
@@ -258,7 +268,8 @@ removed, and how many there were."
                                           (cons* player (steer-lift lift)
                                                  (remove (lambda (e) (memq (entity-ref e #:id) picked))
                                                          (cddr (scene-entities scene))))
-                                          tilemap: (car broken))))))
+                                          tilemap: (car broken)
+                                          data: (+ (scene-data scene) (length picked)))))))
 
 (define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
@@ -273,24 +284,31 @@ removed, and how many there were."
       (for-each (lambda (k) (draw-sprite lift-piece (+ (entity-ref lift #:x) (* 16 k)) (- (entity-ref lift #:y) 8)))
                 (iota (quotient (entity-ref lift #:width) 16))))
     (draw-label (format #f "TIME ~,1f" seconds) 4 4 'white)
-    (let ((text (format #f "COINS ~a" coins)))
+    (let ((text (format #f "COINS ~a" (scene-data (game-scene game)))))
       (draw-label text (- (game-width game) 4 (* 6 (string-length text))) 4 'yellow))
     (cond (reached-goal?
            (draw-label "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow #:scale 3)
            (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
+          ((game-paused? game)
+           (draw-label "PAUSED" (centred-x "PAUSED" 3 (game-width game)) 70 'white #:scale 3)
+           (draw-label "P: GO ON" (centred-x "P: GO ON" 1 (game-width game)) 100 'white))
           ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
            (draw-label "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (centred-x "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" 1 (game-width game)) (- (game-height game) 12) 'white)))))
+
+(define traced -1)                      ; the last frame a line was printed for
 
 (define (render game)
   ;; Runs after camera-follow! (which keeps the view inside the map).
   ;; Draws the goal and the HUD (when the game has a display), remembers the
-  ;; player and, headless, prints a line every 20 frames.
+  ;; player and, headless, prints a line every 20 frames (once, however
+  ;; long the game is paused on it).
   (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (player (car (scene-entities (game-scene game))))
         (camera (scene-camera (game-scene game))))
     (remember! frame (scene-entities (game-scene game)))
-    (when (and trace? (zero? (modulo frame 20)))
+    (when (and trace? (zero? (modulo frame 20)) (not (= frame traced)))
+      (set! traced frame)
       (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)~a  camera (~a, ~a)~%"
               frame (entity-ref player #:x) (entity-ref player #:y)
               (entity-ref player #:vx) (entity-ref player #:vy)
@@ -329,8 +347,12 @@ removed, and how many there were."
 
 (define game
   (make-game title: "Downstroke — platformer" width: 320 height: 240 frame-delay: 16
-             scene: (make-scene entities: (start-entities) tilemap: level camera-target: 'player)
-             update: update render: render
+             scene: (make-scene entities: (start-entities) tilemap: level camera-target: 'player
+                                data: 0)            ; the coins picked up
+             update: update render: render paused: paused-update
+             ;; The default keys, and P for pause.
+             input-map: (append (default-input-map) '((pause "P")))
+             history: 600                         ; 10 s to rewind
              input-script: input-script))
 
 (define (run! frames)

@@ -245,6 +245,36 @@ demos' top-level names stay in that module."
   (test-assert "exact again from the lift on"
     (every (lambda (k) (exact? (entity-ref (p-at k) #:y))) (range 579 720))))
 
+;;; The coins picked up are the scene's data: coin-3 is picked up at frame
+;;; 123, so the scene frame 120 started from holds 2, and a rewind to it
+;;; gives 2 back; playing on picks coin-3 up again, at the same frame.
+(define rewound (load-demo "platformer.scm"))
+((ref rewound 'run!) 130)
+(define (coins-of m) (scene-data (game-scene (game-of m))))
+(test-group "platformer: the coins in the scene data"
+  (test-equal "the whole demo picks up four" 4 (coins-of platformer))
+  (test-equal "three by frame 130" 3 (coins-of rewound))
+  (test-equal "a rewind of 10 frames: frame 120, two coins, coin-3 back in the scene" '(120 2 #t)
+    (list (game-rewind! (game-of rewound) 10) (coins-of rewound)
+          (and (by-id 'coin-3 (entities-of rewound)) #t)))
+  ((ref rewound 'run!) 130)
+  (test-equal "played on: coin-3 again at frame 123, three coins" '(3 (123 coin coin-3))
+    (list (coins-of rewound) (last (filter (lambda (e) (equal? (cdr e) '(coin coin-3))) (events-of rewound))))))
+
+;;; P pressed in tick 5 pauses after frame 5; ticks 6 to 9 step nothing
+;;; (P is pressed again in tick 9, in the paused: hook), and the game goes on
+;;; from frame 6: it still lands at frame 10, four ticks later.
+(define paused (load-demo "platformer.scm"))
+((@@ (downstroke engine) game-input-script-set!) (game-of paused) '((0) (5 pause) (6) (9 pause) (10)))
+((ref paused 'run!) 12)
+(test-group "platformer: pause"
+  (test-equal "paused after frame 5, resumed at frame 6, landed at frame 10"
+    '((5 . paused) (6 . resumed) (10 . landed)) (events-of paused))
+  (test-equal "the fall is that of a game never paused: frames 5 to 10"
+    '(121 128 136 145 155 160) (map (lambda (k) (entity-ref ((ref paused 'player-at) k) #:y)) (iota 6 5)))
+  (test-equal "twelve frames in sixteen ticks, not paused" '(12 16 #f)
+    (list (game-frame (game-of paused)) (length (game-input-log (game-of paused))) (game-paused? (game-of paused)))))
+
 ;;; ================================================================ top-down
 (define topdown (run-demo "topdown.scm"))
 (define (t-at k) ((ref topdown 'player-at) k))
