@@ -97,6 +97,8 @@
     (frame-log-file . "A parameter: a file the window loop writes each presented frame's time, step and alpha to (the host's --frame-log), or #f.")
     (debug-draw-default . "A parameter, #f by default: whether every game starts with the debug overlay on (the host's --debug).")
     (current-display . "A parameter: what the running game draws into (its window or off-screen picture), or #f outside game-run!; draw-rect and the other draw- procedures draw there.")
+    ;; (downstroke engine)
+    (game-paused? . "Whether GAME is paused (game-paused-set!): its ticks then read input and call the paused: hook and render:, and step nothing.")
     ;; (downstroke history)
     (frame-ring? . "Whether OBJ is a frame ring (made by make-frame-ring).")))
 
