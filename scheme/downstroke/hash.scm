@@ -15,8 +15,8 @@ zero count; a missing key is exact 0) and #:on-ground?. Nothing else counts:
 not other keys (#:id, #:solid?, your own), not key order, not the tilemap
 or the camera. The byte layout is in src/state_hash.hpp;
 (downstroke reference-hash) computes the same value in plain Scheme.
-A scene whose scene-data is not #f hashes it too, after the entities: its
-written text, so equal? data hashes alike. The data must then be plain data
+A scene whose scene-data is not #f hashes it too, after the entities: each
+value's kind and contents, so equal? data hashes alike. The data must then be plain data
 (numbers, symbols, keywords, strings, chars, booleans, lists, pairs and
 vectors of them); anything else (a procedure, a record, a hash table) is an
 error naming scene-hash, never hashed as if it were something else."

@@ -2,7 +2,7 @@
 ;;; file: numbers, symbols, keywords, strings, chars, booleans, '(), and
 ;;; pairs and vectors of them. `write' prints each so that `read' gives an
 ;;; equal? value back (a flonum to the bit, an exact number exactly), which
-;;; is what makes a scene file and a scene's data hash mean one thing.
+;;; is what makes a scene file mean one thing; the hash walks them itself.
 (define-module (downstroke plain-data)
   #:use-module (rnrs bytevectors)
   #:export (check-plain-data plain-data-hash))
@@ -52,17 +52,56 @@ vectors, without cycles. Returns VALUE."
   value)
 
 ;;; FNV-1a 64, as src/state_hash.hpp hashes the entities, continued over
-;;; the data's written text (UTF-8): equal? plain data writes the same
-;;; text, and data that differs writes a different one.
+;;; the data's own bytes: a tag for each value's kind, then what it holds,
+;;; each text with its length first, so that no two plain data that differ
+;;; (equal? tells) feed the same bytes. Not the written text: how `write'
+;;; prints a symbol such as foo: depends on the reader's keyword style,
+;;; and a hash must be one value for one scene everywhere.
 (define fnv-prime #x100000001b3)
 (define mask64 #xffffffffffffffff)
 
+(define (fnv-bytes h bv)
+  (let loop ((i 0) (h h))
+    (if (= i (bytevector-length bv))
+        h
+        (loop (+ i 1) (logand (* (logxor h (bytevector-u8-ref bv i)) fnv-prime) mask64)))))
+
+(define (fnv-byte h byte) (logand (* (logxor h byte) fnv-prime) mask64))
+
+(define (fnv-text h tag text)
+  ;; TAG, the text's length in bytes as decimal digits and a colon, its UTF-8.
+  (let ((bytes (string->utf8 text)))
+    (fnv-bytes (fnv-bytes (fnv-byte h (char->integer tag))
+                          (string->utf8 (string-append (number->string (bytevector-length bytes)) ":")))
+               bytes)))
+
+(define (fnv-datum h v)
+  (cond ((null? v) (fnv-byte h (char->integer #\n)))
+        ((eq? v #t) (fnv-byte h (char->integer #\t)))
+        ((eq? v #f) (fnv-byte h (char->integer #\f)))
+        ((and (number? v) (exact? v)) (fnv-text h #\e (number->string v)))
+        ((and (number? v) (real? v))    ; a flonum: its IEEE-754 bits
+         (let ((bv (make-bytevector 8)))
+           (bytevector-ieee-double-set! bv 0 v (endianness little))
+           (fnv-bytes (fnv-byte h (char->integer #\d)) bv)))
+        ((number? v) (fnv-datum (fnv-datum (fnv-byte h (char->integer #\c)) (real-part v)) (imag-part v)))
+        ((symbol? v) (fnv-text h #\s (symbol->string v)))
+        ((keyword? v) (fnv-text h #\k (symbol->string (keyword->symbol v))))
+        ((string? v) (fnv-text h #\" v))
+        ((char? v) (fnv-text h #\h (number->string (char->integer v))))
+        ((pair? v)                      ; a list's cdrs in a loop, not nested
+         (let loop ((p v) (h h))
+           (if (pair? p)
+               (loop (cdr p) (fnv-datum (fnv-byte h (char->integer #\p)) (car p)))
+               (fnv-datum h p))))
+        (else                           ; a vector
+         (let ((n (vector-length v)))
+           (let loop ((i 0) (h (fnv-text h #\v (number->string n))))
+             (if (= i n) h (loop (+ i 1) (fnv-datum h (vector-ref v i)))))))))
+
 (define (plain-data-hash h who value)
-  "H (a 64-bit FNV-1a state) continued over a tag byte and VALUE's written
-text; VALUE is checked as check-plain-data checks it, naming WHO."
+  "H (a 64-bit FNV-1a state) continued over a tag byte and VALUE's bytes (a
+tag for each value's kind, then its contents); VALUE is checked as
+check-plain-data checks it, naming WHO."
   (check-plain-data who "data" value)
-  (let ((bytes (string->utf8 (call-with-output-string (lambda (port) (write value port))))))
-    (let loop ((i 0) (h (logand (* (logxor h #xda) fnv-prime) mask64)))
-      (if (= i (bytevector-length bytes))
-          h
-          (loop (+ i 1) (logand (* (logxor h (bytevector-u8-ref bytes i)) fnv-prime) mask64))))))
+  (fnv-datum (fnv-byte h #xda) value))

@@ -56,6 +56,20 @@
   (length (delete-duplicates
            (map (lambda (d) (scene-hash (make-scene data: d)))
                 (list 'a "a" #:a #\a 1 1.0 #(a))))))
+(test-equal "lists, dotted pairs, vectors and nesting, each distinct" 5
+  (length (delete-duplicates
+           (map (lambda (d) (scene-hash (make-scene data: d)))
+                (list '(1 2) '(1 . 2) #(1 2) '((1) 2) '(1 (2)))))))
+;; The hash is of the data, not of how it prints: a symbol ending in a colon
+;; prints as #{a:}# under the host's postfix keywords, as a: without them.
+(define colon-symbol (string->symbol "a:"))
+(define (colon-hash) (scene-hash (make-scene data: (list colon-symbol))))
+(define postfix-hash (begin (read-set! keywords 'postfix) (colon-hash)))
+(define plain-hash (begin (read-set! keywords #f) (colon-hash)))
+(read-set! keywords 'postfix)
+(test-equal "a symbol hashes alike whatever the reader's keyword style" postfix-hash plain-hash)
+(test-assert "the symbol a: and the keyword #:a differ"
+  (not (= (colon-hash) (scene-hash (make-scene data: (list #:a))))))
 (test-assert "-0.0 and 0.0 differ" (not (= (scene-hash (make-scene data: 0.0)) (scene-hash (make-scene data: -0.0)))))
 (test-equal "a procedure is refused, named"
   "In procedure scene-hash: data holds #<procedure car (_)>, which is not plain data (numbers, symbols, keywords, strings, chars, booleans, and lists and vectors of them)\n"
