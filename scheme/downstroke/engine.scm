@@ -173,8 +173,8 @@ picture (or there is no window, and the input script holds no mouse)."
   (paused-update game-paused-update)          ; (game dt) called in each paused tick, or #f
   ;; Ticks spent paused so far: the input clock (input-clock) counts them.
   (paused-ticks game-paused-ticks game-paused-ticks-set!)
-  ;; A bounded log of (frame . paused-ticks after the pause at that frame),
-  ;; newest first: where a rewind finds the input clock of the frame it goes to.
+  ;; A bounded log of (frame . the ticks paused before the pause at that
+  ;; frame), newest first: where a rewind finds the input clock of its frame.
   (pause-marks game-pause-marks game-pause-marks-set!))
 
 (define (default-engine-update game dt)
@@ -431,25 +431,28 @@ the next tick steps the frame the game stood at."
   (+ (game-frame game) (game-paused-ticks game)))
 
 (define (note-paused-tick! game)
-  ;; One more tick paused at the game's frame. The marks are only for
-  ;; rewinds, which go back at most history-size frames: that many marks
-  ;; (one a frame at most) are all a rewind can need.
-  (let* ((ticks (+ (game-paused-ticks game) 1))
-         (marks (game-pause-marks game))
-         (newest (bounded-log-newest marks 1))
-         (frame (game-frame game)))
-    (game-paused-ticks-set! game ticks)
-    (game-pause-marks-set! game (bounded-log-push (if (and (pair? newest) (= (caar newest) frame))
-                                                      (list->bounded-log (cdr (bounded-log-items marks)))
-                                                      marks)
-                                                  (cons frame ticks) (+ (game-history-size game) 1)))))
+  ;; One more tick paused at the game's frame; the first at a frame leaves
+  ;; a mark of the ticks paused before it. The marks are only for rewinds,
+  ;; which go back at most history-size frames: that many marks (one a
+  ;; frame at most) are all a rewind can need.
+  (let ((ticks (game-paused-ticks game))
+        (newest (bounded-log-newest (game-pause-marks game) 1))
+        (frame (game-frame game)))
+    (unless (and (pair? newest) (= (caar newest) frame))
+      (game-pause-marks-set! game (bounded-log-push (game-pause-marks game) (cons frame ticks)
+                                                    (+ (game-history-size game) 1))))
+    (game-paused-ticks-set! game (+ ticks 1))))
 
 (define (rewind-input-clock! game frame)
   ;; Back to the input clock FRAME had when it was stepped: the ticks paused
-  ;; at or before it (a pause at FRAME came before its step).
-  (let ((kept (drop-while (lambda (mark) (> (car mark) frame)) (bounded-log-items (game-pause-marks game)))))
-    (game-pause-marks-set! game (list->bounded-log kept))
-    (game-paused-ticks-set! game (if (pair? kept) (cdar kept) 0))))
+  ;; before the first pause after FRAME (a pause at FRAME came before its
+  ;; step, and counts).
+  (let loop ((marks (bounded-log-items (game-pause-marks game))) (later #f))
+    (if (and (pair? marks) (> (caar marks) frame))
+        (loop (cdr marks) (car marks))
+        (when later
+          (game-pause-marks-set! game (list->bounded-log marks))
+          (game-paused-ticks-set! game (cdr later))))))
 
 ;;; ---------------------------------------------------------------- costs
 
@@ -782,8 +785,8 @@ has a tilemap — never past the map's right or bottom edge."
 
 (define (game-input-log game)
   "The actions held in each frame played so far, one list per frame, from
-frame 0 on: give it to input-log->script to replay a played session
-headless, frame for frame. A log that reached its bound (2^21 changes of
+frame 0 on (and one per tick the game was paused, game-paused-set!): give it
+to input-log->script to replay a played session headless, frame for frame. A log that reached its bound (2^21 changes of
 input) ends at the frame before the first it did not record."
   (let* ((log (%game-input-log game))
          (end (if (input-log-full-at log) (min (input-log-full-at log) (input-clock game)) (input-clock game))))

@@ -66,6 +66,14 @@
   '((4 10) (4 10) (4 10) 55 10)
   (append (map (lambda (s) (list-head s 2)) (reverse seen)) (list (y-of game) (game-frame game))))
 
+(define input-clock (@@ (downstroke engine) input-clock))
+(test-equal "a rewind to after the pause keeps its three ticks: frame 7 at tick 10" '(7 10)
+  (begin (game-rewind! game 3) (list (game-frame game) (input-clock game))))
+(test-equal "a rewind to the paused frame itself: its pause came before its step" '(4 7)
+  (begin (game-rewind! game 3) (list (game-frame game) (input-clock game))))
+(game-run! game frames: 10)
+(test-equal "… and the game plays on to the same end" '(10 13 55) (list (game-frame game) (input-clock game) (y-of game)))
+
 ;;; Paused for good: headless runs still end (at most FRAMES paused ticks).
 (define ticks 0)
 (define stuck (make-game input-map: '((pause "P"))
