@@ -43,6 +43,7 @@ the members a class property leaves at their defaults."
   "(tilemap-set-tile tm col row gid [layer]): a new map whose cell (col, row)
 of tile layer number layer (0) holds gid (0 clears it), solidity and all; tm
 is unchanged."
-  (let ((edited (apply %tilemap-set-tile tm col row gid layer)))
-    (set! (%tilemap-source edited) (%tilemap-source tm))
+  (let ((edited (apply %tilemap-set-tile tm col row gid layer))
+        (source (%tilemap-source tm)))
+    (when source (set! (%tilemap-source edited) source))
     edited))
