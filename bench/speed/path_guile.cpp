@@ -27,14 +27,29 @@ SCM entity(const SceneBody& b, bool bounce) {
                                                         scm_list_2(scm_from_utf8_symbol("enemy"),
                                                                    scm_from_utf8_symbol("default")),
                                                         tail));
+    auto sym = [](const char* name) { return scm_from_utf8_symbol(name); };
+    if (b.target)
+        tail = scm_cons_star(kw("category"), scm_list_4(sym("enemy"), kw("collides-with"),
+                                                        scm_list_3(sym("enemy"), sym("default"), sym("shot")), tail));
+    if (b.shot)
+        tail = scm_cons_star(kw("category"),
+                             scm_list_4(sym("shot"), kw("collides-with"), scm_list_1(sym("enemy")), tail));
+    if (b.bounce) tail = scm_cons_star(kw("bounce"), scm_list_2(num(1), tail));
     if (b.sensor) tail = scm_cons_star(kw("sensor?"), scm_list_2(SCM_BOOL_T, tail));
+    if (b.contacts) tail = scm_cons_star(kw("contacts?"), scm_list_2(SCM_BOOL_T, tail));
+    // The game's own keys, where an author writes them: after the engine's,
+    // or (author_first) before.
+    const SCM author = b.author_keys ? scm_list_n(kw("kind"), sym("shot"), kw("damage"), num(1), kw("owner"),
+                                                  sym("player"), kw("ttl"), num(600), SCM_UNDEFINED)
+                                     : SCM_EOL;
+    if (!b.author_first) tail = scm_append(scm_list_2(tail, author));
     SCM head = scm_list_n(kw("type"), scm_from_utf8_symbol(b.immovable ? "pillar" : "box"),
                           kw("x"), num(b.x), kw("y"), num(b.y), kw("width"), num(b.w),
                           kw("height"), num(b.h), kw("vx"), num(b.vx), kw("vy"), num(b.vy),
                           kw("gravity?"), scm_from_bool(b.gravity), kw("on-ground?"),
                           scm_from_bool(b.on_ground), kw("solid?"), scm_from_bool(b.solid),
                           kw("immovable?"), scm_from_bool(b.immovable), SCM_UNDEFINED);
-    return scm_append(scm_list_2(head, tail));
+    return b.author_first ? scm_append(scm_list_3(author, head, tail)) : scm_append(scm_list_2(head, tail));
 }
 
 SCM tilemap(const Scene& s) {

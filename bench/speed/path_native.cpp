@@ -34,6 +34,16 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
             b.category.index = 1;
             b.collides_with.bits = 3;
         }
+        if (sb.target) {  // an enemy that also collides with shot (bit 2)
+            b.category.index = 1;
+            b.collides_with.bits = 7;
+        }
+        if (sb.shot) {  // index 2: shot; it collides with enemy
+            b.category.index = 2;
+            b.collides_with.bits = 2;
+        }
+        if (sb.bounce) b.bounce = ds::UnitNum::of(exact(1));
+        b.contacts = sb.contacts;
         b.sensor = sb.sensor;
         out.push_back(b);
     }

@@ -1,6 +1,8 @@
 #include "speed/scenes.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "frame.hpp"
@@ -233,6 +235,55 @@ Scene bullets(int n) {
     return s;
 }
 
+// shots: a shooter's busy frame. N 4×4 shots (sensors in the category
+// shot, colliding with enemy; bounce 1; no gravity; 2–4 px/frame in every
+// direction, exact) fly about an open walled arena, 2 tiles apart at the
+// start, among ten solid 24×24 enemies (bounce 1, 2 px/frame) they sense.
+// Each shot carries the game's own keys (#:kind #:damage #:owner #:ttl) after
+// the engine's, as an author writes them. shots has #:contacts? #t on every
+// shot and enemy; shots-quiet is the same scene without it, so shots ÷
+// shots-quiet is what the contact report costs; shots-author-first puts the
+// game's keys before the engine's, so shots ÷ shots-author-first says
+// whether where the keys sit decides the cost. The arena grows with N: every
+// N sees the same density of shots.
+Scene shots(int n, bool contacts, bool author_first) {
+    Scene s;
+    constexpr int kEnemies = 10;
+    const int per_row = ceil_sqrt(n);
+    const int rows_of_shots = (n + per_row - 1) / per_row;
+    const int cols = 2 * per_row + 2, rows = 2 * rows_of_shots + 2;
+    Grid g(cols, rows);
+    g.walls();
+    uint64_t state = 0x2545F4914F6CDD1Dull;
+    auto next = [&] {  // splitmix64: the same velocities on every platform
+        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    };
+    for (int i = 0; i < n; ++i) {
+        SceneBody b = box((1 + 2 * (i % per_row)) * kTile + 6, (1 + 2 * (i / per_row)) * kTile + 6, 4);
+        do {
+            b.vx = static_cast<int64_t>(next() % 9) - 4;
+            b.vy = static_cast<int64_t>(next() % 9) - 4;
+        } while (std::max(std::abs(b.vx), std::abs(b.vy)) < 2);
+        b.shot = b.sensor = b.bounce = b.author_keys = true;
+        b.contacts = contacts;
+        b.author_first = author_first;
+        s.bodies.push_back(b);
+    }
+    for (int k = 0; k < kEnemies; ++k) {
+        SceneBody e = box(kTile + 4 + (k * (cols - 4) * kTile) / kEnemies, kTile + 4 + (k * (rows - 4) * kTile) / kEnemies, 24);
+        e.vx = k % 2 == 0 ? 2 : -2;
+        e.vy = k % 3 == 0 ? 2 : -2;
+        e.solid = e.target = e.bounce = true;
+        e.contacts = contacts;
+        s.bodies.push_back(e);
+    }
+    take(s, std::move(g));
+    return s;
+}
+
 // platformer: the demo platformer's first 60×15 level, frozen in
 // bench/maps/platformer-60x15.tmx (so figures stay comparable as the demo
 // grows), with 12×16 gravity bots (not solid)
@@ -290,7 +341,8 @@ void check_at_rest(const Scene& s) {
 
 const std::vector<std::string>& scene_names() {
     static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
-                                                   "ramps-flat", "crowd-categories", "crowd-sensors"};
+                                                   "ramps-flat", "crowd-categories", "crowd-sensors",
+                                                   "shots", "shots-quiet", "shots-author-first"};
     return names;
 }
 
@@ -311,6 +363,9 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "ramps-flat") s = ramps(n, true);
     else if (name == "crowd-categories") s = crowd_categories(n);
     else if (name == "crowd-sensors") s = crowd_sensors(n);
+    else if (name == "shots") s = shots(n, true, false);
+    else if (name == "shots-quiet") s = shots(n, false, false);
+    else if (name == "shots-author-first") s = shots(n, true, true);
     else throw std::invalid_argument("unknown scene " + name);
     s.name = name;
     s.n = n;

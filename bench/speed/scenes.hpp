@@ -16,6 +16,13 @@ struct SceneBody {
     // collides with enemy and default, so it meets every solid as a body
     // without categories does. A sensor is immovable (it never moves), not solid.
     bool enemy = false, sensor = false;
+    // The shots scenes (semantics §10, §13): a shot is a sensor in the
+    // category shot that collides with enemy; a target is an enemy that also
+    // collides with shot. `contacts`: #:contacts? #t. `author_keys`: the
+    // game's own keys (#:kind #:damage #:owner #:ttl), after the engine's or,
+    // with `author_first`, before them. `bounce`: #:bounce 1.
+    bool shot = false, target = false, contacts = false, author_keys = false, author_first = false;
+    bool bounce = false;
     // The velocity the bounce update restores, with its sign flipped, on an
     // axis a collision zeroed (0: that axis does not bounce).
     int64_t rvx = 0, rvy = 0;
