@@ -36,9 +36,14 @@ void reserve_cache(Batch& batch, size_t n) {
     if (n <= have) return;
     SCM grown = scm_c_make_vector(std::max(n, 2 * have), SCM_BOOL_F);
     for (size_t i = 0; i < have; ++i) SCM_SIMPLE_VECTOR_SET(grown, i, SCM_SIMPLE_VECTOR_REF(batch.cache, i));
+    SCM reported = scm_c_make_vector(2 * SCM_SIMPLE_VECTOR_LENGTH(grown), SCM_UNDEFINED);
+    for (size_t i = 0; i < 2 * have; ++i) SCM_SIMPLE_VECTOR_SET(reported, i, SCM_SIMPLE_VECTOR_REF(batch.reported, i));
     scm_gc_protect_object(grown);
+    scm_gc_protect_object(reported);
     if (scm_is_true(batch.cache)) scm_gc_unprotect_object(batch.cache);
+    if (scm_is_true(batch.reported)) scm_gc_unprotect_object(batch.reported);
     batch.cache = grown;
+    batch.reported = reported;
     batch.cached.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
     batch.category_names.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
     batch.known.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
@@ -103,6 +108,8 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f, CategoryTable* table) 
             if (c.categorized) batch.category_names[i] = CategoryNames::of(d.category, d.collides_with);
             batch.known[i] = d.body;
             SCM_SIMPLE_VECTOR_SET(batch.cache, i, e);
+            SCM_SIMPLE_VECTOR_SET(batch.reported, 2 * i, d.touching);
+            SCM_SIMPLE_VECTOR_SET(batch.reported, 2 * i + 1, d.standing_on);
             batch.settling.forget(i);  // the mark was another entity's
         } else if (c.categorized && !categories.assign(batch.category_names[i], e, batch.known[i], f)) {
             // Bits are this call's: a cached body is given them again.
@@ -164,9 +171,14 @@ void zero_as_decoded(T&) {}
 // exact zeros are +0.0, as decoding makes them. Tweened entities are left to
 // be decoded again: their #:tween changes outside the body.
 // `placed`: the entity was rewritten in place order (rewrite_placed), so
-// its keys sit where they sat; otherwise they are found again.
-void remember(Batch& batch, size_t i, SCM entity, bool placed) {
+// its keys sit where they sat; otherwise they are found again. `edits` are
+// those that made it: report values they wrote replace the ones kept.
+void remember(Batch& batch, size_t i, SCM entity, bool placed, const Edit* edits, size_t n) {
     if (batch.has_tween[i]) return;
+    for (size_t k = 0; k < n; ++k) {
+        if (edits[k].field == kFieldBitTouching) SCM_SIMPLE_VECTOR_SET(batch.reported, 2 * i, edits[k].value);
+        if (edits[k].field == kFieldBitStandingOn) SCM_SIMPLE_VECTOR_SET(batch.reported, 2 * i + 1, edits[k].value);
+    }
     CachedEntity& c = batch.cached[i];
     Body& b = batch.known[i];
     b = batch.bodies[i];
@@ -243,8 +255,9 @@ private:
 };
 
 // The edits that rewrite entity i; with `names` (the list's, when the call
-// reports contacts), a contact entity's report values too.
-size_t entity_edits(const Batch& batch, size_t i, SCM entity, SCM names, Edit* edits) {
+// reports contacts), a contact entity's report values too, compared with
+// those its cached plist holds (Batch::reported).
+size_t entity_edits(const Batch& batch, size_t i, SCM names, Edit* edits) {
     const Body& b = batch.bodies[i];
     const size_t n = field_edits(batch.fields[i], b, edits, &batch.writes[i]);
     if (scm_is_false(names) || !b.contacts) return n;
@@ -252,7 +265,8 @@ size_t entity_edits(const Batch& batch, size_t i, SCM entity, SCM names, Edit* e
         (batch.reports & kReportsTouching) ? touching_names(batch.contacts, i, names) : SCM_UNDEFINED;
     const SCM standing =
         (batch.reports & kReportsStanding) && b.detects_ground() ? standing_name(b, names) : SCM_UNDEFINED;
-    return report_edits(entity, touching, standing, edits, n);
+    return report_edits(SCM_SIMPLE_VECTOR_REF(batch.reported, 2 * i), SCM_SIMPLE_VECTOR_REF(batch.reported, 2 * i + 1),
+                        touching, standing, edits, n);
 }
 
 // The names a call's contact report uses, or #f when it writes no report.
@@ -274,20 +288,16 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
     const SCM names = report_names(entities, batch);
     Edit edits[kFieldCount + 2];
     const bool reports = scm_is_true(names);
-    SCM p = entities;  // walked only for a report: the spine stays out of cache otherwise
     for (size_t i = 0; i < batch.size(); ++i) {
         batch.fields[i] = changed_fields(batch.known[i], batch.bodies[i]);
         if (!check_finite(batch.bodies[i], batch.fields[i], f)) return entities;
         batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
-        if (reports) {
-            // A contact entity's report may change what the plist holds, or not.
-            if (batch.bodies[i].contacts) batch.changed[i] = entity_edits(batch, i, SCM_CAR(p), names, edits) != 0;
-            p = SCM_CDR(p);
-        }
+        // A contact entity's report may change what the plist holds, or not.
+        if (reports && batch.bodies[i].contacts) batch.changed[i] = entity_edits(batch, i, names, edits) != 0;
         if (batch.changed[i]) last = i + 1;
     }
     if (last == 0) return entities;
-    p = entities;
+    SCM p = entities;
     SCM ahead = entities;
     for (size_t j = 0; j < kPrefetchAhead && j < last; ++j, ahead = SCM_CDR(ahead))
         if (batch.changed[j]) prefetch_plist(SCM_CAR(ahead));
@@ -299,10 +309,10 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
         }
         SCM plist = SCM_CAR(p), entity = plist;
         if (batch.changed[i]) {
-            const size_t n = entity_edits(batch, i, plist, names, edits);
+            const size_t n = entity_edits(batch, i, names, edits);
             const bool placed = all_placed(edits, n, batch.cached[i].places);
             entity = placed ? rewrite_placed(plist, edits, n, batch.cached[i].places) : rewrite_plist(plist, edits, n);
-            remember(batch, i, entity, placed);
+            remember(batch, i, entity, placed, edits, n);
         }
         spine.append(entity, last - i);
     }

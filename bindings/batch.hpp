@@ -44,6 +44,13 @@ struct Batch {
     // collector sees them and they cannot be recycled into look-alikes),
     // protected while this Batch holds it, and their decodings.
     SCM cache = SCM_BOOL_F;
+    // Beside it, by position: the #:touching and #:standing-on the cached
+    // plist holds (slots 2i and 2i + 1; SCM_UNDEFINED when absent), so that
+    // a frame compares its report with them without walking to them: an
+    // author's keys often follow the engine's, and a walk to the far end of
+    // every contact entity's plist took a quarter of the shots scene's frame
+    // (docs/benchmarks.org). A Guile vector protected like `cache`.
+    SCM reported = SCM_BOOL_F;
     std::vector<CachedEntity> cached;
     std::vector<CategoryNames> category_names;  // by position: set for the categorized ones
     std::vector<uint8_t> hit;    // by position: taken from the cache this time (as left)

@@ -80,14 +80,15 @@ SCM standing_name(const Body& b, SCM names) {
 
 namespace {
 
-size_t report_edit(SCM entity, SCM key, SCM value, Edit* edits, size_t n) {
+// `field`: the key's Field bit index, so that a cached entity whose key is
+// placed is rewritten in one walk (rewrite_placed).
+size_t report_edit(SCM old, SCM key, int8_t field, SCM value, Edit* edits, size_t n) {
     if (SCM_UNBNDP(value)) return n;
-    const SCM old = plist_get(entity, key, SCM_UNDEFINED);
     const bool same = !SCM_UNBNDP(old) && scm_is_true(scm_equal_p(old, value));
     size_t k = 0;
     while (k < n && !scm_is_eq(edits[k].key, key)) ++k;
     if (k == n) {
-        if (!same) edits[n++] = {key, value};
+        if (!same) edits[n++] = {key, value, false, field};
         return n;
     }
     if (!same) {
@@ -101,8 +102,14 @@ size_t report_edit(SCM entity, SCM key, SCM value, Edit* edits, size_t n) {
 }  // namespace
 
 size_t report_edits(SCM entity, SCM touching, SCM standing, Edit* edits, size_t n) {
-    n = report_edit(entity, keys->key[kTouching], touching, edits, n);
-    n = report_edit(entity, keys->key[kStandingOn], standing, edits, n);
+    const SCM old_touching = SCM_UNBNDP(touching) ? SCM_UNDEFINED : plist_get(entity, keys->key[kTouching], SCM_UNDEFINED);
+    const SCM old_standing = SCM_UNBNDP(standing) ? SCM_UNDEFINED : plist_get(entity, keys->key[kStandingOn], SCM_UNDEFINED);
+    return report_edits(old_touching, old_standing, touching, standing, edits, n);
+}
+
+size_t report_edits(SCM old_touching, SCM old_standing, SCM touching, SCM standing, Edit* edits, size_t n) {
+    n = report_edit(old_touching, keys->key[kTouching], kFieldBitTouching, touching, edits, n);
+    n = report_edit(old_standing, keys->key[kStandingOn], kFieldBitStandingOn, standing, edits, n);
     // A mark with no value to write (a key this call does not report).
     const Edit* end = std::remove_if(edits, edits + n, [](const Edit& e) { return scm_is_eq(e.value, SCM_UNSPECIFIED); });
     return static_cast<size_t>(end - edits);

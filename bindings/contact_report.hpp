@@ -61,6 +61,10 @@ SCM standing_name(const Body& b, SCM names);
 // key), drops an edit whose value is equal? to the plist's, and adds one for
 // a key the plist holds with another value. Room for two more in `edits`.
 size_t report_edits(SCM entity, SCM touching, SCM standing, Edit* edits, size_t n);
+// The same, given the values the plist holds (`old_touching`, `old_standing`;
+// SCM_UNDEFINED when absent) instead of reading them from it: a cached
+// entity's report keys may sit at the far end of a long plist.
+size_t report_edits(SCM old_touching, SCM old_standing, SCM touching, SCM standing, Edit* edits, size_t n);
 
 // The scene's pairs as ((name-a . name-b) …) against `names`.
 SCM pair_names(std::span<const IndexPair> pairs, SCM names);

@@ -198,13 +198,17 @@ bool decode(Sides, SCM, SCM v, uint8_t& out, uint32_t, Decoded&, Failure&) {
     out = sides_of(v);
     return true;
 }
-// The report's names are compared as values when written (contact_report.hpp).
-bool decode(Report, SCM, SCM, uint8_t& out, uint32_t, Decoded&, Failure&) {
+// The report's names are compared as values when written (contact_report.hpp),
+// with the raw values kept here.
+SCM& raw_report(Decoded& d, uint32_t field) { return field == kFieldTouching ? d.touching : d.standing_on; }
+bool decode(Report, SCM, SCM v, uint8_t& out, uint32_t field, Decoded& d, Failure&) {
     out = 0;
+    raw_report(d, field) = v;
     return true;
 }
-bool decode(Report, SCM, SCM, int32_t& out, uint32_t, Decoded&, Failure&) {
+bool decode(Report, SCM, SCM v, int32_t& out, uint32_t field, Decoded& d, Failure&) {
     out = kStandingUnknown;
+    raw_report(d, field) = v;
     return true;
 }
 

@@ -36,6 +36,10 @@ struct Decoded {
     // absent: a CategoryTable turns them into the body's bits.
     SCM category = SCM_UNDEFINED;
     SCM collides_with = SCM_UNDEFINED;
+    // The raw #:touching and #:standing-on, SCM_UNDEFINED when absent: a
+    // frame compares its report with them without walking the plist again.
+    SCM touching = SCM_UNDEFINED;
+    SCM standing_on = SCM_UNDEFINED;
     EntitySlips slips;  // keys that are a slip of an engine key (decode_batch queues them)
     bool categorized() const { return !SCM_UNBNDP(category) || !SCM_UNBNDP(collides_with); }
     bool has(PhysKey k) const { return (present >> k) & 1u; }

@@ -1056,6 +1056,35 @@
     (list-head (scene-entities after) 2))
   (test-eq "… an entity nothing moved stays itself" c (caddr (scene-entities after)))
   (test-equal "… and the scene has no pairs" '() (scene-contacts after)))
+;; A frame compares its report with the values the previous frame left
+;; (kept beside the cached plist), not with a walk to them: the game's keys
+;; after the engine's must not change what is written, nor identity.
+(let* ((shot '(#:id shot #:x 0 #:y 0 #:width 4 #:height 4 #:vx 4 #:sensor? #t #:contacts? #t
+               #:kind shot #:ttl 60))
+       (enemy '(#:id enemy #:x 10 #:y 0 #:width 10 #:height 10 #:solid? #t #:immovable? #t
+                #:contacts? #t #:kind grunt))
+       (scenes (let loop ((s (make-scene #:entities (list shot enemy))) (k 0) (acc '()))
+                 (if (= k 5)
+                     (reverse acc)
+                     (let ((next (step-scene s 16))) (loop next (+ k 1) (cons next acc))))))
+       (nth (lambda (k) (scene-entities (list-ref scenes k)))))
+  (test-equal "a shot through an enemy, frame by frame: its x and both reports"
+    '((4 () ()) (8 (enemy) (shot)) (12 (enemy) (shot)) (16 (enemy) (shot)) (20 () ()))
+    (map (lambda (s)
+           (let ((es (scene-entities s)))
+             (list (entity-ref (car es) #:x) (entity-ref (car es) #:touching) (entity-ref (cadr es) #:touching))))
+         scenes))
+  (test-equal "… the report keys appended after the game's keys, where first written"
+    '(#:id shot #:x 12 #:y 0 #:width 4 #:height 4 #:vx 4 #:sensor? #t #:contacts? #t #:kind shot #:ttl 60
+      #:blocked () #:touching (enemy))
+    (car (nth 2)))
+  (test-eq "… an enemy whose report did not change stays itself" (cadr (nth 1)) (cadr (nth 2)))
+  (test-equal "… and one whose report changed back is rewritten in place"
+    '(#:id enemy #:x 10 #:y 0 #:width 10 #:height 10 #:solid? #t #:immovable? #t #:contacts? #t #:kind grunt
+      #:blocked () #:touching ())
+    (cadr (nth 4)))
+  (test-equal "stepping an earlier frame again (a rewind) gives that frame's successor again"
+    (nth 2) (scene-entities (step-scene (list-ref scenes 1) 16))))
 (let ((e '(#:x 0 #:y 0 #:width 16 #:height 16 #:vy 0 #:contacts? #t #:blocked (right))))
   (test-eq "a tile step leaves the other axis's sides, and an equal value, as they are" e
     (resolve-tile-collisions-y e (make-scene #:tilemap floor-4) 16)))
