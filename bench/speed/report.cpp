@@ -205,6 +205,17 @@ each body goes through the same motion whatever N is.
   each frame the sensors' pairs are found and, on the Scheme paths, named
   in scene-contacts. crowd-sensors ÷ crowd is what the sensors cost.
   (Box2D: static sensor fixtures.)
+- shots :: a shooter's busy frame: N 4×4 shots (sensors in the category
+  shot, colliding with enemy; =#:bounce 1=; no gravity; 2–4 px/frame in
+  every direction) in an open walled arena, 2 tiles apart at the start,
+  among ten solid 24×24 enemies (bounce 1, 2 px/frame) they sense. Each
+  shot carries the game's own keys (=#:kind #:damage #:owner #:ttl=) after
+  the engine's, as an author writes them, and every body has
+  =#:contacts? #t=. shots-quiet :: the same without =#:contacts?=: shots ÷
+  shots-quiet is what the contact report costs. shots-author-first,
+  shots-author-first-quiet :: the same two with the game's keys before the
+  engine's. (The Box2D path skips them: they measure the Scheme boundary's
+  report.)
 - rest :: N gravity boxes (not solid) standing exactly on shelves of tiles,
   on-ground, vy 0: a frame changes nothing (checked natively when the scene
   is built). The cost of a frame in which nothing happens.

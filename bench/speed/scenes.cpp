@@ -242,10 +242,10 @@ Scene bullets(int n) {
 // Each shot carries the game's own keys (#:kind #:damage #:owner #:ttl) after
 // the engine's, as an author writes them. shots has #:contacts? #t on every
 // shot and enemy; shots-quiet is the same scene without it, so shots ÷
-// shots-quiet is what the contact report costs; shots-author-first puts the
-// game's keys before the engine's, so shots ÷ shots-author-first says
-// whether where the keys sit decides the cost. The arena grows with N: every
-// N sees the same density of shots.
+// shots-quiet is what the contact report costs. shots-author-first and
+// shots-author-first-quiet put the game's keys before the engine's: the two
+// ratios say whether where the keys sit decides what the report costs. The
+// arena grows with N: every N sees the same density of shots.
 Scene shots(int n, bool contacts, bool author_first) {
     Scene s;
     constexpr int kEnemies = 10;
@@ -342,7 +342,8 @@ void check_at_rest(const Scene& s) {
 const std::vector<std::string>& scene_names() {
     static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
                                                    "ramps-flat", "crowd-categories", "crowd-sensors",
-                                                   "shots", "shots-quiet", "shots-author-first"};
+                                                   "shots", "shots-quiet", "shots-author-first",
+                                                   "shots-author-first-quiet"};
     return names;
 }
 
@@ -366,6 +367,7 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "shots") s = shots(n, true, false);
     else if (name == "shots-quiet") s = shots(n, false, false);
     else if (name == "shots-author-first") s = shots(n, true, true);
+    else if (name == "shots-author-first-quiet") s = shots(n, false, true);
     else throw std::invalid_argument("unknown scene " + name);
     s.name = name;
     s.n = n;
