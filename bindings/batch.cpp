@@ -30,23 +30,28 @@ Batch& lease_batch() {
 
 namespace {
 
+// `vector` (a protected Guile vector, or #f) grown to `size` slots, its
+// entries kept and the new ones `fill`; the old one is unprotected.
+void grow_protected(SCM& vector, size_t size, SCM fill) {
+    const size_t have = scm_is_true(vector) ? SCM_SIMPLE_VECTOR_LENGTH(vector) : 0;
+    SCM grown = scm_c_make_vector(size, fill);
+    for (size_t i = 0; i < have; ++i) SCM_SIMPLE_VECTOR_SET(grown, i, SCM_SIMPLE_VECTOR_REF(vector, i));
+    scm_gc_protect_object(grown);
+    if (scm_is_true(vector)) scm_gc_unprotect_object(vector);
+    vector = grown;
+}
+
 // Room for n entries in the cache vector (grown by doubling, re-protected).
 void reserve_cache(Batch& batch, size_t n) {
     const size_t have = scm_is_true(batch.cache) ? SCM_SIMPLE_VECTOR_LENGTH(batch.cache) : 0;
     if (n <= have) return;
-    SCM grown = scm_c_make_vector(std::max(n, 2 * have), SCM_BOOL_F);
-    for (size_t i = 0; i < have; ++i) SCM_SIMPLE_VECTOR_SET(grown, i, SCM_SIMPLE_VECTOR_REF(batch.cache, i));
-    SCM reported = scm_c_make_vector(2 * SCM_SIMPLE_VECTOR_LENGTH(grown), SCM_UNDEFINED);
-    for (size_t i = 0; i < 2 * have; ++i) SCM_SIMPLE_VECTOR_SET(reported, i, SCM_SIMPLE_VECTOR_REF(batch.reported, i));
-    scm_gc_protect_object(grown);
-    scm_gc_protect_object(reported);
-    if (scm_is_true(batch.cache)) scm_gc_unprotect_object(batch.cache);
-    if (scm_is_true(batch.reported)) scm_gc_unprotect_object(batch.reported);
-    batch.cache = grown;
-    batch.reported = reported;
-    batch.cached.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
-    batch.category_names.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
-    batch.known.resize(SCM_SIMPLE_VECTOR_LENGTH(grown));
+    const size_t size = std::max(n, 2 * have);
+    grow_protected(batch.cache, size, SCM_BOOL_F);
+    grow_protected(batch.reported, 2 * size, SCM_UNDEFINED);
+    grow_protected(batch.reporting, 2 * size, SCM_UNDEFINED);
+    batch.cached.resize(size);
+    batch.category_names.resize(size);
+    batch.known.resize(size);
 }
 
 // The #:id of an entity that failed to decode, when it is a name worth
@@ -254,19 +259,27 @@ private:
     size_t ready_ = 0;  // pairs of the current run still to fill
 };
 
-// The edits that rewrite entity i; with `names` (the list's, when the call
-// reports contacts), a contact entity's report values too, compared with
-// those its cached plist holds (Batch::reported).
-size_t entity_edits(const Batch& batch, size_t i, SCM names, Edit* edits) {
+// Names contact entity i's report values for this call (Batch::reporting).
+void name_report(Batch& batch, size_t i, SCM names) {
     const Body& b = batch.bodies[i];
-    const size_t n = field_edits(batch.fields[i], b, edits, &batch.writes[i]);
-    if (scm_is_false(names) || !b.contacts) return n;
     const SCM touching =
         (batch.reports & kReportsTouching) ? touching_names(batch.contacts, i, names) : SCM_UNDEFINED;
     const SCM standing =
         (batch.reports & kReportsStanding) && b.detects_ground() ? standing_name(b, names) : SCM_UNDEFINED;
+    SCM_SIMPLE_VECTOR_SET(batch.reporting, 2 * i, touching);
+    SCM_SIMPLE_VECTOR_SET(batch.reporting, 2 * i + 1, standing);
+}
+
+// The edits that rewrite entity i; when the call reports contacts (`reports`),
+// a contact entity's report values too (named by name_report), compared
+// with those its cached plist holds (Batch::reported).
+size_t entity_edits(const Batch& batch, size_t i, bool reports, Edit* edits) {
+    const Body& b = batch.bodies[i];
+    const size_t n = field_edits(batch.fields[i], b, edits, &batch.writes[i]);
+    if (!reports || !b.contacts) return n;
     return report_edits(SCM_SIMPLE_VECTOR_REF(batch.reported, 2 * i), SCM_SIMPLE_VECTOR_REF(batch.reported, 2 * i + 1),
-                        touching, standing, edits, n);
+                        SCM_SIMPLE_VECTOR_REF(batch.reporting, 2 * i),
+                        SCM_SIMPLE_VECTOR_REF(batch.reporting, 2 * i + 1), edits, n);
 }
 
 // The names a call's contact report uses, or #f when it writes no report.
@@ -293,7 +306,14 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
         if (!check_finite(batch.bodies[i], batch.fields[i], f)) return entities;
         batch.changed[i] = batch.fields[i] != 0 || batch.writes[i].count != 0;
         // A contact entity's report may change what the plist holds, or not.
-        if (reports && batch.bodies[i].contacts) batch.changed[i] = entity_edits(batch, i, names, edits) != 0;
+        if (reports && batch.bodies[i].contacts) {
+            name_report(batch, i, names);
+            // A report key the body marks may still be written as it was (no
+            // edit): unless another field changed, find out.
+            constexpr uint32_t kNamedFields = kFieldTouching | kFieldStandingOn;
+            const bool other = ((batch.fields[i] | batch.writes[i].written()) & ~kNamedFields) != 0;
+            batch.changed[i] = other || entity_edits(batch, i, reports, edits) != 0;
+        }
         if (batch.changed[i]) last = i + 1;
     }
     if (last == 0) return entities;
@@ -309,7 +329,7 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f) {
         }
         SCM plist = SCM_CAR(p), entity = plist;
         if (batch.changed[i]) {
-            const size_t n = entity_edits(batch, i, names, edits);
+            const size_t n = entity_edits(batch, i, reports, edits);
             const bool placed = all_placed(edits, n, batch.cached[i].places);
             entity = placed ? rewrite_placed(plist, edits, n, batch.cached[i].places) : rewrite_plist(plist, edits, n);
             remember(batch, i, entity, placed, edits, n);

@@ -51,6 +51,10 @@ struct Batch {
     // every contact entity's plist took a quarter of the shots scene's frame
     // (docs/benchmarks.org). A Guile vector protected like `cache`.
     SCM reported = SCM_BOOL_F;
+    // By position, the same two slots: the values this call reports (SCM_UNDEFINED
+    // for a key it does not write), named once when encode_batch decides
+    // what changed and used again when it rewrites. Protected likewise.
+    SCM reporting = SCM_BOOL_F;
     std::vector<CachedEntity> cached;
     std::vector<CategoryNames> category_names;  // by position: set for the categorized ones
     std::vector<uint8_t> hit;    // by position: taken from the cache this time (as left)
