@@ -1085,6 +1085,23 @@
     (cadr (nth 4)))
   (test-equal "stepping an earlier frame again (a rewind) gives that frame's successor again"
     (nth 2) (scene-entities (step-scene (list-ref scenes 1) 16))))
+(let* ((ground '(#:id floor #:x 0 #:y 20 #:width 50 #:height 10 #:solid? #t #:immovable? #t))
+       (crate '(#:id box #:x 0 #:y 0 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t
+                #:kind crate #:hp 3))
+       (scenes (let loop ((s (make-scene #:entities (list ground crate))) (k 0) (acc '()))
+                 (if (= k 5)
+                     (reverse acc)
+                     (let ((next (step-scene s 16))) (loop next (+ k 1) (cons next acc)))))))
+  (test-equal "a crate falling onto the floor, frame by frame: y, #:standing-on, #:touching"
+    '((1 #f ()) (3 #f ()) (6 floor ()) (10 floor ()) (10 #f (floor)))
+    (map (lambda (s)
+           (let ((b (cadr (scene-entities s))))
+             (list (entity-ref b #:y) (entity-ref b #:standing-on) (entity-ref b #:touching))))
+         scenes))
+  (test-equal "… its last plist, the game's keys before the report's"
+    '(#:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t
+      #:kind crate #:hp 3 #:blocked () #:standing-on #f #:touching (floor) #:on-ground? #f)
+    (cadr (scene-entities (list-ref scenes 4)))))
 (let ((e '(#:x 0 #:y 0 #:width 16 #:height 16 #:vy 0 #:contacts? #t #:blocked (right))))
   (test-eq "a tile step leaves the other axis's sides, and an equal value, as they are" e
     (resolve-tile-collisions-y e (make-scene #:tilemap floor-4) 16)))
