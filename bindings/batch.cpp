@@ -263,7 +263,7 @@ private:
 void name_report(Batch& batch, size_t i, SCM names) {
     const Body& b = batch.bodies[i];
     const SCM touching =
-        (batch.reports & kReportsTouching) ? touching_names(batch.contacts, i, names) : SCM_UNDEFINED;
+        (batch.reports & kReportsTouching) ? touching_names(batch.contacts, i, names, b.contacts == kContactsSides) : SCM_UNDEFINED;
     const SCM standing =
         (batch.reports & kReportsStanding) && b.detects_ground() ? standing_name(b, names) : SCM_UNDEFINED;
     SCM_SIMPLE_VECTOR_SET(batch.reporting, 2 * i, touching);

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <iterator>
 
+#include "contacts.hpp"
 #include "keys.hpp"
 
 namespace ds::guile {
 
-void ContactIndex::gather(std::span<const IndexPair> log, std::span<const Body> bodies) {
+void ContactIndex::gather(std::span<const IndexPair> log, std::span<const uint8_t> sides,
+                          std::span<const Body> bodies) {
     clear();
     auto reported = [&](const IndexPair& p) {
         return bodies[p.first].reports_pairs() || bodies[p.second].reports_pairs();
@@ -18,14 +20,17 @@ void ContactIndex::gather(std::span<const IndexPair> log, std::span<const Body> 
     seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
     // Each pair once, where first resolved: sub-frames may resolve it again.
     used.assign(seen.size(), 0);
-    for (const IndexPair& p : log) {
+    for (size_t at = 0; at < log.size(); ++at) {
+        const IndexPair& p = log[at];
         if (!reported(p)) continue;
         const size_t k = static_cast<size_t>(std::lower_bound(seen.begin(), seen.end(), p) - seen.begin());
         if (used[k]) continue;
         used[k] = 1;
+        const uint8_t side = at < sides.size() ? sides[at] : 0;
         pairs.push_back(p);
-        if (bodies[p.first].contacts) touching.emplace_back(p.first, p.second);
-        if (bodies[p.second].contacts) touching.emplace_back(p.second, p.first);
+        pair_sides.push_back(side);
+        if (bodies[p.first].contacts) touching.push_back({p.first, p.second, side});
+        if (bodies[p.second].contacts) touching.push_back({p.second, p.first, opposite_side(side)});
     }
     std::sort(touching.begin(), touching.end());
 }
@@ -61,15 +66,24 @@ SCM name_at(SCM names, size_t k) {
     return name;
 }
 
-SCM touching_names(const ContactIndex& index, size_t i, SCM names) {
+namespace {
+
+SCM side_symbol(uint8_t side) {
+    return side != 0 ? keys->side_symbol[__builtin_ctz(side)] : SCM_BOOL_F;
+}
+
+}  // namespace
+
+SCM touching_names(const ContactIndex& index, size_t i, SCM names, bool with_sides) {
     const auto body = static_cast<uint32_t>(i);
-    auto at = std::lower_bound(index.touching.begin(), index.touching.end(), IndexPair{body, 0});
+    auto at = std::lower_bound(index.touching.begin(), index.touching.end(), Touch{body, 0, 0});
     auto end = at;
-    while (end != index.touching.end() && end->first == body) ++end;
+    while (end != index.touching.end() && end->body == body) ++end;
     SCM list = SCM_EOL;
     while (end != at) {
         --end;
-        list = scm_cons(name_at(names, end->second), list);
+        const SCM name = name_at(names, end->other);
+        list = scm_cons(with_sides ? scm_cons(name, side_symbol(end->side)) : name, list);
     }
     return list;
 }
@@ -113,6 +127,13 @@ size_t report_edits(SCM old_touching, SCM old_standing, SCM touching, SCM standi
     // A mark with no value to write (a key this call does not report).
     const Edit* end = std::remove_if(edits, edits + n, [](const Edit& e) { return scm_is_eq(e.value, SCM_UNSPECIFIED); });
     return static_cast<size_t>(end - edits);
+}
+
+SCM side_codes(std::span<const uint8_t> sides) {
+    const SCM codes = scm_c_make_bytevector(sides.size());
+    for (size_t k = 0; k < sides.size(); ++k)
+        scm_c_bytevector_set_x(codes, k, static_cast<uint8_t>(sides[k] != 0 ? __builtin_ctz(sides[k]) : 0));
+    return codes;
 }
 
 SCM pair_names(std::span<const IndexPair> pairs, SCM names) {

@@ -24,18 +24,30 @@ enum ReportKeys : uint8_t {
     kReportsStanding = 1u << 1,  // a frame: detect-on-solid ran where it applies
 };
 
+// A contact body's partner and the side it met it on (a kSide bit).
+struct Touch {
+    uint32_t body, other;
+    uint8_t side;
+    bool operator<(const Touch& t) const { return body != t.body ? body < t.body : other < t.other; }
+};
+
 // What a frame's (or a bulk push-apart's) pair log says, by index.
 struct ContactIndex {
-    std::vector<IndexPair> touching;  // (contact body, other), sorted, each once
+    std::vector<Touch> touching;      // by (contact body, other), each once
     std::vector<IndexPair> pairs;     // (earlier, later) with a contact body or a sensor, each once, in order resolved
+    std::vector<uint8_t> pair_sides;  // by pairs: the earlier body's side
     std::vector<IndexPair> seen;      // scratch: the pairs sorted, each once
     std::vector<uint8_t> used;        // scratch: by seen, taken already
 
-    // From the pairs resolved (earlier body first) over `bodies`.
-    void gather(std::span<const IndexPair> log, std::span<const Body> bodies);
+    // From the pairs resolved (earlier body first) over `bodies`, and the
+    // side each pair's first body met the second on (`sides`, pair for
+    // pair): a pair a frame's sub-frames resolved again keeps its first
+    // side, as it keeps its first place.
+    void gather(std::span<const IndexPair> log, std::span<const uint8_t> sides, std::span<const Body> bodies);
     void clear() {
         touching.clear();
         pairs.clear();
+        pair_sides.clear();
     }
 };
 
@@ -51,8 +63,9 @@ SCM entity_names(SCM entities, std::span<const int64_t> ids = {});
 // The name of entity k of entity_names' vector.
 SCM name_at(SCM names, size_t k);
 
-// The #:touching value of body i: the names of its partners, in list order.
-SCM touching_names(const ContactIndex& index, size_t i, SCM names);
+// The #:touching value of body i: the names of its partners, in list order;
+// `with_sides` (#:contacts? 'sides), each as (name . side).
+SCM touching_names(const ContactIndex& index, size_t i, SCM names, bool with_sides);
 // The #:standing-on value of a body (its supporter's name, or #f).
 SCM standing_name(const Body& b, SCM names);
 
@@ -68,5 +81,9 @@ size_t report_edits(SCM old_touching, SCM old_standing, SCM touching, SCM standi
 
 // The scene's pairs as ((name-a . name-b) …) against `names`.
 SCM pair_names(std::span<const IndexPair> pairs, SCM names);
+// The sides of the scene's pairs (pair_sides), a bytevector of side numbers
+// (the kSide bit's index: 0 left, 1 right, 2 up, 3 down): one allocation
+// a frame, whoever asks for the sides (scene-contact-sides) names them.
+SCM side_codes(std::span<const uint8_t> sides);
 
 }  // namespace ds::guile

@@ -143,9 +143,10 @@ void resolve_noting_pairs(Batch& batch) {
     PairLog* log = overlay ? overlay : reports ? &own : nullptr;
     const size_t from = log ? log->size() : 0;
     scratch.log = log;
+    scratch.sides.clear();  // by the log's pairs from `from` on
     resolve_entity_collisions(scratch, bodies);
     if (!reports) return;
-    batch.contacts.gather(std::span<const IndexPair>(*log).subspan(from), bodies);
+    batch.contacts.gather(std::span<const IndexPair>(*log).subspan(from), scratch.sides, bodies);
     batch.reports = kReportsTouching;
 }
 // Groups need scratch only when some body has an origin: a local one will do.

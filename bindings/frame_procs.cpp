@@ -67,14 +67,16 @@ struct PhaseTimer {
 // (semantics §10), by index into the list it returned: %frame-contacts
 // names them.
 thread_local std::vector<IndexPair> last_pairs;
+thread_local std::vector<uint8_t> last_sides;  // by last_pairs: the earlier body's side
 thread_local std::vector<int64_t> last_ids;  // the bodies' #:id tags, for naming them
 
 // After the frame: what push-apart logged, when some entity reports contacts.
 void gather_contacts(Batch& batch) {
     if (batch.contact_bodies == 0) return;
-    batch.contacts.gather(batch.frame.contact_pairs(), batch.bodies);
+    batch.contacts.gather(batch.frame.contact_pairs(), batch.frame.contact_sides(), batch.bodies);
     batch.reports = kReportsTouching | kReportsStanding;
     last_pairs = batch.contacts.pairs;
+    last_sides = batch.contacts.pair_sides;
     last_ids.clear();
     for (const Body& b : batch.bodies) last_ids.push_back(b.id);
 }
@@ -93,6 +95,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
     SCM result = entities;
     if (PairLog* log = pushed_pairs()) log->clear();  // the overlay shows this frame's pairs
     last_pairs.clear();
+    last_sides.clear();
     scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
     guarded(f, nullptr, [&] {
         FrameOptions opts;
@@ -172,6 +175,9 @@ SCM frame_contacts(SCM entities) {
     return pair_names(last_pairs, entity_names(entities, last_ids));
 }
 
+// The sides of the last step-scene's pairs, pair for pair (side_codes).
+SCM frame_contact_sides() { return side_codes(last_sides); }
+
 SCM step_stats(const char* name, const StepStats& s) {
     return scm_list_4(scm_from_utf8_symbol(name), scm_from_uint64(s.processed),
                       scm_from_uint64(s.skipped), scm_from_double(s.ms));
@@ -195,6 +201,8 @@ void register_frame_procedures() {
         WrapperDoc{"(entities tilemap dt mode [substeps [resting-contacts?]])", "step-scene", "(downstroke physics)"});
     define_procedure<1, 0, 0, frame_contacts>("%frame-contacts",
         WrapperDoc{"(entities) → ((name-a . name-b) …)", "step-scene", "(downstroke physics)"});
+    define_procedure<0, 0, 0, frame_contact_sides>("%frame-contact-sides",
+        WrapperDoc{"() → bytevector of side numbers, by %frame-contacts' pairs", "step-scene", "(downstroke physics)"});
     define_procedure<0, 0, 0, frame_stats>("%frame-stats",
         WrapperDoc{"() → ((step processed skipped ms) … (collect collections bytes ms))", "engine-stats", "(downstroke engine)"});
 }

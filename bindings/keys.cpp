@@ -42,6 +42,7 @@ void init_keys() {
     constexpr const char* kSides[4] = {"left", "right", "up", "down"};
     for (int bit = 0; bit < 4; ++bit) storage.side_symbol[bit] = keep(scm_from_utf8_symbol(kSides[bit]));
     storage.default_category = keep(scm_from_utf8_symbol("default"));
+    storage.sides = keep(scm_from_utf8_symbol("sides"));
     keys = &storage;
 }
 

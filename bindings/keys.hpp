@@ -29,6 +29,7 @@ struct Keys {
     SCM skip_symbol[kSkipCount];  // by bit index of ds::Skip
     SCM swept, discrete;
     SCM side_symbol[4];  // left right up down: by bit index of ds::Side
+    SCM sides;           // #:contacts? 'sides (ds::kContactsSides)
     SCM default_category;  // 'default (semantics §13)
 
     // Which physics key a keyword (or any object) is, or kNotPhysics: one

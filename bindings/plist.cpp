@@ -83,6 +83,7 @@ struct Tag {};
 struct Id {};
 struct Sides {};
 struct Report {};
+struct ReportMode {};
 struct Unit {};
 struct Category {};
 struct CategoryList {};
@@ -110,6 +111,12 @@ bool decode(Flag, SCM, SCM v, bool& out, uint32_t field, Decoded& d, Failure&) {
     // in the step-by-step composition (sub-frames that flip it and back).
     if (!scm_is_bool(v)) d.lossy |= static_cast<uint16_t>(field);
     out = scm_is_true(v);
+    return true;
+}
+// #:contacts? (semantics §10): 'sides asks for each partner's side too; any
+// other true value is the plain report, as before sides existed.
+bool decode(ReportMode, SCM, SCM v, uint8_t& out, uint32_t, Decoded&, Failure&) {
+    out = scm_is_false(v) ? kContactsOff : scm_is_eq(v, keys->sides) ? kContactsSides : kContactsNames;
     return true;
 }
 bool decode(Skips, SCM key, SCM v, uint16_t& out, uint32_t, Decoded&, Failure& f) {

@@ -60,6 +60,10 @@ enum Side : uint8_t {
     // else): the next write must reach it even when it names no side.
     kSidesUnwritten = 1u << 7,
 };
+// Body::contacts, what #:contacts? asks for (semantics §10): no report, the
+// report with #:touching a list of names, or of (name . side) pairs. Truthy
+// exactly when the body reports.
+enum ContactReport : uint8_t { kContactsOff = 0, kContactsNames = 1, kContactsSides = 2 };
 // Body::touching before push-apart has marked it (the plist lacks the key).
 constexpr uint8_t kReportUnwritten = 1;
 // Body::standing_on as decoded: the plist lacks the key, or holds a name

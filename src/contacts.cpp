@@ -25,19 +25,23 @@ double overlap(Num p1, Num s1, Num p2, Num s2) {
 // pointed at the fixed body); one moving away keeps 0 too.
 Num stopped_by(Num v, bool into, Num bounce) { return into ? rebound(v, bounce) : Num::integer(0); }
 
-void push_off_immovable(Body& m, const Body& s, double ox, double oy) {
+// Returns the side of m that met s (§10).
+uint8_t push_off_immovable(Body& m, const Body& s, double ox, double oy) {
     const Num bounce = pair_bounce(m, s);
     if (2 * m.y.v + m.h.v < 2 * s.y.v + s.h.v) {
         m.y = s.y - m.h;
         m.vy = stopped_by(m.vy, m.vy.v > 0, bounce);
-    } else if (ox < oy) {
+        return kSideDown;
+    }
+    if (ox < oy) {
         const bool left = 2 * m.x.v + m.w.v < 2 * s.x.v + s.w.v;
         m.x = left ? s.x - m.w : s.x + s.w;
         m.vx = stopped_by(m.vx, left ? m.vx.v > 0 : m.vx.v < 0, bounce);
-    } else {
-        m.y = s.y + s.h;
-        m.vy = stopped_by(m.vy, m.vy.v < 0, bounce);
+        return left ? kSideRight : kSideLeft;
     }
+    m.y = s.y + s.h;
+    m.vy = stopped_by(m.vy, m.vy.v < 0, bounce);
+    return kSideUp;
 }
 
 // Two movable bodies' velocities along the axis they were pushed apart on,
@@ -59,17 +63,38 @@ void part(Num& neg, Num& pos, Num bounce) {
     }
 }
 
+// Whether `a` is on the negative side of `b` along an axis (twice their
+// centres): the one moved the negative way, the earlier (a) on a tie.
+bool negative_of(double a_centre2, double b_centre2) { return !(b_centre2 < a_centre2); }
+
+// The side of `a` facing the other body along x or y, `a_negative` as above.
+uint8_t facing(bool along_x, bool a_negative) {
+    if (along_x) return a_negative ? kSideRight : kSideLeft;
+    return a_negative ? kSideDown : kSideUp;
+}
+
 // Two movable bodies share the overlap along one axis. `a` is the earlier in
 // list order: it moves negative on a tie and takes the larger integer half.
-void push_apart(BodyAxis a, BodyAxis b, double o, Num bounce) {
+// Returns whether a moved the negative way.
+bool push_apart(BodyAxis a, BodyAxis b, double o, Num bounce) {
     const bool exact = a.pos.exact && a.size.exact && b.pos.exact && b.size.exact;
     const double a_share = exact ? std::ceil(o / 2) : o / 2;
     const double b_share = exact ? o - a_share : o / 2;
-    const bool a_negative = !(b.centre2() < a.centre2());
+    const bool a_negative = negative_of(a.centre2(), b.centre2());
     a.pos = a.pos + Num{a_negative ? -a_share : a_share, exact};
     b.pos = b.pos + Num{a_negative ? b_share : -b_share, exact};
     if (a_negative) part(a.vel, b.vel, bounce);
     else part(b.vel, a.vel, bounce);
+    return a_negative;
+}
+
+// The side of `a` that met `b` when nothing moved them: the axis of least
+// penetration (x when ox < oy), the direction from the centres, a tie as
+// push_apart breaks it.
+uint8_t least_penetration_side(const Body& a, const Body& b) {
+    const bool along_x = overlap(a.x, a.w, b.x, b.w) < overlap(a.y, a.h, b.y, b.h);
+    return along_x ? facing(true, negative_of(2 * a.x.v + a.w.v, 2 * b.x.v + b.w.v))
+                   : facing(false, negative_of(2 * a.y.v + a.h.v, 2 * b.y.v + b.h.v));
 }
 
 }  // namespace
@@ -98,44 +123,45 @@ bool lands_from_above(const Body& m, const Body& o) {
 
 }  // namespace
 
-void resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
+uint8_t sensed_side(const Body& a, const Body& b) { return least_penetration_side(a, b); }
+
+uint8_t resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     if (a.one_way || b.one_way) {  // it lands, or the two pass through each other
-        if (a.one_way && b.one_way) return;
-        Body& m = a.one_way ? b : a;
-        const Body& o = a.one_way ? a : b;
-        if (!m.immovable && lands_from_above(m, o)) {
-            m.y = o.y - m.h;
-            m.vy = rebound(m.vy, pair_bounce(a, b));
+        if (!(a.one_way && b.one_way)) {
+            Body& m = a.one_way ? b : a;
+            const Body& o = a.one_way ? a : b;
+            if (!m.immovable && lands_from_above(m, o)) {
+                m.y = o.y - m.h;
+                m.vy = rebound(m.vy, pair_bounce(a, b));
+                return a.one_way ? kSideUp : kSideDown;
+            }
         }
-        return;
+        return least_penetration_side(a, b);
     }
-    if (a.immovable && b.immovable) return;
+    if (a.immovable && b.immovable) return least_penetration_side(a, b);
     const double ox = overlap(a.x, a.w, b.x, b.w);
     const double oy = overlap(a.y, a.h, b.y, b.h);
-    if (a.immovable || b.immovable) {
-        push_off_immovable(a.immovable ? b : a, a.immovable ? a : b, ox, oy);
-    } else if (a_rests && lands_on(b, a)) {
-        push_off_immovable(b, a, ox, oy);
-    } else if (b_rests && lands_on(a, b)) {
-        push_off_immovable(a, b, ox, oy);
-    } else if (ox < oy) {
-        push_apart(along_x(a), along_x(b), ox, pair_bounce(a, b));
-    } else {
-        push_apart(along_y(a), along_y(b), oy, pair_bounce(a, b));
-    }
+    // The fixed body's side is the opposite of the one pushed off it.
+    if (a.immovable) return opposite_side(push_off_immovable(b, a, ox, oy));
+    if (b.immovable) return push_off_immovable(a, b, ox, oy);
+    if (a_rests && lands_on(b, a)) return opposite_side(push_off_immovable(b, a, ox, oy));
+    if (b_rests && lands_on(a, b)) return push_off_immovable(a, b, ox, oy);
+    if (ox < oy) return facing(true, push_apart(along_x(a), along_x(b), ox, pair_bounce(a, b)));
+    return facing(false, push_apart(along_y(a), along_y(b), oy, pair_bounce(a, b)));
 }
 
 namespace {
 
 void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
-               std::span<const uint8_t> resting, PairLog* log) {
+               std::span<const uint8_t> resting, PairLog* log, SideLog* sides) {
     auto rests = [&](size_t i) { return !resting.empty() && resting[i] != 0; };
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
-            if (aabb_overlap(first, second) && meet(first, second, rests(members[a]), rests(members[b])))
-                note_pushed(log, members[a], members[b]);
+            if (!aabb_overlap(first, second)) continue;
+            if (const uint8_t side = meet(first, second, rests(members[a]), rests(members[b])))
+                note_pushed(log, sides, members[a], members[b], side);
         }
 }
 
@@ -145,8 +171,8 @@ void run_pairs(ContactScratch& scratch, std::span<Body> bodies, std::span<const 
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kPairGridFrom);
-    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log);
-    else all_pairs(bodies, members, resting, scratch.log);
+    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, &scratch.sides);
+    else all_pairs(bodies, members, resting, scratch.log, &scratch.sides);
 }
 
 }  // namespace

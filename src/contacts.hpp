@@ -28,25 +28,46 @@ bool collision_eligible(const Body& a, const Body& b);
 // resting contacts, a body that rested at the start of the (sub-)frame holds
 // up one whose centre is above its own, as an immovable body would: the
 // other lands on it (semantics §4's immovable rule, first case).
-void resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
+// Returns the side of a that met b (a kSide bit, semantics §10): the axis
+// and direction it was pushed on, or for a pair nothing moved (two
+// immovable bodies, a one-way body passed through) the overlap's axis of
+// least penetration (sensed_side).
+uint8_t resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
+
+// The side of a that met b when neither moves (a sensor's pair): x when the
+// overlap is narrower along x than along y, else y; facing b's centre, and
+// on a tie as if a were pushed the negative way (right along x, down along y).
+uint8_t sensed_side(const Body& a, const Body& b);
+
+// A side seen from the other body: left and right, up and down swapped.
+constexpr uint8_t opposite_side(uint8_t side) {
+    return static_cast<uint8_t>(((side & (kSideLeft | kSideUp)) << 1) | ((side & (kSideRight | kSideDown)) >> 1));
+}
 
 // An overlapping pair of the pass (a the earlier): whether it meets, and if
 // so what happens — categories that do not meet leave it alone; a sensor
 // and a body it senses only meet (the pair is noted), two sensors do not;
-// otherwise resolve_pair. Returns whether the pair met (§10, §13).
-inline bool meet(Body& a, Body& b, bool a_rests, bool b_rests) {
-    if (!categories_meet(a, b)) return false;
-    if (a.sensor | b.sensor) return !(a.sensor & b.sensor);
-    resolve_pair(a, b, a_rests, b_rests);
-    return true;
+// otherwise resolve_pair. Returns 0 when the pair did not meet, else the
+// side of a that met b (§10, §13).
+inline uint8_t meet(Body& a, Body& b, bool a_rests, bool b_rests) {
+    if (!categories_meet(a, b)) return 0;
+    if (a.sensor | b.sensor) return (a.sensor & b.sensor) ? 0 : sensed_side(a, b);
+    return resolve_pair(a, b, a_rests, b_rests);
 }
 
 // The pairs push-apart resolved, as body indices (the earlier first), in the
 // order resolved: what the debug overlay draws. Nothing is noted unless the
 // Frame is given a log (Frame::note_pairs), so a frame pays one test per pair.
 using PairLog = std::vector<std::pair<uint32_t, uint32_t>>;
-inline void note_pushed(PairLog* log, size_t a, size_t b) {
-    if (log) log->emplace_back(static_cast<uint32_t>(a), static_cast<uint32_t>(b));
+// Beside a PairLog, from where its owner began noting (ContactScratch::sides):
+// the side of each pair's first body that met the second (a kSide bit), so
+// that #:touching and the scene's contacts can say it (§10). A byte a pair,
+// written only when pairs are noted at all.
+using SideLog = std::vector<uint8_t>;
+inline void note_pushed(PairLog* log, SideLog* sides, size_t a, size_t b, uint8_t side) {
+    if (!log) return;
+    log->emplace_back(static_cast<uint32_t>(a), static_cast<uint32_t>(b));
+    if (sides) sides->push_back(side);
 }
 
 // Push-apart writes every contact body's #:touching (semantics §10), named

@@ -112,6 +112,7 @@ void Frame::Impl::note_standing(Body& b, size_t i, bool indexed) {
 }
 
 void Frame::Impl::begin_contact_log() {
+    contacts_.sides.clear();  // it follows the overlay's log too, which others clear
     if (contact_bodies_ == 0) return;
     if (overlay_log_ == nullptr) {
         frame_pairs_.clear();
@@ -412,6 +413,11 @@ std::span<const std::pair<uint32_t, uint32_t>> Frame::contact_pairs() const {
     if (m.contact_bodies_ == 0) return {};
     const PairLog& log = m.overlay_log_ ? *m.overlay_log_ : m.frame_pairs_;
     return std::span<const std::pair<uint32_t, uint32_t>>(log).subspan(m.pairs_from_);
+}
+std::span<const uint8_t> Frame::contact_sides() const {
+    const Impl& m = *impl_;
+    if (m.contact_bodies_ == 0) return {};
+    return m.contacts_.sides;
 }
 
 }  // namespace ds

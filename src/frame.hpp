@@ -108,6 +108,9 @@ public:
     // resolved (sub-frames one after the other), when it had bodies with
     // #:contacts? (semantics §10); empty otherwise. Valid until the next frame.
     std::span<const std::pair<uint32_t, uint32_t>> contact_pairs() const;
+    // Beside contact_pairs, pair for pair: the side of the first body that
+    // met the second (a kSide bit), as push-apart decided it (§10).
+    std::span<const uint8_t> contact_sides() const;
 
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the

@@ -94,7 +94,8 @@ kept in the scene (scene-contacts)."
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
                                   substeps (resting-contacts?)))
          (old ((@@ (downstroke world) %scene-contacts) scene))
-         (contacts (%frame-contacts stepped))
+         (pairs (%frame-contacts stepped))
+         (contacts (if (null? pairs) '() (cons pairs (%frame-contact-sides))))
          ;; '() and '() almost always: eq? first
          (contacts (if (or (eq? contacts old) (equal? contacts old)) old contacts)))
     (if (and (eq? stepped entities) (eq? contacts old))

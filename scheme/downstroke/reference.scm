@@ -8,6 +8,7 @@
 (define-module (downstroke reference)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-11)
+  #:use-module ((rnrs bytevectors) #:select (u8-list->bytevector))
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke tween)
@@ -817,19 +818,43 @@ itself: not eq?, no equal #:id)."
   (if into? (rebound v bounce) 0))
 
 (define (push-off-immovable! m s ox oy bounce)
-  "Landing wins while M's centre is above S's; else the shallower axis."
+  "Landing wins while M's centre is above S's; else the shallower axis.
+Returns the side of M that met S (§10)."
   (cond ((< (centre2 (y m) (h m)) (centre2 (y s) (h s)))
          (vector-set! m 1 (num- (y s) (h m)))
-         (vector-set! m 5 (stopped-by (vector-ref m 5) (> (vector-ref m 5) 0) bounce)))
+         (vector-set! m 5 (stopped-by (vector-ref m 5) (> (vector-ref m 5) 0) bounce))
+         'down)
         ((< ox oy)
          (let ((left? (< (centre2 (x m) (w m)) (centre2 (x s) (w s)))))
            (vector-set! m 0 (if left? (num- (x s) (w m)) (num+ (x s) (w s))))
            (vector-set! m 4 (stopped-by (vector-ref m 4)
                                         (if left? (> (vector-ref m 4) 0) (< (vector-ref m 4) 0))
-                                        bounce))))
+                                        bounce))
+           (if left? 'right 'left)))
         (else
          (vector-set! m 1 (num+ (y s) (h s)))
-         (vector-set! m 5 (stopped-by (vector-ref m 5) (< (vector-ref m 5) 0) bounce)))))
+         (vector-set! m 5 (stopped-by (vector-ref m 5) (< (vector-ref m 5) 0) bounce))
+         'up)))
+
+(define (opposite side)
+  "SIDE as the other body of the pair sees it."
+  (case side ((left) 'right) ((right) 'left) ((up) 'down) (else 'up)))
+
+(define (facing x-axis? a-negative)
+  "The side of the body moved (or, unmoved, lying) the negative way along an
+axis that faces the other."
+  (if x-axis? (if a-negative 'right 'left) (if a-negative 'down 'up)))
+
+(define (negative-of? a-pos a-size b-pos b-size)
+  "A is on the negative side of B: B's centre is not smaller (a tie: A)."
+  (not (< (centre2 b-pos b-size) (centre2 a-pos a-size))))
+
+(define (least-penetration-side a b)
+  "The side of A that met B when nothing moved them (§10): the axis of the
+narrower overlap (x when ox < oy), facing B, a tie as push-apart breaks it."
+  (if (< (overlap (x a) (w a) (x b) (w b)) (overlap (y a) (h a) (y b) (h b)))
+      (facing #t (negative-of? (x a) (w a) (x b) (w b)))
+      (facing #f (negative-of? (y a) (h a) (y b) (h b)))))
 
 (define (part neg pos bounce)
   "Two movable bodies' velocities after they were pushed apart, NEG the one
@@ -846,20 +871,22 @@ closing speed about their mean (bounce 1: swapped)."
 (define (push-apart! a b pos size vel o bounce)
   "Share the overlap O along one axis (POS SIZE VEL: vector slots). A, the
 earlier in the list, moves negative unless B's centre is smaller, and takes
-the larger half when everything is an exact integer."
+the larger half when everything is an exact integer. Returns whether A
+moved the negative way."
   (let* ((exact (every exact? (list (vector-ref a pos) (vector-ref a size)
                                     (vector-ref b pos) (vector-ref b size))))
          (a-share (if exact (ceiling (/ (inexact->exact o) 2)) (/ o 2)))
          (b-share (if exact (- (inexact->exact o) a-share) (/ o 2)))
-         (a-negative (not (< (centre2 (vector-ref b pos) (vector-ref b size))
-                             (centre2 (vector-ref a pos) (vector-ref a size))))))
+         (a-negative (negative-of? (vector-ref a pos) (vector-ref a size)
+                                (vector-ref b pos) (vector-ref b size))))
     (vector-set! a pos (num+ (vector-ref a pos) (if a-negative (- a-share) a-share)))
     (vector-set! b pos (num+ (vector-ref b pos) (if a-negative b-share (- b-share))))
     (let-values (((neg pos) (if a-negative
                                 (part (vector-ref a vel) (vector-ref b vel) bounce)
                                 (part (vector-ref b vel) (vector-ref a vel) bounce))))
       (vector-set! a vel (if a-negative neg pos))
-      (vector-set! b vel (if a-negative pos neg)))))
+      (vector-set! b vel (if a-negative pos neg)))
+    a-negative))
 
 (define (above? upper lower)
   (< (centre2 (y upper) (h upper)) (centre2 (y lower) (h lower))))
@@ -873,25 +900,28 @@ before its own."
 
 (define (resolve-pair! ea a a-rests eb b b-rests)
   "A resting body (resting contacts) holds up one whose centre is above its
-own, as an immovable body would."
+own, as an immovable body would. Returns the side of A that met B (§10):
+as it was pushed, or where nothing moved, least-penetration-side."
   (let ((a-fixed (flag ea #:immovable?)) (b-fixed (flag eb #:immovable?))
         (ox (overlap (x a) (w a) (x b) (w b)))
         (oy (overlap (y a) (h a) (y b) (h b)))
         (bounce (pair-bounce ea eb)))
     (cond ((or (flag ea #:one-way?) (flag eb #:one-way?))   ; §9: it lands, or they pass
-           (unless (and (flag ea #:one-way?) (flag eb #:one-way?))
-             (let* ((a-one-way (flag ea #:one-way?))
-                    (em (if a-one-way eb ea)) (m (if a-one-way b a)) (o (if a-one-way a b)))
-               (when (and (not (flag em #:immovable?)) (lands-from-above? em m o))
-                 (vector-set! m 1 (num- (y o) (h m)))
-                 (vector-set! m 5 (rebound (vector-ref m 5) bounce))))))
-          ((and a-fixed b-fixed) #t)
-          (a-fixed (push-off-immovable! b a ox oy bounce))
+           (let* ((a-one-way (flag ea #:one-way?))
+                  (em (if a-one-way eb ea)) (m (if a-one-way b a)) (o (if a-one-way a b)))
+             (cond ((and (not (and (flag ea #:one-way?) (flag eb #:one-way?)))
+                         (not (flag em #:immovable?)) (lands-from-above? em m o))
+                    (vector-set! m 1 (num- (y o) (h m)))
+                    (vector-set! m 5 (rebound (vector-ref m 5) bounce))
+                    (if a-one-way 'up 'down))
+                   (else (least-penetration-side a b)))))
+          ((and a-fixed b-fixed) (least-penetration-side a b))
+          (a-fixed (opposite (push-off-immovable! b a ox oy bounce)))
           (b-fixed (push-off-immovable! a b ox oy bounce))
-          ((and a-rests (above? b a)) (push-off-immovable! b a ox oy bounce))
+          ((and a-rests (above? b a)) (opposite (push-off-immovable! b a ox oy bounce)))
           ((and b-rests (above? a b)) (push-off-immovable! a b ox oy bounce))
-          ((< ox oy) (push-apart! a b 0 2 4 ox bounce))
-          (else (push-apart! a b 1 3 5 oy bounce)))))
+          ((< ox oy) (facing #t (push-apart! a b 0 2 4 ox bounce)))
+          (else (facing #f (push-apart! a b 1 3 5 oy bounce))))))
 
 (define (resolve-entity-collisions entities)
   "One pass over the pairs (i, j), i < j, in list order, each seeing what
@@ -903,8 +933,9 @@ apart (semantics §4)."
 
 (define (push-apart entities resting earlier)
   "The pass, RESTING holding each entity's resting flag. Returns the
-entities and the pairs (i . j) it resolved with a contact entity (§10),
-after EARLIER (the frame's earlier sub-frames), each pair once."
+entities and the pairs (i j . side-of-i) it resolved with a contact entity
+(§10), after EARLIER (the frame's earlier sub-frames), each pair once with
+the side it was first found on."
   (let* ((before (map box entities))
          (after (map vector-copy before))
          (takes-part (map (lambda (e) (or (collides? e) (senses? e))) entities))
@@ -920,29 +951,40 @@ after EARLIER (the frame's earlier sub-frames), each pair once."
                       ;; a body only meet (two sensors do not)
                       (when (and (overlaps? (cadr m) (cadr o)) (meets? (car m) (car o))
                                  (not (and (sensor? (car m)) (sensor? (car o)))))
-                        (unless (or (sensor? (car m)) (sensor? (car o)))
-                          (resolve-pair! (car m) (cadr m) (caddr m) (car o) (cadr o) (caddr o)))
-                        (let ((pair (cons (cadddr m) (cadddr o))))
+                        (let ((side (if (or (sensor? (car m)) (sensor? (car o)))
+                                        (least-penetration-side (cadr m) (cadr o))
+                                        (resolve-pair! (car m) (cadr m) (caddr m) (car o) (cadr o) (caddr o))))
+                              (i (cadddr m)) (j (cadddr o)))
                           (when (and (or (reports-pairs? (car m)) (reports-pairs? (car o)))
-                                     (not (member pair pairs)))
-                            (set! pairs (cons pair pairs))))))
+                                     (not (pair-side pairs i j)))
+                            (set! pairs (cons (cons* i j side) pairs))))))
                     (cdr rest)))
         (outer (cdr rest))))
     (let* ((pairs (reverse pairs))
            (moved (map write-box entities before after)))
       (values (same-or (write-touching moved pairs) entities) pairs))))
 
+(define (pair-side pairs i j)
+  "The side of I where PAIRS ((i j . side) …) pair it with J (either way
+round), or #f."
+  (any (lambda (p)
+         (cond ((and (= (car p) i) (= (cadr p) j)) (cddr p))
+               ((and (= (car p) j) (= (cadr p) i)) (opposite (cddr p)))
+               (else #f)))
+       pairs))
+
 (define (write-touching entities pairs)
   "Each contact entity's #:touching: the names of those PAIRS paired it
-with, in list order."
+with, in list order; with #:contacts? 'sides, each as (name . side)."
   (let ((names (map name-of entities (iota (length entities)))))
     (map (lambda (e i)
            (if (contacts? e)
-               (put-report e #:touching
-                           (filter-map (lambda (o j)
-                                         (and (or (member (cons i j) pairs) (member (cons j i) pairs))
-                                              o))
-                                       names (iota (length entities))))
+               (let ((sides? (eq? (entity-ref e #:contacts?) 'sides)))
+                 (put-report e #:touching
+                             (filter-map (lambda (o j)
+                                           (let ((side (pair-side pairs i j)))
+                                             (and side (if sides? (cons o side) o))))
+                                         names (iota (length entities)))))
                e))
          entities (iota (length entities)))))
 
@@ -1227,9 +1269,14 @@ and the crushing of what they pushed (§11), then groups."
       (if (= round substeps)
           (let* ((result (same-or (map keep-if-unchanged es start) start))
                  (names (list->vector (map name-of result (iota (length result)))))
-                 (contacts (map (lambda (p) (cons (vector-ref names (car p)) (vector-ref names (cdr p))))
-                                pairs))
-                 (old (scene-contacts scene))
+                 (contacts (if (null? pairs)
+                               '()
+                               (cons (map (lambda (p) (cons (vector-ref names (car p)) (vector-ref names (cadr p))))
+                                          pairs)
+                                     ;; the sides as the native report keeps them (world.scm)
+                                     (u8-list->bytevector
+                                      (map (lambda (p) (list-index (lambda (s) (eq? s (cddr p))) sides)) pairs)))))
+                 (old ((@@ (downstroke world) %scene-contacts) scene))
                  (contacts (if (equal? contacts old) old contacts)))
             (if (and (eq? result start) (eq? contacts old))
                 scene

@@ -1,10 +1,11 @@
 ;;; (downstroke world) — scenes (immutable) and the camera (mutable).
 (define-module (downstroke world)
   #:use-module (srfi srfi-9)
+  #:use-module (rnrs bytevectors)
   #:use-module ((downstroke native) #:select (tilemap?))
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
-            scene-contacts scene-data
+            scene-contacts scene-contact-sides scene-data
             scene-map-entities scene-transform-entities
             make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
 
@@ -51,7 +52,10 @@ X and Y must be finite real numbers."
   (camera scene-camera)
   (camera-target scene-camera-target)
   ;; The pairs the last step-scene pushed apart with a #:contacts? entity
-  ;; (semantics §10): a report of the frame that made the scene.
+  ;; (semantics §10), a report of the frame that made the scene: '() for
+  ;; none, else (pairs . sides), SIDES a bytevector of the first bodies'
+  ;; sides (0 left, 1 right, 2 up, 3 down), pair for pair — one allocation
+  ;; a frame, named only when scene-contact-sides asks.
   (contacts %scene-contacts)
   ;; The game's own state (score, lives, flags): any Scheme value, carried
   ;; by every scene made from this one, so a rewind restores it.
@@ -73,7 +77,31 @@ where at least one of the two has #:contacts? #t, in the order resolved
 made. update-scene keeps them."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "scene-contacts" "expected a scene, got ~S" (list scene) #f))
-  (%scene-contacts scene))
+  (let ((report (%scene-contacts scene)))
+    (if (null? report) '() (car report))))
+
+(define side-names #(left right up down))
+
+(define (scene-contact-sides scene)
+  "The pairs of (scene-contacts SCENE) with the side each first body met the
+second on: ((name-a name-b . side-of-a) …), in the same order. The side is
+left, right, up or down: the axis and direction push-apart moved the pair
+on, or for a pair nothing moved (a sensor's, two immovable bodies) the
+overlap's narrower axis. B met A on the opposite side; a landing body's
+side is down."
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg "scene-contact-sides" "expected a scene, got ~S" (list scene) #f))
+  (let ((report (%scene-contacts scene)))
+    (if (null? report)
+        '()
+        (let ((sides (cdr report)))
+          (let loop ((pairs (car report)) (k 0) (acc '()))
+            (if (null? pairs)
+                (reverse! acc)
+                (loop (cdr pairs) (+ k 1)
+                      (cons (cons* (caar pairs) (cdar pairs)
+                                   (vector-ref side-names (bytevector-u8-ref sides k)))
+                            acc))))))))
 
 (define (check-scene who scene)
   (unless (scene? scene)
@@ -122,7 +150,8 @@ for the native steps, whose result is always a proper list."
                 (scene-camera-target scene) (%scene-contacts scene) (%scene-data scene)))
 
 (define (%scene-after-frame scene entities contacts)
-  "SCENE after a frame: its ENTITIES and its CONTACTS (a step-scene's)."
+  "SCENE after a frame: its ENTITIES and its CONTACTS (a step-scene's report:
+'(), or (pairs . side-bytevector))."
   (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
                 (scene-camera-target scene) contacts (%scene-data scene)))
 

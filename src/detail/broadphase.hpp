@@ -19,10 +19,12 @@ public:
     // Runs the pass over bodies[members[0]], bodies[members[1]], … (the
     // solid, non-ghost bodies in list order).
     // `resting`: empty, or per body whether it rested (see resolve_pair).
-    // `log`, when given, receives each pair resolved (contacts.hpp's PairLog).
+    // `log`, when given, receives each pair resolved (contacts.hpp's PairLog),
+    // and `sides` (if given too) the side of its first body (note_pushed).
     void run(std::span<Body> bodies, std::span<const size_t> members,
              std::span<const uint8_t> resting = {},
-             std::vector<std::pair<uint32_t, uint32_t>>* log = nullptr);
+             std::vector<std::pair<uint32_t, uint32_t>>* log = nullptr,
+             std::vector<uint8_t>* sides = nullptr);
 
 private:
     CellBox cells(const Body& b) const;
