@@ -96,6 +96,60 @@ TEST_CASE("the overlay's log still gets every pair while contacts are logged") {
     CHECK(pairs_of(f) == Pairs{{0, 1}});
 }
 
+TEST_CASE("push-apart returns the side of the first body that met the second, as it pushed the pair") {
+    using ds::kSideDown, ds::kSideLeft, ds::kSideRight, ds::kSideUp;
+    Body a = solid_box(0, 0, 10, 10), b = solid_box(2, 6, 10, 10);  // ox 8, oy 4: along y, a above
+    CHECK(ds::resolve_pair(a, b) == kSideDown);
+    a = solid_box(7, 1, 10, 10), b = solid_box(0, 0, 10, 10);  // ox 3, oy 9: along x, a on the right
+    CHECK(ds::resolve_pair(a, b) == kSideLeft);
+    a = solid_box(0, 0, 10, 10), b = solid_box(0, 0, 10, 10);  // ox = oy: along y; centres tie: a goes up
+    CHECK(ds::resolve_pair(a, b) == kSideDown);
+    CHECK(a.y.v == -5);
+    // An immovable body first: its side is the opposite of the mover's.
+    // Landing wins while the mover's centre is above the wall's, even where
+    // the overlap is narrower along x (ox 3, oy 4).
+    Body wall = wall_box(0, 10, 30, 10), m = solid_box(27, 4, 10, 10);
+    CHECK(ds::resolve_pair(wall, m) == kSideUp);
+    CHECK(m.y.v == 0);
+    wall = wall_box(0, 10, 30, 10), m = solid_box(25, 12, 10, 10);  // below the centre: ox 5 < oy 8, pushed right
+    CHECK(ds::resolve_pair(wall, m) == kSideRight);
+    CHECK(m.x.v == 30);
+    // Two immovable bodies do not move: least penetration (ox 10, oy 2: along y).
+    Body w1 = wall_box(0, 8, 10, 10), w2 = wall_box(0, 0, 10, 10);
+    CHECK(ds::resolve_pair(w1, w2) == kSideUp);
+    CHECK(ds::opposite_side(kSideLeft) == kSideRight);
+    CHECK(ds::opposite_side(kSideDown) == kSideUp);
+}
+
+TEST_CASE("a sensor's pair takes the overlap's axis of least penetration, facing the other's centre") {
+    Body s = box(0, 0, 10, 10), b = solid_box(8, 2, 10, 10);  // ox 2 < oy 8
+    s.sensor = true;
+    CHECK(ds::meet(s, b, false, false) == ds::kSideRight);
+    CHECK(ds::meet(b, s, false, false) == ds::kSideLeft);
+    Body t = box(0, 0, 10, 10);
+    t.sensor = true;
+    CHECK(ds::meet(s, t, false, false) == 0);  // two sensors never meet
+    CHECK(b.x.v == 8);                         // and nothing moved
+}
+
+TEST_CASE("a frame logs each pair's side beside it, sub-frame after sub-frame") {
+    ds::World w;
+    // A falls onto a wall and lands on it in each sub-frame: down each time.
+    w.bodies = {reporting(solid_box(0, 0, 10, 10)), wall_box(0, 9, 10, 10)};
+    w.bodies[0].vy = I(2);
+    w.bodies[0].gravity = true;
+    ds::Frame f;
+    ds::FrameOptions opts;
+    opts.substeps = 2;
+    f.step(w, opts);
+    const auto sides = f.contact_sides();
+    CHECK(pairs_of(f) == Pairs{{0, 1}, {0, 1}});
+    CHECK(std::vector<uint8_t>(sides.begin(), sides.end()) == std::vector<uint8_t>{ds::kSideDown, ds::kSideDown});
+    w.bodies = {solid_box(0, 0, 10, 10), wall_box(0, 9, 10, 10)};
+    f.step(w, {});
+    CHECK(f.contact_sides().empty());  // nobody reports: nothing logged
+}
+
 TEST_CASE("standing on names the first holder in list order, by index + 1") {
     ds::World w;
     Body hero = reporting(solid_box(0, 10, 10, 10));

@@ -1146,6 +1146,62 @@
   (contacts-begun 5 '()))
 (test-error "contacts-ended too" 'wrong-type-arg (contacts-ended '() '(1 2)))
 
+;;; Which side touched (§10): #:contacts? 'sides and scene-contact-sides.
+(define (side-box id x y . more)
+  ;; MORE first: a plist's first occurrence of a key is the one read.
+  (append (list #:id id #:x x #:y y) more (list #:width 10 #:height 10 #:vx 0 #:vy 0 #:solid? #t)))
+(define (touchings s) (map (lambda (e) (entity-ref e #:touching #f)) (scene-entities s)))
+(define stomp
+  ;; The player falls 4 px onto the enemy: y [16, 26) on [20, 30), ox 8 > oy 6.
+  (make-scene #:entities (list (side-box 'enemy 0 20 #:contacts? 'sides)
+                               (side-box 'player 2 12 #:vy 3 #:gravity? #t #:contacts? 'sides))))
+(let ((s (step-scene stomp 16)))
+  (test-equal "a stomp: the player met the enemy on its down side, the enemy the player on its up side"
+    '(((player . up)) ((enemy . down))) (touchings s))
+  (test-equal "… pushed apart along y, 3 px each" '(23 13) (map (lambda (e) (entity-ref e #:y)) (scene-entities s)))
+  (test-equal "scene-contacts keeps its shape" '((enemy . player)) (scene-contacts s))
+  (test-equal "scene-contact-sides gives the first body's side" '((enemy player . up)) (scene-contact-sides s))
+  (test-equal "update-scene keeps the sides" '((enemy player . up))
+    (scene-contact-sides (update-scene s #:camera (make-camera)))))
+(test-equal "#:contacts? #t keeps #:touching a list of names" '((player) (enemy))
+  (touchings (step-scene (make-scene #:entities (map (lambda (e) (entity-set e #:contacts? #t))
+                                                     (scene-entities stomp)))
+                         16)))
+(test-equal "running into it from the left: the player's right side (ox 3 < oy 10)" '(((enemy . right)) ((player . left)))
+  (touchings (step-scene (make-scene #:entities (list (side-box 'player 0 0 #:vx 3 #:contacts? 'sides)
+                                                      (side-box 'enemy 10 0 #:contacts? 'sides)))
+                         16)))
+(test-equal "on an immovable platform: down, though the overlap is narrower along x (ox 3 < oy 4)"
+  '((floor box . up))
+  (scene-contact-sides (step-scene (make-scene #:entities (list (side-box 'floor 0 10 #:width 30 #:immovable? #t)
+                                                                (side-box 'box 27 3 #:vy 0 #:gravity? #t #:contacts? 'sides)))
+                                   16)))
+(let ((s (step-scene (make-scene #:entities (list (side-box 'coin 0 0 #:sensor? #t #:contacts? 'sides)
+                                                  (side-box 'player 5 0 #:contacts? 'sides)))
+                     16)))
+  (test-equal "a sensor's pair: the axis of least penetration (ox 5 < oy 10), facing the centres"
+    '(((player . right)) ((coin . left))) (touchings s))
+  (test-equal "… and in the scene" '((coin player . right)) (scene-contact-sides s)))
+(let ((falling-in (make-scene #:entities (list (side-box 'zone 0 0 #:width 20 #:height 20 #:sensor? #t)
+                                               (side-box 'b 15 -12 #:vy 8 #:contacts? 'sides)))))
+  ;; One frame: y [-4, 6) against x [15, 20): ox 5 < oy 6, along x. Two
+  ;; sub-frames: the first finds y [-8, 2), oy 2 < ox 5, along y.
+  (test-equal "one frame: the side of the frame's overlap" '((zone b . right))
+    (scene-contact-sides (step-scene falling-in 16)))
+  (test-equal "sub-frames: the first sub-frame that found the partner gives the side" '((zone b . up))
+    (scene-contact-sides (step-scene falling-in 16 #:substeps 2)))
+  (test-equal "… for #:touching too" '((zone . down))
+    (entity-ref (cadr (scene-entities (step-scene falling-in 16 #:substeps 2))) #:touching)))
+(test-equal "resolve-entity-collisions alone writes the sides too" '(((player . up)) ((enemy . down)))
+  (map (lambda (e) (entity-ref e #:touching))
+       (resolve-entity-collisions (list (side-box 'enemy 0 20 #:contacts? 'sides)
+                                        (side-box 'player 2 14 #:contacts? 'sides)))))
+(test-equal "a scene no frame made has no sides" '() (scene-contact-sides (make-scene)))
+(test-equal "scene-contact-sides refuses what is not a scene, naming it"
+  '(wrong-type-arg "scene-contact-sides" "expected a scene, got (1)")
+  (catch 'wrong-type-arg (lambda () (scene-contact-sides '(1)))
+    (lambda (key who fmt args rest) (list key who (apply format #f fmt args)))))
+
 ;;; ---------------------------------------------------------------- categories, sensors, bounce (§13)
 (define (role-box id x y . more)
   (append (list #:id id #:x x #:y y #:width 10 #:height 10 #:solid? #t) more))
