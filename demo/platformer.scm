@@ -18,7 +18,11 @@
 ;;; and a lift (the map's "lift" object: an immovable solid
 ;;; with #:carries? #t, moving by #:vx and turned at the ends of its run by
 ;;; the game) that carries the player over a pit too wide to jump (its
-;;; #:standing-on names the lift).
+;;; #:standing-on names the lift). In that pit a walker paces: fall on it
+;;; and it is stomped (the player has #:contacts? 'sides, so each entry of
+;;; its #:touching says which side met the other: down is a stomp), and the
+;;; player bounces off; touch it any other way and the run starts again.
+;;; The scripted run rides over it.
 ;;;
 ;;; The coins picked up are the scene's data (scene-data), so a rewind
 ;;; (game-rewind!, history: 600) gives back the count of the frame it goes
@@ -49,6 +53,7 @@
 (define player-standing (sprite 0))
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
+(define walker-picture (sprite 3))
 (define goal-flag (sprite 11))
 (define coin-picture (sprite 10))
 (define lift-piece (sprite 12))         ; a 16×8 piece, in the bottom half of its 16×16 frame
@@ -71,8 +76,8 @@
           #:vx 0 #:vy 0 #:gravity? #t #:on-ground? #f
           ;; Solid so that the lift's push-apart and carrying take it along,
           ;; and the sensors notice it; the contact report tells the game
-          ;; what it hit and stands on.
-          #:solid? #t #:contacts? #t #:category 'player)))
+          ;; what it hit and stands on, and on which side it met the walker.
+          #:solid? #t #:contacts? 'sides #:category 'player)))
 
 ;;; The goal and the coins notice the player and nothing else.
 (define goal0
@@ -96,6 +101,14 @@
           #:solid? #t #:immovable? #t #:carries? #t)))
 
 (define lift-from-x (entity-ref lift0 #:x))
+
+;;; The walker paces the floor of the pit under the lift's run (row 14's
+;;; top, y 224), turning where a wall stops it (its #:blocked).
+(define walker0
+  (list #:id 'walker #:x 1320 #:y 210 #:width 12 #:height 14 #:vx -1 #:vy 0
+        #:gravity? #t #:solid? #t #:contacts? #t #:sprite walker-picture))
+(define *walker-speed* 1)
+(define *stomp-bounce* 8)               ; px/frame up off a stomped walker
 (define lift-to-x (entity-ref (map-object "lift") #:to-x))
 
 ;;; ------------------------------------------------------------ bookkeeping
@@ -147,7 +160,20 @@ running on the ground."
   (game-scene-set! game (update-scene (game-scene game) entities: (start-entities) tilemap: level
                                       data: 0)))
 
-(define (start-entities) (cons* (dress player0 0 #f 0) lift0 goal0 coins0))
+(define (start-entities) (cons* (dress player0 0 #f 0) lift0 goal0 (append coins0 (list walker0))))
+
+(define (walker-sides player)
+  "The sides of PLAYER that met the walker this frame (its #:touching
+entries (name . side), #:contacts? 'sides)."
+  (filter-map (lambda (entry) (and (pair? entry) (eq? (car entry) 'walker) (cdr entry)))
+              (entity-ref player #:touching '())))
+
+(define (steer-walker walker)
+  ;; Turned by a wall it ran into this frame (the tile step stopped it).
+  (let ((blocked (entity-ref walker #:blocked '())))
+    (cond ((memq 'left blocked) (entity-set walker #:vx *walker-speed*))
+          ((memq 'right blocked) (entity-set walker #:vx (- *walker-speed*)))
+          (else walker))))
 
 (define (entered scene)
   "The names of the sensors the player entered this frame: the scene's
@@ -196,10 +222,15 @@ removed, and how many there were."
 
 (define (update game dt)
   (theme-from-the-start game)
-  (cond ((input-pressed? (game-input game) 'start) (restart! game))
-        ;; Paused after this frame: the next ticks call paused-update.
-        ((input-pressed? (game-input game) 'pause) (game-paused-set! game #t) (note! game 'paused))
-        (else (play! game dt))))
+  (let ((sides (walker-sides (car (scene-entities (game-scene game))))))
+    (cond ((input-pressed? (game-input game) 'start) (restart! game))
+          ;; Paused after this frame: the next ticks call paused-update.
+          ((input-pressed? (game-input game) 'pause) (game-paused-set! game #t) (note! game 'paused))
+          ;; Met on any side but its feet: the walker got the player.
+          ((any (lambda (side) (not (eq? side 'down))) sides)
+           (note! game 'hurt)
+           (restart! game))
+          (else (play! game dt)))))
 
 (define (paused-update game dt)
   ;; Nothing steps while paused: only P, to go on from the frame it stood at.
@@ -221,6 +252,8 @@ removed, and how many there were."
          (lift (entity-find (scene-entities scene) 'lift))
          (touched (entered scene))
          (picked (filter coin-name? touched))
+         ;; Landed on the walker: its down side met it.
+         (stomp? (memq 'down (walker-sides player)))
          (on-ground? (entity-ref player #:on-ground? #f))
          (wanted (cond ((input-held? input 'left) (- *run-speed*))
                        ((input-held? input 'right) *run-speed*)
@@ -246,6 +279,9 @@ removed, and how many there were."
                 (play-sound 'coin)
                 (note! game (list 'coin name)))
               picked)
+    (when stomp?
+      (play-sound 'boom)
+      (note! game 'stomped))
     (when (and (not reached-goal?) (memq 'goal touched))
       (set! reached-goal? #t)
       (set! goal-frame (game-frame game))
@@ -260,14 +296,20 @@ removed, and how many there were."
       (note! game 'jumped))
     (let* ((player (entity-set player #:vx wanted))
            (player (if jump? (entity-set player #:ay (- *jump-force*)) player))
+           (player (if stomp? (entity-set player #:vy (- *stomp-bounce*)) player))
            (player (if (or (input-held? input 'down) (entity-ref player #:drop-through? #f))
                        (entity-set player #:drop-through? (input-held? input 'down))
                        player))
            (player (dress player wanted on-ground? (game-frame game))))
       (game-scene-set! game (update-scene scene entities:
                                           (cons* player (steer-lift lift)
-                                                 (remove (lambda (e) (memq (entity-ref e #:id) picked))
-                                                         (cddr (scene-entities scene))))
+                                                 (filter-map
+                                                  (lambda (e)
+                                                    (let ((id (entity-ref e #:id)))
+                                                      (cond ((memq id picked) #f)
+                                                            ((eq? id 'walker) (and (not stomp?) (steer-walker e)))
+                                                            (else e))))
+                                                  (cddr (scene-entities scene))))
                                           tilemap: (car broken)
                                           data: (+ (scene-data scene) (length picked)))))))
 

@@ -86,8 +86,9 @@ all at once. With SUBSTEPS k > 1 (off by default), everything after the
 tweens runs as k sub-frames of 1/k frame each: velocities and gravity
 advance by a k-th, in flonums, and the motion converges to the continuous
 one as k grows. Entities with #:contacts? #t get a contact report
-(#:blocked, #:touching, #:standing-on) and the frame's pairs with them are
-kept in the scene (scene-contacts)."
+(#:blocked, #:touching, #:standing-on; with #:contacts? 'sides each
+#:touching entry is (name . side)) and the frame's pairs with them are
+kept in the scene (scene-contacts, scene-contact-sides)."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "step-scene" "scene: expected a scene (make-scene), got ~S" (list scene) #f))
   (let* ((entities (scene-entities scene))

@@ -213,7 +213,8 @@ demos' top-level names stay in that module."
     (map l-x '(0 71 72 143 144)))
   (test-equal "stepped on as it left the near end" '((1236 1248) (1249 1254))
     (map (lambda (k) (list (entity-ref (p-at k) #:x) (l-x k))) '(575 578)))
-  (test-equal "the contact report names the lift: stood on and pushed against, no tile below" '(() lift (lift))
+  (test-equal "the contact report names the lift: stood on and pushed against, no tile below; met on its down side"
+    '(() lift ((lift . down)))
     (pick (p-at 600) #:blocked #:standing-on #:touching))
   (test-equal "and on the ground, nothing" '((down) #f ())
     (pick (p-at 560) #:blocked #:standing-on #:touching))
@@ -274,6 +275,30 @@ demos' top-level names stay in that module."
     '(121 128 136 145 155 160) (map (lambda (k) (entity-ref ((ref paused 'player-at) k) #:y)) (iota 6 5)))
   (test-equal "twelve frames in sixteen ticks, not paused" '(12 16 #f)
     (list (game-frame (game-of paused)) (length (game-input-log (game-of paused))) (game-paused? (game-of paused)))))
+
+;;; The walker in the pit under the lift, out of the scripted run's way: the
+;;; player put above it or beside it at frame 0 (the script holds nothing
+;;; until frame 25).
+(define (platformer-with-player-at x y frames)
+  (let* ((m (load-demo "platformer.scm")) (g (game-of m)) (s (game-scene g)) (es (scene-entities s)))
+    (game-scene-set! g (update-scene s entities: (cons (entity-set (entity-set (car es) #:x x) #:y y) (cdr es))))
+    ((ref m 'run!) frames)
+    m))
+(test-group "platformer: the walker"
+  (let* ((m (platformer-with-player-at 1316 150 14))
+         (p (lambda (k) ((ref m 'player-at) k)))
+         (walker (lambda (k) ((ref m 'entity-at) k 'walker))))
+    (test-equal "falling on it: frame 8 the player's #:touching says its down side met it"
+      '((() 1312) (((walker . down)) #f))
+      (map (lambda (k) (list (entity-ref (p k) #:touching) (and (walker k) (entity-ref (walker k) #:x)))) '(7 8)))
+    (test-equal "… a stomp: the walker is gone, the player bounces off at 8 px a frame, a boom"
+      '((8 . stomped) -8 ((8 . boom)))
+      (list (assq 8 (events-of m)) (entity-ref (p 8) #:vy) (game-sounds (game-of m)))))
+  (let* ((m (platformer-with-player-at 1290 208 19)))
+    (test-equal "standing in its way: it walks into the player's right side at frame 18, and the run starts again"
+      '(((0 . landed) (18 . hurt)) (40 100) (1320 210))
+      (list (events-of m) (pick ((ref m 'player-at) 18) #:x #:y)
+            (pick ((ref m 'entity-at) 18 'walker) #:x #:y)))))
 
 ;;; ================================================================ top-down
 (define topdown (run-demo "topdown.scm"))

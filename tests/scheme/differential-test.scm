@@ -509,6 +509,8 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
            (cond (d (apply mm d))
                  ((not (equal? (scene-contacts (cdr n)) (scene-contacts (cdr r))))
                   (mm #f "<scene-contacts>" (scene-contacts (cdr n)) (scene-contacts (cdr r))))
+                 ((not (equal? (scene-contact-sides (cdr n)) (scene-contact-sides (cdr r))))
+                  (mm #f "<scene-contact-sides>" (scene-contact-sides (cdr n)) (scene-contact-sides (cdr r))))
                  (else #f))))))
 
 ;;; Both sides' scenes with FRAME's tile edits (scene-gen's tile-edits, drawn

@@ -435,13 +435,14 @@
       e))
 
 ;;; Every third entity, from a place the seed decides, reports contacts
-;;; (semantics §10), bar every fourth seed's scene, which has none. Decided
-;;; from the seed and the position, never drawn, so every seed keeps the
-;;; scene it had before contact reports existed, bar the flag.
+;;; (semantics §10), bar every fourth seed's scene, which has none; every
+;;; other one of those asks for the sides ('sides). Decided from the seed
+;;; and the position, never drawn, so every seed keeps the scene it had
+;;; before contact reports existed, bar the flag.
 (define (contact-reporter seed)
   (lambda (e i)
     (if (and (not (zero? (modulo seed 4))) (zero? (modulo (+ seed i) 3)))
-        (append e (list #:contacts? #t))
+        (append e (list #:contacts? (if (odd? (quotient (+ seed i) 3)) 'sides #t)))
         e)))
 
 ;;; Categories, sensors and bounce (semantics §13), in about 2 scenes in 3,
