@@ -136,6 +136,7 @@ SCM bulk_step(const char* proc, SCM entities) {
 void resolve_noting_pairs(Batch& batch) {
     thread_local ContactScratch scratch;
     thread_local PairLog own;
+    thread_local SideLog sides;
     const std::span<Body> bodies(batch.bodies);
     const bool reports = batch.contact_bodies != 0;
     PairLog* overlay = pushed_pairs();
@@ -143,10 +144,11 @@ void resolve_noting_pairs(Batch& batch) {
     PairLog* log = overlay ? overlay : reports ? &own : nullptr;
     const size_t from = log ? log->size() : 0;
     scratch.log = log;
-    scratch.sides.clear();  // by the log's pairs from `from` on
+    sides.clear();  // by the log's pairs from `from` on
+    scratch.sides = &sides;
     resolve_entity_collisions(scratch, bodies);
     if (!reports) return;
-    batch.contacts.gather(std::span<const IndexPair>(*log).subspan(from), scratch.sides, bodies);
+    batch.contacts.gather(std::span<const IndexPair>(*log).subspan(from), sides, bodies);
     batch.reports = kReportsTouching;
 }
 // Groups need scratch only when some body has an origin: a local one will do.

@@ -171,8 +171,8 @@ void run_pairs(ContactScratch& scratch, std::span<Body> bodies, std::span<const 
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kPairGridFrom);
-    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, &scratch.sides);
-    else all_pairs(bodies, members, resting, scratch.log, &scratch.sides);
+    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, scratch.sides);
+    else all_pairs(bodies, members, resting, scratch.log, scratch.sides);
 }
 
 }  // namespace

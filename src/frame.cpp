@@ -112,7 +112,9 @@ void Frame::Impl::note_standing(Body& b, size_t i, bool indexed) {
 }
 
 void Frame::Impl::begin_contact_log() {
-    contacts_.sides.clear();  // it follows the overlay's log too, which others clear
+    // The sides follow the overlay's log too, which others clear.
+    frame_sides_.clear();
+    contacts_.sides = &frame_sides_;
     if (contact_bodies_ == 0) return;
     if (overlay_log_ == nullptr) {
         frame_pairs_.clear();
@@ -417,7 +419,7 @@ std::span<const std::pair<uint32_t, uint32_t>> Frame::contact_pairs() const {
 std::span<const uint8_t> Frame::contact_sides() const {
     const Impl& m = *impl_;
     if (m.contact_bodies_ == 0) return {};
-    return m.contacts_.sides;
+    return m.frame_sides_;
 }
 
 }  // namespace ds

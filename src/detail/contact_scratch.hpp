@@ -14,13 +14,14 @@ namespace ds {
 // What push-apart keeps between calls so that a warm caller does not
 // allocate: the colliding bodies' indices and the grid pass. A Frame owns
 // one; `log`, when set, receives every pair resolved (the debug overlay),
-// and `sides` the side of each one's first body: its owner clears `sides`
-// where it begins noting (the log may hold earlier pairs, the overlay's).
+// and `sides`, when set too, the side of each one's first body: the caller
+// clears it where it begins noting (the log may hold earlier pairs, the
+// overlay's) and keeps it.
 struct ContactScratch {
     std::vector<size_t> members;
     PairSweep sweep;
     PairLog* log = nullptr;
-    SideLog sides;
+    SideLog* sides = nullptr;
 };
 
 // One pass over the pairs (i, j), i < j, in list order; each pair sees what

@@ -101,6 +101,7 @@ struct Frame::Impl {
     PairLog* overlay_log_ = nullptr;
     PairLog frame_pairs_;
     size_t pairs_from_ = 0;
+    SideLog frame_sides_;  // beside the log from pairs_from_: each pair's first body's side
     void begin_contact_log();
     void end_contact_log() { contacts_.log = overlay_log_; }
 };
