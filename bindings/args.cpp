@@ -2,6 +2,7 @@
 
 #include "convert.hpp"
 #include "keys.hpp"
+#include "scm_number.hpp"
 
 namespace ds::guile {
 
@@ -18,6 +19,17 @@ bool substeps_from_scm(SCM k, int& out, Failure& f) {
         return true;
     }
     return from_scm(k, out, "substeps", f, 1, kMaxSubsteps);
+}
+
+bool gravity_from_scm(SCM g, Num& out, Failure& f) {
+    if (SCM_UNBNDP(g)) {
+        out = Num::integer(ds::kGravity);  // not PhysKey kGravity (keys.hpp)
+        return true;
+    }
+    double v;
+    if (!from_scm(g, v, "gravity", f)) return false;
+    num_from_scm(g, out);
+    return true;
 }
 
 bool dt_from_scm(SCM dt, double& out, Failure& f) {

@@ -15,5 +15,8 @@ bool mode_from_scm(SCM mode, CollisionMode& out, Failure& f);
 bool substeps_from_scm(SCM k, int& out, Failure& f);
 // A finite real number of milliseconds, ≥ 0 (-0.0 included).
 bool dt_from_scm(SCM dt, double& out, Failure& f);
+// The scene's gravity (semantics §14): unbound means the seed's *gravity*;
+// else a finite real number, exact when an exact integer.
+bool gravity_from_scm(SCM g, Num& out, Failure& f);
 
 }  // namespace ds::guile

@@ -58,7 +58,15 @@ SCM step_entity(const char* proc, SCM entity, Step step, Standing standing = {},
 }
 
 SCM apply_acceleration_1(SCM e) { return step_entity("apply-acceleration", e, apply_acceleration); }
-SCM apply_gravity_1(SCM e) { return step_entity("apply-gravity", e, [](Body& b) { return apply_gravity(b); }); }
+SCM apply_gravity_1(SCM e, SCM gravity) {
+    Failure f{"apply-gravity"};
+    Num g;
+    if (!gravity_from_scm(gravity, g, f)) raise(f);
+    return step_entity("apply-gravity", e, [g](Body& b) { return apply_gravity(b, SubStep{}, g); });
+}
+SCM apply_speed_limits_1(SCM e) {
+    return step_entity("apply-speed-limits", e, [](Body& b) { return apply_speed_limits(b); });
+}
 SCM apply_velocity_x_1(SCM e) { return step_entity("apply-velocity-x", e, [](Body& b) { return apply_velocity_x(b); }); }
 SCM apply_velocity_y_1(SCM e) { return step_entity("apply-velocity-y", e, [](Body& b) { return apply_velocity_y(b); }); }
 SCM apply_velocity_1(SCM e) { return step_entity("apply-velocity", e, apply_velocity); }
@@ -217,7 +225,10 @@ void register_entity_procedures() {
     constexpr const char* physics = "(downstroke physics)";
     define_procedure<1, 0, 0, apply_acceleration_1>("%apply-acceleration",
         WrapperDoc{"(entity)", "apply-acceleration", physics});
-    define_procedure<1, 0, 0, apply_gravity_1>("%apply-gravity", WrapperDoc{"(entity)", "apply-gravity", physics});
+    define_procedure<1, 1, 0, apply_gravity_1>("%apply-gravity",
+        WrapperDoc{"(entity [gravity])", "apply-gravity", physics});
+    define_procedure<1, 0, 0, apply_speed_limits_1>("%apply-speed-limits",
+        WrapperDoc{"(entity)", "apply-speed-limits", physics});
     define_procedure<1, 0, 0, apply_velocity_x_1>("%apply-velocity-x",
         WrapperDoc{"(entity)", "apply-velocity-x", physics});
     define_procedure<1, 0, 0, apply_velocity_y_1>("%apply-velocity-y",

@@ -22,7 +22,7 @@ enum PhysKey : uint8_t {
     kPhysKeyCount,
     kNotPhysics = 0xff,
 };
-static_assert(kPhysKeyCount <= 32, "Decoded::present holds one bit per PhysKey");
+static_assert(kPhysKeyCount <= 64, "Decoded::present holds one bit per PhysKey");
 
 struct Keys {
     SCM key[kPhysKeyCount];

@@ -85,6 +85,8 @@ struct Sides {};
 struct Report {};
 struct ReportMode {};
 struct Unit {};
+struct Scale {};
+struct Cap {};
 struct Category {};
 struct CategoryList {};
 
@@ -129,6 +131,20 @@ bool decode(Unit, SCM key, SCM v, UnitNum& out, uint32_t, Decoded&, Failure& f) 
     out = UnitNum::of(n);
     if (n.v >= 0 && n.v <= 1) return true;
     fail(f, "out-of-range", scm_list_2(key, v), "entity key ~S: expected a number from 0 to 1, got ~S");
+    return false;
+}
+// #:gravity-scale (semantics §14): any finite real.
+bool decode(Scale, SCM key, SCM v, GravityScale& out, uint32_t, Decoded&, Failure& f) {
+    return decode_number(key, v, out.n, f);
+}
+// #:max-vx, #:max-vy, #:drag (semantics §14): a finite real ≥ 0.
+template <double Absent>
+bool decode(Cap, SCM key, SCM v, NonNegNum<Absent>& out, uint32_t, Decoded&, Failure& f) {
+    Num n;
+    if (!decode_number(key, v, n, f)) return false;
+    out = NonNegNum<Absent>::of(n);
+    if (n.v >= 0) return true;
+    fail(f, "out-of-range", scm_list_2(key, v), "entity key ~S: expected a number ≥ 0, got ~S");
     return false;
 }
 // Categories are checked here and turned into bits by a CategoryTable.
@@ -339,7 +355,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
             }
             continue;
         }
-        d.present |= 1u << k;
+        d.present |= uint64_t{1} << k;
         place(d.places, k, index);
         if (!decode_value(k, key, SCM_CAR(SCM_CDR(p)), d, f)) return false;
     }

@@ -28,7 +28,7 @@ struct FieldPlaces {
 struct Decoded {
     Body body;
     FieldPlaces places;
-    uint32_t present = 0;  // bit k set: PhysKey k occurs in the plist
+    uint64_t present = 0;  // bit k set: PhysKey k occurs in the plist
     uint16_t lossy = 0;    // Field bits whose value is not a fixnum or flonum (1/3, 2^70)
     SCM tween = SCM_BOOL_F;
     SCM id = SCM_BOOL_F;   // the raw #:id, for equal? comparisons

@@ -17,6 +17,7 @@ constexpr SkipName kSkipNames[] = {
     {"tile-collisions-x", kSkipTileX},    {"tile-collisions-y", kSkipTileY},
     {"on-solid", kSkipOnSolid},           {"entity-collisions", kSkipEntityCollisions},
     {"tweens", kSkipTweens},              {"carry", kSkipCarry},
+    {"speed-limits", kSkipSpeedLimits},
 };
 
 }  // namespace

@@ -21,8 +21,9 @@ enum Skip : uint16_t {
     kSkipEntityCollisions = 1u << 7,
     kSkipTweens = 1u << 8,
     kSkipCarry = 1u << 9,  // not carried by a carrier (semantics §11)
+    kSkipSpeedLimits = 1u << 10,  // no #:drag or #:max-vx/#:max-vy (semantics §14)
 };
-constexpr int kSkipCount = 10;  // the Skip bits above
+constexpr int kSkipCount = 11;  // the Skip bits above
 
 // Returns the bit for a skip symbol's name, or 0 for a name physics does not know.
 uint16_t skip_bit(const char* name);
@@ -96,6 +97,29 @@ struct UnitNum {
     bool operator==(const UnitNum& o) const { return std::bit_cast<uint64_t>(code) == std::bit_cast<uint64_t>(o.code); }
 };
 
+// A non-negative number (#:max-vx, #:max-vy, #:drag; semantics §14) in 8
+// bytes, its exactness in the sign bit as UnitNum keeps it. `Absent` is what
+// a body without the key holds: no drag is 0, no speed limit +∞ (a value no
+// plist can give, infinities being refused).
+template <double Absent>
+struct NonNegNum {
+    double code = Absent;
+    double value() const { return std::fabs(code); }
+    bool exact() const { return std::signbit(code) || code == 0; }
+    bool absent() const { return code == Absent; }
+    Num num() const { return {value(), exact()}; }
+    static NonNegNum of(Num n) { return {n.exact ? -n.v : n.v}; }
+    bool operator==(const NonNegNum& o) const { return std::bit_cast<uint64_t>(code) == std::bit_cast<uint64_t>(o.code); }
+};
+using SpeedCap = NonNegNum<HUGE_VAL>;
+using DragNum = NonNegNum<0.0>;
+
+// #:gravity-scale (semantics §14): any finite real, 1 when absent.
+struct GravityScale {
+    Num n = Num::integer(1);
+    bool absent() const { return n.exact && n.v == 1; }
+};
+
 struct Body {
     // One member per row of body_fields.def, in its order: x y w h (Num: the
     // box is [x, x+w) × [y, y+h)), vx vy ay, local_x local_y, the flags
@@ -115,6 +139,8 @@ struct Body {
     bool reports_pairs() const { return contacts || sensor; }
     // What detect-on-solid looks at: it applies to this body.
     bool detects_ground() const { return gravity && !skips(kSkipOnSolid); }
+    // Has a speed limit or a drag (semantics §14): apply_speed_limits has work.
+    bool limits_speed() const { return !(drag.absent() && max_vx.absent() && max_vy.absent()); }
 };
 
 // Whether two bodies' categories let them meet (semantics §13): each one's

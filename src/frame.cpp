@@ -69,7 +69,7 @@ uint32_t reported(const Body& b, uint32_t fields) { return b.contacts ? fields :
 
 const char* step_name(StepId id) {
     static constexpr const char* kNames[kStepCount] = {
-        "tweens", "acceleration", "gravity", "velocity-x", "tile-collisions-x", "velocity-y",
+        "tweens", "acceleration", "gravity", "speed-limits", "velocity-x", "tile-collisions-x", "velocity-y",
         "tile-collisions-y", "on-solid", "entity-collisions", "groups"};
     return kNames[id];
 }
@@ -128,9 +128,9 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
     // Step by step over a block of bodies, block after block: the same
     // result as step by step over all of them (each per-entity step reads
     // only its own body and the frame-start supporters), each step's cost
-    // can still be reported, and a block stays in cache through all seven
+    // can still be reported, and a block stays in cache through all eight
     // steps, where whole-list passes would stream a large scene from memory
-    // seven times. The masks say what a step can write given the body as it
+    // eight times. The masks say what a step can write given the body as it
     // is: acceleration resets only a non-zero ay, tile steps do nothing at
     // zero speed.
     const CollisionMode mode = opts.mode;
@@ -154,12 +154,15 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
         t = pass(kStepGravity, block, bodies, writes, t, [](const Body&) { return kFieldVy; },
                  [&](Body& b, size_t i) {
                      if (opts.resting_contacts && b.gravity && !b.skips(kSkipGravity) &&
-                         rests(b, i, grid, indexed)) {
+                         pulled_down(b, opts.gravity) && rests(b, i, grid, indexed)) {
                          resting_[i] = 1;
                          return false;
                      }
-                     return apply_gravity(b, sub);
+                     return apply_gravity(b, sub, opts.gravity);
                  });
+        t = pass(kStepSpeedLimits, block, bodies, writes, t,
+                 [](const Body& b) { return b.limits_speed() ? kFieldVx | kFieldVy : 0u; },
+                 [&](Body& b, size_t) { return apply_speed_limits(b, sub); });
         t = pass(kStepVelocityX, block, bodies, writes, t, [](const Body&) { return kFieldX; },
                  [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
         t = pass(kStepTileX, block, bodies, writes, t,

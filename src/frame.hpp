@@ -59,7 +59,7 @@ struct World {
 
 // The steps of a frame, in order, for reporting what each cost.
 enum StepId : int {
-    kStepTweens, kStepAcceleration, kStepGravity, kStepVelocityX, kStepTileX, kStepVelocityY,
+    kStepTweens, kStepAcceleration, kStepGravity, kStepSpeedLimits, kStepVelocityX, kStepTileX, kStepVelocityY,
     kStepTileY, kStepOnSolid, kStepEntityCollisions, kStepGroups, kStepCount,
 };
 const char* step_name(StepId id);  // the skip symbol's spelling: "velocity-x", "groups", …

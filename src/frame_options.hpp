@@ -1,5 +1,7 @@
 // What a whole frame runs under besides the bodies and the map.
 #pragma once
+#include "constants.hpp"
+#include "number.hpp"
 #include "tiles.hpp"
 
 namespace ds {
@@ -14,10 +16,14 @@ struct FrameOptions {
     // resolve_pair).
     int substeps = 1;
     bool resting_contacts = false;
+    // The scene's gravity (make-scene gravity:, semantics §14), px/frame²:
+    // the seed's *gravity* unless a scene sets another.
+    Num gravity = Num::integer(kGravity);
 
     // The options physics reads (all but dt, which only tweens use).
     bool same_physics(const FrameOptions& o) const {
-        return mode == o.mode && substeps == o.substeps && resting_contacts == o.resting_contacts;
+        return mode == o.mode && substeps == o.substeps && resting_contacts == o.resting_contacts &&
+               same(gravity, o.gravity);
     }
 };
 

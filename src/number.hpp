@@ -17,6 +17,8 @@ struct Num {
 
 inline Num operator+(Num a, Num b) { return {a.v + b.v, a.exact && b.exact}; }
 inline Num operator-(Num a, Num b) { return {a.v - b.v, a.exact && b.exact}; }
+inline Num operator*(Num a, Num b) { return {a.v * b.v, a.exact && b.exact}; }
+inline Num operator-(Num a) { return {-a.v, a.exact}; }
 
 // Same value and same exactness, and for flonums the same sign of zero:
 // Scheme's eqv? tells 0.0 from -0.0, so writing one over the other is a change.

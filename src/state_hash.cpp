@@ -2,6 +2,8 @@
 
 #include <bit>
 
+#include "constants.hpp"
+
 namespace ds {
 
 void StateHash::number(Num n) {
@@ -16,6 +18,12 @@ void StateHash::number(Num n) {
 void StateHash::add(const Body& b) {
     for (const Num n : {b.x, b.y, b.w, b.h, b.vx, b.vy, b.ay}) number(n);
     byte(b.on_ground ? 1 : 0);
+}
+
+void StateHash::add_gravity(Num g) {
+    if (same(g, Num::integer(kGravity))) return;
+    byte(0x47);
+    number(g);
 }
 
 uint64_t state_hash(std::span<const Body> bodies) {

@@ -14,6 +14,11 @@
 //                (exact zero has no sign), a flonum's sign of zero is kept
 //     1 byte     on-ground flag: 0x01 true, 0x00 false
 //
+// A scene whose gravity (semantics §14) is not the seed's exact 1 appends,
+// after its bodies, the byte 0x47 ('G') and the gravity as a number (9
+// bytes, as above); at the default nothing is appended, so every scene's
+// hash from before scene gravity existed is unchanged.
+//
 // The empty sequence hashes to the offset basis. Only these fields count:
 // identity, flags other than on-ground, group data and anything a plist
 // carries beyond them are not part of the physical state being compared.
@@ -34,6 +39,8 @@ constexpr uint64_t kFnvPrime = 0x100000001b3ull;
 class StateHash {
 public:
     void add(const Body& body);
+    // The scene's gravity, after the bodies: adds nothing at the default.
+    void add_gravity(Num gravity);
     uint64_t value() const { return h_; }
 
 private:

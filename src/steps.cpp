@@ -9,9 +9,44 @@ bool apply_acceleration(Body& b) {
     return true;
 }
 
-bool apply_gravity(Body& b, SubStep s) {
+bool apply_gravity(Body& b, SubStep s, Num g) {
     if (!b.gravity || b.skips(kSkipGravity)) return false;
-    b.vy = b.vy + s.share(Num::integer(kGravity));
+    // At the default scale the seed's sum, exactly: no product to round.
+    b.vy = b.vy + s.share(b.gravity_scale.absent() ? g : g * b.gravity_scale.n);
+    return true;
+}
+
+namespace {
+
+// v moved toward 0 by d (> 0), never past it: a velocity within d of 0
+// stops, exact only when both were (a still one is left as it is).
+Num drag_toward_zero(Num v, Num d) {
+    if (v.v > d.v) return v - d;
+    if (v.v < -d.v) return v + d;
+    if (v.v == 0) return v;
+    return {0.0, v.exact && d.exact};
+}
+
+// v with its magnitude at most cap: ±cap (the cap's exactness) past it. A
+// zero cap is exact (NonNegNum), and an exact zero is +0.0, never −0.0.
+Num clamp_speed(Num v, SpeedCap cap) {
+    const Num c = cap.num();
+    if (v.v > c.v) return c;
+    if (v.v < -c.v) return c.exact ? Num::integer(0.0 - c.v) : -c;
+    return v;
+}
+
+}  // namespace
+
+bool apply_speed_limits(Body& b, SubStep s) {
+    if (!b.limits_speed() || b.skips(kSkipSpeedLimits)) return false;
+    if (!b.drag.absent()) {
+        const Num d = s.share(b.drag.num());
+        b.vx = drag_toward_zero(b.vx, d);
+        b.vy = drag_toward_zero(b.vy, d);
+    }
+    b.vx = clamp_speed(b.vx, b.max_vx);
+    b.vy = clamp_speed(b.vy, b.max_vy);
     return true;
 }
 

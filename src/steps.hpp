@@ -28,8 +28,19 @@ struct SubStep {
 
 // vy += ay, then ay = 0. Needs #:gravity?; skipped by 'acceleration.
 bool apply_acceleration(Body& b);
-// vy += *gravity* (·h). Needs #:gravity?; skipped by 'gravity.
-bool apply_gravity(Body& b, SubStep s = {});
+// vy += gravity × #:gravity-scale (·h), gravity being the scene's (the
+// seed's *gravity* by default). Needs #:gravity?; skipped by 'gravity.
+bool apply_gravity(Body& b, SubStep s = {}, Num gravity = Num::integer(kGravity));
+// Whether gravity pulls the body down (gravity × scale > 0): only then may
+// a resting contact (FrameOptions::resting_contacts) hold it still.
+inline bool pulled_down(const Body& b, Num gravity) {
+    const double s = b.gravity_scale.n.v;
+    return gravity.v != 0 && s != 0 && (gravity.v > 0) == (s > 0);
+}
+// #:drag (·h) moves vx and vy toward 0, never past it; then #:max-vx and
+// #:max-vy clamp them (semantics §14). Needs one of the keys; skipped by
+// 'speed-limits. Writes a velocity only when it changes.
+bool apply_speed_limits(Body& b, SubStep s = {});
 // x += vx (·h; in a sub-frame a zero velocity moves nothing); skipped by 'velocity-x.
 bool apply_velocity_x(Body& b, SubStep s = {});
 // y += vy (·h); skipped by 'velocity-y.

@@ -49,7 +49,7 @@
     (camera-x . "The world x that CAMERA puts at the screen's left edge.")
     (camera-y . "The world y that CAMERA puts at the screen's top edge.")
     ;; (downstroke physics)
-    (*gravity* . "What apply-gravity adds to a #:gravity? entity's #:vy every frame, in px per frame: 1.")
+    (*gravity* . "What apply-gravity adds to a #:gravity? entity's #:vy every frame, in px per frame, unless the scene sets its own (make-scene gravity:) or the entity a #:gravity-scale: 1.")
     (*jump-force* . "The usual jump speed, in px per frame: set #:ay to (- *jump-force*) to jump. 15.")
     (*on-solid-tolerance* . "How far below its feet (px) detect-on-solid looks for ground: 4.")
     (collision-mode . "A parameter: 'swept (the default: a fast body cannot pass through a thin wall) or 'discrete (each body moves its whole step, then is pushed out). step-scene and the steps read it.")

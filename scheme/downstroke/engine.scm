@@ -459,8 +459,9 @@ the next tick steps the frame the game stood at."
 (define (engine-stats game)
   "What the last physics frame cost, step by step: a list of
 (step processed skipped ms) — decode (reading the entities), each step of the
-frame in order (tweens acceleration gravity velocity-x tile-collisions-x
-velocity-y tile-collisions-y on-solid entity-collisions groups), and encode
+frame in order (tweens acceleration gravity speed-limits velocity-x
+tile-collisions-x velocity-y tile-collisions-y on-solid entity-collisions
+groups), and encode
 (writing back what changed). PROCESSED counts the entities a step applied
 to; SKIPPED those it left alone (skip-pipelines, no #:gravity?, no speed on
 a tile step's axis, not solid, not in a group); for encode, the entities

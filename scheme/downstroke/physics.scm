@@ -6,7 +6,7 @@
   #:re-export (resolve-entity-collisions sync-groups aabb-overlap?)
   #:export (*gravity* *jump-force* *on-solid-tolerance* collision-mode
             resting-contacts?
-            step-tweens apply-acceleration apply-gravity apply-velocity-x
+            step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
             resolve-tile-collisions-y detect-on-solid carry-riders step-scene))
 
@@ -14,9 +14,10 @@
 ;; Read-only, for the core never reads a Scheme variable: a set! would change
 ;; nothing but the game's own idea of the number.
 (define-read-only *gravity* %gravity
-  (format #f "*gravity* is read-only: the engine's gravity is fixed, adding ~a px/frame \
-to each #:gravity? entity's #:vy every frame; for a stronger or weaker fall, \
-add to its #:ay every frame (a make-scene gravity: setting is planned: issue 47)" %gravity))
+  (format #f "*gravity* is read-only: it is the default gravity, ~a px/frame², \
+added to each #:gravity? entity's #:vy every frame; for a stronger or weaker \
+fall, give the scene its own (make-scene gravity: 1/6) or an entity its \
+#:gravity-scale" %gravity))
 (define-read-only *jump-force* %jump-force
   (format #f "*jump-force* is read-only: it is the usual jump speed, ~a px/frame, \
 which the engine itself never reads; jump at another speed by setting #:ay \
@@ -50,8 +51,15 @@ below the feet for ground, a fixed rule of the engine" %on-solid-tolerance))
 entity; any other comes back as it is)."
   (%apply-acceleration entity))
 (define (apply-gravity entity scene dt)
-  "ENTITY with *gravity* added to its #:vy (only a #:gravity? entity)."
-  (%apply-gravity entity))
+  "ENTITY with SCENE's gravity (scene-gravity; *gravity* when SCENE is #f)
+times its #:gravity-scale (1 when absent) added to its #:vy (only a
+#:gravity? entity)."
+  (if scene (%apply-gravity entity (scene-gravity scene)) (%apply-gravity entity)))
+(define (apply-speed-limits entity scene dt)
+  "ENTITY with its #:drag taken off the size of #:vx and #:vy (never past
+0), then #:vx and #:vy clamped to #:max-vx and #:max-vy; an entity with none
+of these keys comes back as it is, whether or not it has #:gravity?."
+  (%apply-speed-limits entity))
 (define (apply-velocity-x entity scene dt) "ENTITY moved by its #:vx along x." (%apply-velocity-x entity))
 (define (apply-velocity-y entity scene dt) "ENTITY moved by its #:vy along y." (%apply-velocity-y entity))
 (define (apply-velocity entity scene dt)
@@ -93,7 +101,7 @@ kept in the scene (scene-contacts, scene-contact-sides)."
     (scm-error 'wrong-type-arg "step-scene" "scene: expected a scene (make-scene), got ~S" (list scene) #f))
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
-                                  substeps (resting-contacts?)))
+                                  substeps (resting-contacts?) (scene-gravity scene)))
          (old ((@@ (downstroke world) %scene-contacts) scene))
          (pairs (%frame-contacts stepped))
          (contacts (if (null? pairs) '() (cons pairs (%frame-contact-sides))))

@@ -85,8 +85,11 @@ hash) hashes it, computed in plain Scheme."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "scene-hash" "expected a scene, got ~S" (list scene) #f))
   (let* ((entities (scene-entities scene))
+         (g (scene-gravity scene))
          (h (let loop ((p entities) (h fnv-offset-basis))
-              (cond ((null? p) h)
+              (cond ((null? p)
+                     ;; A gravity other than the default exact 1: 'G', then it.
+                     (if (and (exact-flag g) (= g 1)) h (hash-number (fnv-byte h #x47) g)))
                     ((pair? p) (loop (cdr p) (hash-entity h (car p))))
                     (else (fail "expected a list of entities, got ~S" entities))))))
     ;; The data is text, not physics: one implementation serves both.

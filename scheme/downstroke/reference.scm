@@ -18,7 +18,7 @@
                           tilemap-cell-shape tilemap-steepest-ramp tilemap-solid-extent))
   #:re-export (collision-mode resting-contacts?)
   #:export (*gravity* *jump-force* *on-solid-tolerance*
-            step-tweens apply-acceleration apply-gravity apply-velocity-x
+            step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
             resolve-tile-collisions-y detect-on-solid resolve-entity-collisions
             sync-groups aabb-overlap? carry-riders step-scene))
@@ -51,6 +51,8 @@
   (if (and (exact? a) (exact? b)) (as-double (+ a b)) (+ (fl a) (fl b))))
 (define (num- a b)
   (if (and (exact? a) (exact? b)) (as-double (- a b)) (- (fl a) (fl b))))
+(define (num* a b)
+  (if (and (exact? a) (exact? b)) (as-double (* a b)) (* (fl a) (fl b))))
 
 ;;; ---------------------------------------------------------------- reading and writing entities (§2)
 
@@ -59,7 +61,10 @@
 ;;; naming the step, the key and the value.
 
 (define number-keys
-  '(#:x #:y #:width #:height #:vx #:vy #:ay #:group-local-x #:group-local-y))
+  '(#:x #:y #:width #:height #:vx #:vy #:ay #:group-local-x #:group-local-y #:gravity-scale))
+
+;; The speed limits (§14): a finite real ≥ 0 each.
+(define non-negative-keys '(#:max-vx #:max-vy #:drag))
 
 (define (fail who message . args)
   (scm-error 'wrong-type-arg (symbol->string who) message args #f))
@@ -82,6 +87,12 @@
            (fail who "entity key ~S: expected a list of symbols, got ~S" key v)))
         ((eq? key #:category)
          (unless (symbol? v) (fail who "entity key ~S: expected a category symbol, got ~S" key v)))
+        ((memq key non-negative-keys)
+         (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
+         (check-finite who key v)
+         (unless (>= v 0)
+           (scm-error 'out-of-range (symbol->string who)
+                      "entity key ~S: expected a number ≥ 0, got ~S" (list key v) #f)))
         ((eq? key #:bounce)
          (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
          (check-finite who key v)
@@ -233,11 +244,54 @@ stop's rebound; a carried move never rebounds."
 #f), else rate·h computed in flonums."
   (if h (* (fl rate) h) rate))
 
-(define (gravity-step e h)
+(define (gravity-of scene)
+  "SCENE's gravity as the core reads it (§14); *gravity* without a scene."
+  (if scene (as-double (scene-gravity scene)) *gravity*))
+
+(define (scale-of e) (as-double (entity-ref e #:gravity-scale 1)))
+
+(define (pulled-down? e g)
+  "Whether gravity G pulls E down (G × its scale > 0): only then can it rest."
+  (let ((s (scale-of e)))
+    (and (not (zero? g)) (not (zero? s)) (eq? (positive? g) (positive? s)))))
+
+(define (gravity-step e h g)
   (if (or (not (flag e #:gravity?)) (skips? e 'gravity))
       e
       (let ((vy (num e #:vy)))
-        (put e #:vy vy (num+ vy (share *gravity* h))))))
+        (put e #:vy vy (num+ vy (share (num* g (scale-of e)) h))))))
+
+;;; Speed limits (§14): drag, then the caps. A zero limit reads as exact 0.
+
+(define (limit e key)
+  "E's limit under KEY as the core reads it, or #f when absent."
+  (let ((v (entity-ref e key #f)))
+    (and v (if (zero? v) 0 (as-double v)))))
+
+(define (toward-zero v d)
+  "V moved toward 0 by D (> 0), never past it; a still V is left as it is."
+  (cond ((> v d) (num- v d))
+        ((< v (- d)) (num+ v d))
+        ((zero? v) v)
+        ((and (exact? v) (exact? d)) 0)
+        (else 0.)))
+
+(define (cap-speed v cap)
+  "V with its size at most CAP (#f: no cap)."
+  (cond ((not cap) v)
+        ((> v cap) cap)
+        ((< v (- cap)) (- cap))
+        (else v)))
+
+(define (speed-limits-step e h)
+  (let ((drag (limit e #:drag)) (mx (limit e #:max-vx)) (my (limit e #:max-vy)))
+    (if (or (skips? e 'speed-limits) (not (or (and drag (not (zero? drag))) mx my)))
+        e
+        (let* ((vx (num e #:vx)) (vy (num e #:vy))
+               (d (and drag (not (zero? drag)) (share drag h)))
+               (nx (cap-speed (if d (toward-zero vx d) vx) mx))
+               (ny (cap-speed (if d (toward-zero vy d) vy) my)))
+          (put (put e #:vx vx nx) #:vy vy ny)))))
 
 (define (velocity-step e h pos-key vel-key skip)
   ;; In a sub-frame a still body's coordinate is left as it is (exact stays
@@ -257,8 +311,12 @@ stop's rebound; a carried move never rebounds."
         (if (zero? ay) e (put e #:ay ay 0)))))
 
 (define-step (apply-gravity e scene dt)
-  "vy += *gravity*."
-  (gravity-step e #f))
+  "vy += the scene's gravity × #:gravity-scale."
+  (gravity-step e #f (gravity-of scene)))
+
+(define-step (apply-speed-limits e scene dt)
+  "vx and vy toward 0 by #:drag, then clamped to #:max-vx and #:max-vy."
+  (speed-limits-step e #f))
 
 (define-step (apply-velocity-x e scene dt)
   "x += vx."
@@ -1294,11 +1352,13 @@ ground detection, resting and the carriers read (its holders, by slot)."
          (names (list->vector (map name-of entities (iota (length entities)))))
          (name-at (lambda (o i) (vector-ref names i)))
          (rest? (resting-contacts?))
+         (g (gravity-of scene))
          (stepped
           (map (lambda (e slot)
                  (let* ((e (if (= round 0) (apply-acceleration e scene dt) e))
-                        (rests (and rest? (rests? e tm supporters slot)))
-                        (e (if rests e (gravity-step e h)))
+                        (rests (and rest? (pulled-down? e g) (rests? e tm supporters slot)))
+                        (e (if rests e (gravity-step e h g)))
+                        (e (speed-limits-step e h))
                         (e (velocity-step e h #:x #:vx 'velocity-x))
                         (e (tiles-x e scene h (> round 0)))
                         (e (velocity-step e h #:y #:vy 'velocity-y))

@@ -5,7 +5,7 @@
   #:use-module ((downstroke native) #:select (tilemap?))
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
-            scene-contacts scene-contact-sides scene-data
+            scene-contacts scene-contact-sides scene-gravity scene-data
             scene-map-entities scene-transform-entities
             make-camera camera? camera-x camera-y camera-x-set! camera-y-set!))
 
@@ -45,7 +45,7 @@ X and Y must be finite real numbers."
   (%camera-y-set! camera y))
 
 (define-record-type <scene>
-  (%make-scene* entities tilemap camera camera-target contacts data)
+  (%make-scene* entities tilemap camera camera-target contacts gravity data)
   scene?
   (entities scene-entities)
   (tilemap scene-tilemap)
@@ -57,6 +57,8 @@ X and Y must be finite real numbers."
   ;; sides (0 left, 1 right, 2 up, 3 down), pair for pair — one allocation
   ;; a frame, named only when scene-contact-sides asks.
   (contacts %scene-contacts)
+  ;; px/frame² (semantics §14); the seed's *gravity*, 1, by default.
+  (gravity %scene-gravity)
   ;; The game's own state (score, lives, flags): any Scheme value, carried
   ;; by every scene made from this one, so a rewind restores it.
   (data %scene-data))
@@ -69,6 +71,22 @@ game has the data it had in that frame."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "scene-data" "expected a scene, got ~S" (list scene) #f))
   (%scene-data scene))
+
+;; The seed's *gravity*: a scene that sets none falls as the seed's does.
+(define default-gravity 1)
+
+(define (scene-gravity scene)
+  "SCENE's gravity in px per frame², what apply-gravity adds to a #:gravity?
+entity's #:vy each frame (times its #:gravity-scale): 1 unless make-scene or
+update-scene gave another (gravity:)."
+  (unless (scene? scene)
+    (scm-error 'wrong-type-arg "scene-gravity" "expected a scene, got ~S" (list scene) #f))
+  (%scene-gravity scene))
+
+(define (check-gravity who g)
+  ;; Refused here, not frames later inside step-scene.
+  (unless (and (real? g) (not (nan? g)) (not (inf? g)) (not (inf? (exact->inexact g))))
+    (scm-error 'wrong-type-arg who "gravity: expected a finite real number, got ~S" (list g) #f)))
 
 (define (scene-contacts scene)
   "The pairs (name-a . name-b) the step-scene that made SCENE pushed apart
@@ -124,36 +142,41 @@ side is down."
     (scm-error 'wrong-type-arg who "camera: expected a camera (make-camera), got ~S" (list camera) #f)))
 
 (define* (make-scene #:key (entities '()) (tilemap #f) (camera (make-camera))
-                     (camera-target #f) (data #f))
+                     (camera-target #f) (gravity default-gravity) (data #f))
   "A scene: the entity list, an optional tilemap, a camera, optionally the
-#:id (or #:tag) of the entity the camera follows, and DATA, any value the
-game keeps with the scene (score, lives, flags; #f by default)."
+#:id (or #:tag) of the entity the camera follows, its GRAVITY in px per
+frame², any finite real number (1, the seed's, by default; 1/6 for the
+moon), and DATA, any value the game keeps with the scene (score, lives,
+flags; #f by default)."
   (check-entities "make-scene" entities)
   (check-scene-parts "make-scene" tilemap camera)
-  (%make-scene* entities tilemap camera camera-target '() data))
+  (check-gravity "make-scene" gravity)
+  (%make-scene* entities tilemap camera camera-target '() gravity data))
 
 (define* (update-scene scene #:key (entities (scene-entities (checked-scene scene)))
                        (tilemap (scene-tilemap (checked-scene scene)))
                        (camera (scene-camera (checked-scene scene)))
                        (camera-target (scene-camera-target (checked-scene scene)))
+                       (gravity (%scene-gravity (checked-scene scene)))
                        (data (%scene-data (checked-scene scene))))
   "A copy of SCENE with the given fields replaced."
   (check-scene "update-scene" scene)
   (check-entities "update-scene" entities)
   (check-scene-parts "update-scene" tilemap camera)
-  (%make-scene* entities tilemap camera camera-target (%scene-contacts scene) data))
+  (check-gravity "update-scene" gravity)
+  (%make-scene* entities tilemap camera camera-target (%scene-contacts scene) gravity data))
 
 (define (%scene-with-entities scene entities)
   "SCENE with ENTITIES, a list the caller vouches for (no O(n) list? check):
 for the native steps, whose result is always a proper list."
   (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
-                (scene-camera-target scene) (%scene-contacts scene) (%scene-data scene)))
+                (scene-camera-target scene) (%scene-contacts scene) (%scene-gravity scene) (%scene-data scene)))
 
 (define (%scene-after-frame scene entities contacts)
   "SCENE after a frame: its ENTITIES and its CONTACTS (a step-scene's report:
 '(), or (pairs . side-bytevector))."
   (%make-scene* entities (scene-tilemap scene) (scene-camera scene)
-                (scene-camera-target scene) contacts (%scene-data scene)))
+                (scene-camera-target scene) contacts (%scene-gravity scene) (%scene-data scene)))
 
 (define (map-keeping proc lst)
   ;; Like map, but returns LST itself when PROC returned every element as is.

@@ -71,7 +71,7 @@ inline constexpr uint16_t kAllSkips[] = {
     ds::kSkipAcceleration, ds::kSkipGravity, ds::kSkipVelocityX,
     ds::kSkipVelocityY,    ds::kSkipTileX,   ds::kSkipTileY,
     ds::kSkipOnSolid,      ds::kSkipEntityCollisions, ds::kSkipTweens,
-    ds::kSkipCarry,
+    ds::kSkipCarry,        ds::kSkipSpeedLimits,
 };
 static_assert(std::size(kAllSkips) == ds::kSkipCount, "a Skip bit is missing here");
 inline constexpr uint16_t kEverySkip = (1u << ds::kSkipCount) - 1;

@@ -91,7 +91,7 @@
 
 (test-equal "signatures: a docstring's leading call, else the arguments"
   '("(tilemap-set-tile tm col row gid [layer])" "(entity-ref entity key [default])"
-    "(make-scene [#:entities] [#:tilemap] [#:camera] [#:camera-target] [#:data])"
+    "(make-scene [#:entities] [#:tilemap] [#:camera] [#:camera-target] [#:gravity] [#:data])"
     "(game-scene-set! game scene)" "(collision-mode)" "*gravity*"
     "(scene-map-entities scene . steps)")
   (map (lambda (m+n) (export-signature (car m+n) (cdr m+n)))

@@ -240,13 +240,13 @@
 (game-run! g18 frames: 3)
 (define stats18 (engine-stats g18))
 (test-equal "engine-stats: every step in frame order, between decode and encode, then drawing"
-  '(decode tweens acceleration gravity velocity-x tile-collisions-x velocity-y tile-collisions-y
-    on-solid entity-collisions groups encode collect render)
+  '(decode tweens acceleration gravity speed-limits velocity-x tile-collisions-x velocity-y
+    tile-collisions-y on-solid entity-collisions groups encode collect render)
   (map car stats18))
 (test-equal "engine-stats: processed and skipped per step"
   ;; the third box came out of frame 1 unchanged and depends on nobody: from
   ;; then on the frame leaves it alone (velocity-y skips it too)
-  '((decode 3 0) (tweens 0 3) (acceleration 1 2) (gravity 1 2) (velocity-x 2 1)
+  '((decode 3 0) (tweens 0 3) (acceleration 1 2) (gravity 1 2) (speed-limits 0 3) (velocity-x 2 1)
     (tile-collisions-x 0 3) (velocity-y 2 1) (tile-collisions-y 0 3) (on-solid 1 2)
     ;; encode: the two solid boxes came back as new plists, the third as itself
     (entity-collisions 2 1) (groups 0 3) (encode 2 1)
@@ -596,7 +596,7 @@
         (cons 'syntax-error (cadr case))
         (run-text (format #f "\n  (set! ~a 2)" (car case)) compile?)))
     '(#t #f)))
- '(("*gravity*" "Syntax error:\ngame.scm:2:2: set!: *gravity* is read-only: the engine's gravity is fixed, adding 1 px/frame to each #:gravity? entity's #:vy every frame; for a stronger or weaker fall, add to its #:ay every frame (a make-scene gravity: setting is planned: issue 47) in form (set! *gravity* 2)\n")
+ '(("*gravity*" "Syntax error:\ngame.scm:2:2: set!: *gravity* is read-only: it is the default gravity, 1 px/frame², added to each #:gravity? entity's #:vy every frame; for a stronger or weaker fall, give the scene its own (make-scene gravity: 1/6) or an entity its #:gravity-scale in form (set! *gravity* 2)\n")
    ("*jump-force*" "Syntax error:\ngame.scm:2:2: set!: *jump-force* is read-only: it is the usual jump speed, 15 px/frame, which the engine itself never reads; jump at another speed by setting #:ay to your own number, e.g. (entity-set player #:ay -18) in form (set! *jump-force* 2)\n")
    ("*on-solid-tolerance*" "Syntax error:\ngame.scm:2:2: set!: *on-solid-tolerance* is read-only: detect-on-solid always looks 4 px below the feet for ground, a fixed rule of the engine in form (set! *on-solid-tolerance* 2)\n")
    ("easing-names" "Syntax error:\ngame.scm:2:2: set!: easing-names is read-only: it lists the easings the engine has built in; an easing of your own is a procedure of t in [0, 1], given as make-tween's #:ease in form (set! easing-names 2)\n")))

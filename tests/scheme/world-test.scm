@@ -354,7 +354,7 @@
 (define (noop-stats) (engine-stats (make-game)))
 (test-eq "a settled scene comes back as itself" settled (step-scene settled 16))
 (test-equal "… and no step processed anything"
-  '((decode 0 4) (tweens 0 4) (acceleration 0 4) (gravity 0 4) (velocity-x 0 4)
+  '((decode 0 4) (tweens 0 4) (acceleration 0 4) (gravity 0 4) (speed-limits 0 4) (velocity-x 0 4)
     (tile-collisions-x 0 4) (velocity-y 0 4) (tile-collisions-y 0 4) (on-solid 0 4)
     (entity-collisions 0 4) (groups 0 4) (encode 0 4)
     (collect 0 0)                       ; not a pair allocated, no collection
@@ -384,5 +384,38 @@
 (test-equal "a list that shrank on another map grows back: every entity falls" '(41 41 41 41)
   (map (lambda (e) (entity-ref e #:y))
        (scene-entities (step-scene (update-scene settled #:tilemap bare-map) 16))))
+
+;;; ---------------------------------------------------------------- gravity (semantics §14)
+(test-equal "a scene's gravity is 1 unless it says" 1 (scene-gravity (make-scene)))
+(test-equal "make-scene gravity: keeps the value, exact" 1/6 (scene-gravity (make-scene #:gravity 1/6)))
+(test-equal "update-scene keeps it, and can change it" '(-2 0.5)
+  (let ((s (make-scene #:gravity -2)))
+    (list (scene-gravity (update-scene s #:entities '())) (scene-gravity (update-scene s #:gravity 0.5)))))
+(test-equal "a frame keeps it" 3
+  (scene-gravity (step-scene (make-scene #:gravity 3 #:entities '((#:x 0 #:y 0 #:gravity? #t))) 16)))
+(test-equal "the scene's gravity pulls: 3, 6, 9 px/frame" '(3 9 18)
+  (let loop ((s (make-scene #:gravity 3 #:entities '((#:x 0 #:y 0 #:width 8 #:height 8 #:gravity? #t))))
+             (i 0) (acc '()))
+    (if (= i 3)
+        (reverse acc)
+        (let ((s (step-scene s 16)))
+          (loop s (+ i 1) (cons (entity-ref (car (scene-entities s)) #:y) acc))))))
+(for-each
+ (lambda (bad)
+   (test-equal (format #f "make-scene gravity: ~s is refused by name" bad)
+     (format #f "In procedure make-scene: gravity: expected a finite real number, got ~s\n" bad)
+     (error-text (lambda () (make-scene #:gravity bad)))))
+ '(+nan.0 +inf.0 "1" 1+2i))
+(test-assert "update-scene too"
+  (mentions? (error-text (lambda () (update-scene (make-scene) #:gravity 'moon))) "update-scene" "gravity" "moon"))
+(let ((es '((#:x 0 #:y 0 #:vy 2))))
+  (test-equal "scene-hash: the default gravity adds nothing" (scene-hash (make-scene #:entities es))
+    (scene-hash (make-scene #:entities es #:gravity 1)))
+  (test-assert "scene-hash: another gravity hashes differently"
+    (not (= (scene-hash (make-scene #:entities es)) (scene-hash (make-scene #:entities es #:gravity 1.0)))))
+  (test-equal "scene-hash: the reference agrees"
+    (map (lambda (g) (scene-hash (make-scene #:entities es #:gravity g))) '(1 1.0 1/6 -2))
+    (map (lambda (g) ((@ (downstroke reference-hash) scene-hash) (make-scene #:entities es #:gravity g)))
+         '(1 1.0 1/6 -2))))
 
 (test-end "world")
