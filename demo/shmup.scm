@@ -1,8 +1,11 @@
 ;;; Shmup: who hits whom is decided by categories (physics.org, "Who
 ;;; collides with whom").
 ;;;
-;;; The ship moves by plain arithmetic ('left / 'right held); bullets and
-;;; the enemy formation move by their velocities in the engine's frame.
+;;; Everything moves by its velocity in the engine's frame. The ship is
+;;; steered by thrust ('left / 'right held add to its #:vx); its #:drag
+;;; slows it to a stop when nothing is held and its #:max-vx is its top
+;;; speed (physics.org, "apply-speed-limits"): it speeds up 1, 2, 3 px a
+;;; frame and glides 2, 1 after a release, in exact integers.
 ;;; Pressing 'a fires a bullet. A bullet is a sensor in the category bullet
 ;;; that collides only with enemies; an enemy, in the category enemy,
 ;;; collides only with bullets. So the frame itself finds each bullet that
@@ -44,11 +47,12 @@
 
 (define screen-width 320)
 (define screen-height 240)
-(define ship-speed 3)
+(define ship-thrust 2)                  ; px/frame² while a direction is held
 (define bullet-speed 6)
 
 (define ship0
   (list #:id 'ship #:kind 'ship #:x 154 #:y 216 #:width 12 #:height 12 #:score 0
+        #:vx 0 #:drag 1 #:max-vx 3
         #:category 'ship #:sprite ship-picture))
 
 ;;; Enemies are solid, so bullets sense them, and immovable, so nothing a
@@ -73,10 +77,16 @@
 
 ;;; ------------------------------------------------------------ the game
 (define (steer-ship input ship)
-  (let* ((dx (+ (if (input-held? input 'left) (- ship-speed) 0)
-                (if (input-held? input 'right) ship-speed 0)))
-         (x (+ (entity-ref ship #:x) dx)))
-    (entity-set ship #:x (max 0 (min x (- screen-width (entity-ref ship #:width)))))))
+  ;; The frame has moved the ship: kept on the screen (stopped at an edge),
+  ;; it takes this frame's thrust, which the next frame's drag and top speed
+  ;; temper.
+  (let* ((x (entity-ref ship #:x))
+         (right-edge (- screen-width (entity-ref ship #:width)))
+         (kept (max 0 (min x right-edge)))
+         (vx (if (= kept x) (entity-ref ship #:vx) 0))
+         (thrust (+ (if (input-held? input 'left) (- ship-thrust) 0)
+                    (if (input-held? input 'right) ship-thrust 0))))
+    (entity-set (entity-set ship #:x kept) #:vx (+ vx thrust))))
 
 (define (bullet-from ship)
   (set! shots (+ shots 1))

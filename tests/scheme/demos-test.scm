@@ -430,6 +430,13 @@ demos' top-level names stay in that module."
   (test-equal "a miss flies off the top: bullet-2 at y 0 at frame 45, gone at 46" '(0 #f)
     (list (entity-ref (by-id 'bullet-2 (sh-at 45)) #:y) (by-id 'bullet-2 (sh-at 46))))
   (test-equal "no bullets left at the end" '() (kind 'bullet (entities-of shmup)))
+  ;; The ship moves by thrust 2 against #:drag 1 up to #:max-vx 3 (physics.org,
+  ;; apply-speed-limits): right held from frame 120, released at 170.
+  (let ((ship-x (lambda (k) (entity-ref (by-id 'ship (sh-at k)) #:x))))
+    (test-equal "the ship speeds up 1, 2, 3, 3 px a frame and no faster" '(1 2 3 3)
+      (map (lambda (k) (- (ship-x (+ k 1)) (ship-x k))) '(120 121 122 150)))
+    (test-equal "released, its drag stops it: it glides 2, 1, then stands" '(2 1 0 0)
+      (map (lambda (k) (- (ship-x (+ k 1)) (ship-x k))) '(170 171 172 173))))
   ;; The right-hand enemies (x 233 + k, 16 wide) reach 312 - 8 at frame 63.
   (test-equal "the formation turns at the edges: first enemy x at 0, 63, 64, 65"
     '(41 104 103 102)
