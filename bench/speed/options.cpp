@@ -42,7 +42,7 @@ std::string usage() {
            "speed options:\n"
            "  --scene S[,S…]   rain crowd rest bullets platformer ramps ramps-flat\n"
            "                   crowd-categories crowd-sensors shots shots-quiet\n"
-           "                   shots-author-first shots-author-first-quiet (default: all)\n"
+           "                   shots-author-first shots-author-first-quiet knobs (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"
            "  --path P[,P…]    guile native bare reference box2d box2d-discrete\n"
            "                   (default: all; native also runs bare)\n"

@@ -45,6 +45,12 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
         if (sb.bounce) b.bounce = ds::UnitNum::of(exact(1));
         b.contacts = sb.contacts;
         b.sensor = sb.sensor;
+        if (sb.knobs) {
+            b.gravity_scale.n = exact(2);
+            b.drag = ds::DragNum::of(exact(1));
+            b.max_vx = ds::SpeedCap::of(exact(4));
+            b.max_vy = ds::SpeedCap::of(exact(6));
+        }
         out.push_back(b);
     }
     return out;

@@ -216,6 +216,10 @@ each body goes through the same motion whatever N is.
   shots-author-first-quiet :: the same two with the game's keys before the
   engine's. (The Box2D path skips them: they measure the Scheme boundary's
   report.)
+- knobs :: rain with every box using all four speed keys (semantics §14):
+  #:gravity-scale 2, #:drag 1, #:max-vx 4, #:max-vy 6; gravity 2 less the
+  drag falls as rain does, capped at 6 px/frame. knobs ÷ rain is what the
+  keys cost when every body uses them. (Box2D runs it as rain.)
 - rest :: N gravity boxes (not solid) standing exactly on shelves of tiles,
   on-ground, vy 0: a frame changes nothing (checked natively when the scene
   is built). The cost of a frame in which nothing happens.

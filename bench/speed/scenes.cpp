@@ -139,6 +139,17 @@ Scene crowd(int n) {
     return s;
 }
 
+// knobs: rain with every box using all four speed keys of semantics §14
+// (#:gravity-scale 2, #:drag 1, #:max-vx 4, #:max-vy 6): gravity 2 less a
+// drag of 1 falls as rain does, to at most 6 px/frame, and the drag stops
+// the sideways drift in the first frame. knobs ÷ rain, in one run, is what
+// the keys cost when every body uses them.
+Scene knobs(int n) {
+    Scene s = rain(n);
+    for (SceneBody& b : s.bodies) b.knobs = true;
+    return s;
+}
+
 // crowd-categories: crowd with every other box an enemy (in the category
 // enemy, colliding with enemy and default). Every pair still meets, so the
 // boxes move exactly as in crowd: crowd-categories ÷ crowd, in one run, is
@@ -343,7 +354,7 @@ const std::vector<std::string>& scene_names() {
     static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
                                                    "ramps-flat", "crowd-categories", "crowd-sensors",
                                                    "shots", "shots-quiet", "shots-author-first",
-                                                   "shots-author-first-quiet"};
+                                                   "shots-author-first-quiet", "knobs"};
     return names;
 }
 
@@ -368,6 +379,7 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "shots-quiet") s = shots(n, false, false);
     else if (name == "shots-author-first") s = shots(n, true, true);
     else if (name == "shots-author-first-quiet") s = shots(n, false, true);
+    else if (name == "knobs") s = knobs(n);
     else throw std::invalid_argument("unknown scene " + name);
     s.name = name;
     s.n = n;

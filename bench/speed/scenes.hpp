@@ -23,6 +23,9 @@ struct SceneBody {
     // with `author_first`, before them. `bounce`: #:bounce 1.
     bool shot = false, target = false, contacts = false, author_keys = false, author_first = false;
     bool bounce = false;
+    // Gravity and speed limits (semantics §14): #:gravity-scale 2, #:drag 1,
+    // #:max-vx 4, #:max-vy 6 (the knobs scene).
+    bool knobs = false;
     // The velocity the bounce update restores, with its sign flipped, on an
     // axis a collision zeroed (0: that axis does not bounce).
     int64_t rvx = 0, rvy = 0;
