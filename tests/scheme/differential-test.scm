@@ -80,18 +80,18 @@
        (or (< frame 3) (and (positive? check-every) (zero? (modulo frame check-every))))))
 
 (define step-names
-  '(step-tweens apply-acceleration apply-gravity apply-velocity-x apply-velocity-y
+  '(step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x apply-velocity-y
     apply-velocity resolve-tile-collisions-x resolve-tile-collisions-y detect-on-solid
     resolve-entity-collisions sync-groups aabb-overlap? *gravity* *jump-force*
     *on-solid-tolerance* collision-mode resting-contacts? carry-riders step-scene))
 
 ;;; Per-entity steps, checked on every entity of the frame's input.
 (define per-entity-steps
-  '(step-tweens apply-acceleration apply-gravity apply-velocity-x apply-velocity-y
+  '(step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x apply-velocity-y
     apply-velocity resolve-tile-collisions-x resolve-tile-collisions-y detect-on-solid))
 ;;; The frame's composition (semantics §5), then the two bulk steps.
 (define frame-stages
-  '(step-tweens apply-acceleration apply-gravity apply-velocity-x resolve-tile-collisions-x
+  '(step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x resolve-tile-collisions-x
     apply-velocity-y resolve-tile-collisions-y detect-on-solid))
 
 ;;; ---------------------------------------------------------------- the two sides
@@ -576,13 +576,13 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
     (case (mismatch-kind m)
       ((entity)
        (let* ((in (mismatch-inputs m)) (e (car in)) (dt (caddr in))
-              (scene (make-scene #:entities entities #:tilemap tilemap)))
+              (scene (make-scene #:entities entities #:tilemap tilemap #:gravity (scene-gravity-for seed))))
          (and (cdr (check-entity-step (mismatch-step m) "" e scene dt 0 0)) #t)))
       ((bulk)
        (and (cdr (check-bulk-step (mismatch-step m) "" entities 0)) #t))
       ((pair) #t)
       ((scene)
-       (and (car (run-scene seed (make-scene #:entities entities #:tilemap tilemap)
+       (and (car (run-scene seed (make-scene #:entities entities #:tilemap tilemap #:gravity (scene-gravity-for seed))
                             #:last (mismatch-frame m) #:steps? #f))
             #t)))))
 
@@ -648,7 +648,7 @@ the `composed' stand-in instead (DS_DIFF_IMPL=reference to insist)~%")
 tests/scheme/run-suite.scm tests/scheme/differential-test.scm~%" seed)
         (let* ((small (shrink m seed mode spec))
                (entities (car small)) (cells (cdr small))
-               (scene-expr (format #f "(make-scene #:entities '~s #:tilemap ~a)" entities
+               (scene-expr (format #f "(make-scene #:entities '~s #:gravity ~s #:tilemap ~a)" entities (scene-gravity-for seed)
                                    (if (and spec cells)
                                        (apply (lambda (cols rows tw th v)
                                                 (format #f "(sparse-tilemap ~a ~a ~a ~a '~s)"
@@ -720,7 +720,7 @@ that differs on that frame is ~a (~a)~%"
                  (let ((tilemap (tilemap-spec->tilemap spec)))
                   (map (lambda (mode)
                         (set! run-changed '())
-                        (let* ((scene (make-scene #:entities entities #:tilemap tilemap))
+                        (let* ((scene (make-scene #:entities entities #:tilemap tilemap #:gravity (scene-gravity-for seed)))
                                (outcome (parameterize ((collision-mode mode))
                                           (attempt (lambda () (run-scene seed scene)))))
                                (m (cond ((not (ok? outcome))
@@ -813,7 +813,7 @@ mismatch, as (frame . mismatch); #f when all FRAME-COUNT frames agree."
           (for-each
            (lambda (mode)
              (let ((d (parameterize ((collision-mode mode))
-                        (run-variant seed (make-scene #:entities entities #:tilemap tilemap) k rest?))))
+                        (run-variant seed (make-scene #:entities entities #:tilemap tilemap #:gravity (scene-gravity-for seed)) k rest?))))
                (when d
                  (err "DIFF variant seed ~a ~a substeps ~a resting ~a: frame ~a, entity ~a, ~a: native ~s, reference ~s~%"
                       seed mode k rest? (car d) (mismatch-index (cdr d)) (mismatch-key (cdr d))

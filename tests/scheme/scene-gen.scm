@@ -54,6 +54,10 @@
 ;;;   may put ramps too.
 ;;; - Categories, sensors and bounce (semantics §13) in about 2 scenes in 3
 ;;;   (collision-roles: its own stream).
+;;; - Gravity and speed limits (semantics §14), each from a stream of its own:
+;;;   a scene gravity other than 1 in about 1 scene in 3 (scene-gravity-for),
+;;;   and #:gravity-scale, #:max-vx, #:max-vy, #:drag and the 'speed-limits
+;;;   skip on entities of about 1 scene in 2 (speed-knobs).
 ;;; - dt: 16, 16.666 or 20 for the whole scene, or varying by frame (10%).
 ;;;
 ;;; Set `scene-gen-invalid?' to #t to put a wrongly typed value (a string
@@ -470,6 +474,31 @@
         (let loop ((es entities) (acc '()))        ; one entity after the other
           (if (null? es) (reverse acc) (loop (cdr es) (cons (role (car es)) acc)))))))
 
+;;; Gravity and speed limits (semantics §14), from streams of their own
+;;; (salts 130363 and 130399), so every seed keeps the scene it had before
+;;; they existed, bar these keys and its gravity. In about 1 scene in 2 an
+;;; entity gets a #:gravity-scale (1 in 4), a #:max-vx and a #:max-vy (1 in
+;;; 5 each), a #:drag (1 in 5; 0 included) and, with none of its own, a skip
+;;; list of 'speed-limits (1 in 12).
+(define (speed-knobs seed entities)
+  (let ((r (make-rng seed 130363)))
+    (define (knobs e)
+      (let* ((e (if (chance r 1 4) (append e (list #:gravity-scale (pick r '(0 -1 1/2 0.5 2 1.0 3 -0.25)))) e))
+             (e (if (chance r 1 5) (append e (list #:max-vx (pick r '(0 1 3 4.5 8 1/2 0.0)))) e))
+             (e (if (chance r 1 5) (append e (list #:max-vy (pick r '(0 1 3 4.5 8 1/2 2.0)))) e))
+             (e (if (chance r 1 5) (append e (list #:drag (pick r '(1 0.25 1/3 2 0 0.5)))) e)))
+        (if (and (chance r 1 12) (not (memq #:skip-pipelines e)))
+            (append e (list #:skip-pipelines '(speed-limits)))
+            e)))
+    (if (chance r 1 2)
+        entities
+        (map knobs entities))))
+
+(define (scene-gravity-for seed)
+  "The gravity of scene SEED: 1, the default, in about 2 scenes in 3."
+  (let ((r (make-rng seed 130399)))
+    (if (chance r 2 3) 1 (pick r '(1/2 2 0 -1 0.5 1.0 1/6 3)))))
+
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
@@ -483,7 +512,8 @@
     (let loop ((slots slots) (boxes '()) (ids '()) (acc '()))
       (if (null? slots)
           (let ((entities (map (contact-reporter seed)
-                               (collision-roles seed (map (compose carrier-platform one-way-ledge) (reverse acc)))
+                               (speed-knobs seed
+                                            (collision-roles seed (map (compose carrier-platform one-way-ledge) (reverse acc))))
                                (iota (length acc)))))
             (values (if (and scene-gen-invalid? (chance r 1 30))
                         (let* ((i (ri r (length entities))) (p (invalid-pair r)))
@@ -572,7 +602,8 @@
 (define (generate-scene seed)
   (call-with-values (lambda () (generate-scene-parts seed))
     (lambda (entities spec)
-      (make-scene #:entities entities #:tilemap (tilemap-spec->tilemap spec)))))
+      (make-scene #:entities entities #:tilemap (tilemap-spec->tilemap spec)
+                  #:gravity (scene-gravity-for seed)))))
 
 (define (scene-dt seed frame)
   (let* ((r (make-rng seed 1))
