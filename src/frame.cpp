@@ -160,9 +160,10 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
                      }
                      return apply_gravity(b, sub, opts.gravity);
                  });
-        t = pass(kStepSpeedLimits, block, bodies, writes, t,
-                 [](const Body& b) { return b.limits_speed() ? kFieldVx | kFieldVy : 0u; },
-                 [&](Body& b, size_t) { return apply_speed_limits(b, sub); });
+        if (limited_ != 0)
+            t = pass(kStepSpeedLimits, block, bodies, writes, t,
+                     [](const Body& b) { return b.limits_speed() ? kFieldVx | kFieldVy : 0u; },
+                     [&](Body& b, size_t) { return apply_speed_limits(b, sub); });
         t = pass(kStepVelocityX, block, bodies, writes, t, [](const Body&) { return kFieldX; },
                  [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
         t = pass(kStepTileX, block, bodies, writes, t,
@@ -227,6 +228,7 @@ void Frame::Impl::begin_census(size_t n, bool take) {
     carriers_.clear();
     crushed_ = false;
     grouped_ = 0;
+    limited_ = 0;
     contact_bodies_ = 0;
     supporters_taken_ = take;
     if (take) clear_supporters(n);
@@ -243,6 +245,7 @@ void Frame::Impl::enlist(const Body& b, size_t i) {
     }
     if (b.senses()) sensors_.push_back(i);
     grouped_ += b.group != 0;
+    limited_ += b.limits_speed();
     contact_bodies_ += b.reports_pairs();
 }
 

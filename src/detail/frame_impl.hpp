@@ -80,6 +80,9 @@ struct Frame::Impl {
         return sensors_.empty() ? std::span<const size_t>(members_) : std::span<const size_t>(pair_members_);
     }
     uint64_t grouped_ = 0;
+    // Bodies with a drag or a speed cap (semantics §14): without any, the
+    // frame does not walk the bodies for apply_speed_limits at all.
+    uint64_t limited_ = 0;
     std::vector<size_t> carriers_;        // the members that are carriers, in list order
     bool crushed_ = false;                // some crushable member enters the frame crushed
     std::vector<Body> carry_start_;       // the bodies at the (sub-)frame start, for the carry
