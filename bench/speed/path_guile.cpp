@@ -44,7 +44,7 @@ SCM entity(const SceneBody& b, bool bounce) {
                                      : SCM_EOL;
     if (b.knobs)
         tail = scm_cons_star(kw("gravity-scale"),
-                             scm_list_n(num(2), kw("drag"), num(1), kw("max-vx"), num(4), kw("max-vy"), num(6),
+                             scm_list_n(num(2), kw("drag"), num(1), kw("max-vx"), num(4), kw("max-vy"), num(64),
                                         tail, SCM_UNDEFINED));
     if (!b.author_first) tail = scm_append(scm_list_2(tail, author));
     SCM head = scm_list_n(kw("type"), scm_from_utf8_symbol(b.immovable ? "pillar" : "box"),

@@ -49,7 +49,7 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
             b.gravity_scale.n = exact(2);
             b.drag = ds::DragNum::of(exact(1));
             b.max_vx = ds::SpeedCap::of(exact(4));
-            b.max_vy = ds::SpeedCap::of(exact(6));
+            b.max_vy = ds::SpeedCap::of(exact(64));
         }
         out.push_back(b);
     }

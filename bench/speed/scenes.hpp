@@ -24,7 +24,7 @@ struct SceneBody {
     bool shot = false, target = false, contacts = false, author_keys = false, author_first = false;
     bool bounce = false;
     // Gravity and speed limits (semantics §14): #:gravity-scale 2, #:drag 1,
-    // #:max-vx 4, #:max-vy 6 (the knobs scene).
+    // #:max-vx 4, #:max-vy 64 (the knobs scene).
     bool knobs = false;
     // The velocity the bounce update restores, with its sign flipped, on an
     // axis a collision zeroed (0: that axis does not bounce).
