@@ -138,11 +138,11 @@ bool decode(Scale, SCM key, SCM v, GravityScale& out, uint32_t, Decoded&, Failur
     return decode_number(key, v, out.n, f);
 }
 // #:max-vx, #:max-vy, #:drag (semantics §14): a finite real ≥ 0.
-template <double Absent>
-bool decode(Cap, SCM key, SCM v, NonNegNum<Absent>& out, uint32_t, Decoded&, Failure& f) {
+template <bool Unlimited>
+bool decode(Cap, SCM key, SCM v, NonNegNum<Unlimited>& out, uint32_t, Decoded&, Failure& f) {
     Num n;
     if (!decode_number(key, v, n, f)) return false;
-    out = NonNegNum<Absent>::of(n);
+    out = NonNegNum<Unlimited>::of(n);
     if (n.v >= 0) return true;
     fail(f, "out-of-range", scm_list_2(key, v), "entity key ~S: expected a number ≥ 0, got ~S");
     return false;

@@ -98,21 +98,22 @@ struct UnitNum {
 };
 
 // A non-negative number (#:max-vx, #:max-vy, #:drag; semantics §14) in 8
-// bytes, its exactness in the sign bit as UnitNum keeps it. `Absent` is what
-// a body without the key holds: no drag is 0, no speed limit +∞ (a value no
-// plist can give, infinities being refused).
-template <double Absent>
+// bytes, its exactness in the sign bit as UnitNum keeps it. What a body
+// without the key holds: no speed limit is +∞ (`UnlimitedWhenAbsent`; a
+// value no plist can give, infinities being refused), no drag is 0.
+template <bool UnlimitedWhenAbsent>
 struct NonNegNum {
-    double code = Absent;
+    static constexpr double kAbsent = UnlimitedWhenAbsent ? HUGE_VAL : 0.0;
+    double code = kAbsent;
     double value() const { return std::fabs(code); }
     bool exact() const { return std::signbit(code) || code == 0; }
-    bool absent() const { return code == Absent; }
+    bool absent() const { return code == kAbsent; }
     Num num() const { return {value(), exact()}; }
     static NonNegNum of(Num n) { return {n.exact ? -n.v : n.v}; }
     bool operator==(const NonNegNum& o) const { return std::bit_cast<uint64_t>(code) == std::bit_cast<uint64_t>(o.code); }
 };
-using SpeedCap = NonNegNum<HUGE_VAL>;
-using DragNum = NonNegNum<0.0>;
+using SpeedCap = NonNegNum<true>;
+using DragNum = NonNegNum<false>;
 
 // #:gravity-scale (semantics §14): any finite real, 1 when absent.
 struct GravityScale {
