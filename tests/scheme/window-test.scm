@@ -117,7 +117,7 @@
   (test-equal "the window is the picture scaled ×2 and centred" '(96 . 72) origin)
   (test-equal "the red bar spans the width" '(230 60 60) (canvas-pixel 63 3))
   (test-equal "below it, the background" background (canvas-pixel 0 10))
-  (test-equal "the box outline where the key walked it (x 20)" '(80 220 100) (canvas-pixel 20 20))
+  (test-equal "the box (its #:color) where the key walked it (x 20)" '(80 220 100) (canvas-pixel 20 20))
   (test-equal "… its far edge at x 25" '(80 220 100) (canvas-pixel 25 25))
   (test-equal "… and not where it started" background (canvas-pixel 4 21))
   (test-equal "every canvas pixel is one 2 × 2 block: a pixel-exact scale" #t

@@ -30,7 +30,8 @@
 
 (define game
   (make-game title: "window-test" width: 64 height: 48
-             scene: (make-scene entities: (list (list #:id 'box #:x 4 #:y 20 #:width 6 #:height 6 #:solid? #t)))
+             scene: (make-scene entities: (list (list #:id 'box #:x 4 #:y 20 #:width 6 #:height 6 #:solid? #t
+                                                        #:color '(80 220 100))))
              update: update
              input-map: (append (default-input-map) '((click "mouse:left")))
              render: (lambda (game)
