@@ -445,12 +445,13 @@ SCM rewrite_placed(SCM plist, const Edit* edits, size_t count, const FieldPlaces
 
 FieldPlaces places_of(SCM plist) {
     FieldPlaces places;
-    uint32_t seen = 0;
+    // One bit per PhysKey, as Decoded::present (keys.hpp asserts they fit).
+    uint64_t seen = 0;
     size_t index = 0;
     for (SCM p = plist; scm_is_pair(p) && index <= FieldPlaces::kMaxPlace; p = SCM_CDR(SCM_CDR(p)), ++index) {
         const uint8_t k = keys->lookup(SCM_CAR(p));
         if (k == kNotPhysics || ((seen >> k) & 1u)) continue;
-        seen |= 1u << k;
+        seen |= uint64_t{1} << k;
         place(places, k, index);
     }
     return places;
