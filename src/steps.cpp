@@ -18,35 +18,52 @@ bool apply_gravity(Body& b, SubStep s, Num g) {
 
 namespace {
 
+// The helpers take and give a velocity as its two parts, read and written
+// member by member: the step before (gravity, a tile step) stored the
+// exactness as a byte, and loading the whole Num as one 16-byte value
+// straight after stalls on that store (no store-to-load forwarding from a
+// byte to a wider load), which cost a falling body with limits a fifth more.
+
 // v moved toward 0 by d (> 0), never past it: a velocity within d of 0
 // stops, exact only when both were (a still one is left as it is).
-Num drag_toward_zero(Num v, Num d) {
-    if (v.v > d.v) return v - d;
-    if (v.v < -d.v) return v + d;
-    if (v.v == 0) return v;
-    return {0.0, v.exact && d.exact};
+inline void drag_toward_zero(double& v, bool& exact, double d, bool d_exact) {
+    if (v > d) v -= d;
+    else if (v < -d) v += d;
+    else if (v != 0) v = 0.0;
+    else return;
+    exact = exact && d_exact;
 }
 
 // v with its magnitude at most cap: ±cap (the cap's exactness) past it. A
 // zero cap is exact (NonNegNum), and an exact zero is +0.0, never −0.0.
-Num clamp_speed(Num v, SpeedCap cap) {
-    const Num c = cap.num();
-    if (v.v > c.v) return c;
-    if (v.v < -c.v) return c.exact ? Num::integer(0.0 - c.v) : -c;
-    return v;
+inline void clamp_speed(double& v, bool& exact, SpeedCap cap) {
+    const double c = cap.value();
+    if (v > c) {
+        v = c;
+        exact = cap.exact();
+    } else if (v < -c) {
+        v = cap.exact() ? 0.0 - c : -c;
+        exact = cap.exact();
+    }
 }
 
 }  // namespace
 
 bool apply_speed_limits(Body& b, SubStep s) {
     if (!b.limits_speed() || b.skips(kSkipSpeedLimits)) return false;
+    double vx = b.vx.v, vy = b.vy.v;
+    bool vx_exact = b.vx.exact, vy_exact = b.vy.exact;
     if (!b.drag.absent()) {
         const Num d = s.share(b.drag.num());
-        b.vx = drag_toward_zero(b.vx, d);
-        b.vy = drag_toward_zero(b.vy, d);
+        drag_toward_zero(vx, vx_exact, d.v, d.exact);
+        drag_toward_zero(vy, vy_exact, d.v, d.exact);
     }
-    b.vx = clamp_speed(b.vx, b.max_vx);
-    b.vy = clamp_speed(b.vy, b.max_vy);
+    clamp_speed(vx, vx_exact, b.max_vx);
+    clamp_speed(vy, vy_exact, b.max_vy);
+    b.vx.v = vx;
+    b.vx.exact = vx_exact;
+    b.vy.v = vy;
+    b.vy.exact = vy_exact;
     return true;
 }
 
