@@ -82,6 +82,7 @@
       ,@(map-entry who (scene-tilemap scene))
       (camera ,(camera-x camera) ,(camera-y camera))
       (camera-target ,(scene-camera-target scene))
+      (gravity ,(scene-gravity scene))
       (data ,(scene-data scene))
       (entities ,@(scene-entities scene)))))
 
@@ -102,7 +103,7 @@
 
 (define* (scene-save scene file #:key (frame #f))
   "Write SCENE to FILE as one readable Scheme datum that scene-load reads
-back: its entities, data, camera position, camera target, its map (the file
+back: its entities, data, gravity, camera position, camera target, its map (the file
 and options load-tilemap was given) with every cell the game changed
 (tilemap-set-tile), and FRAME (an exact integer such as (game-frame game),
 or #f). Exact numbers stay exact; flonums read back to the bit. Every
@@ -267,5 +268,13 @@ an error naming scene-load and FILE."
                             #:tilemap (loaded-map file (one file datum 'tilemap) (part file datum 'tile-edits))
                             #:camera camera
                             #:camera-target (one file datum 'camera-target)
+                            #:gravity (file-gravity file datum)
                             #:data (one file datum 'data))
                 frame)))))
+
+(define (file-gravity file datum)
+  ;; Optional: a file saved before scenes had a gravity falls as the seed's.
+  (let ((g (if (assq 'gravity (cdr datum)) (one file datum 'gravity) 1)))
+    (unless (and (real? g) (not (nan? g)) (not (inf? g)) (not (inf? (exact->inexact g))))
+      (refuse file "(gravity …): expected a finite real number, got ~s" g))
+    g))
