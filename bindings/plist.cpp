@@ -117,7 +117,13 @@ bool decode(Flag, SCM, SCM v, bool& out, uint32_t field, Decoded& d, Failure&) {
 }
 // #:contacts? (semantics §10): 'sides asks for each partner's side too; any
 // other true value is the plain report, as before sides existed.
-bool decode(ReportMode, SCM, SCM v, uint8_t& out, uint32_t, Decoded&, Failure&) {
+// #:contacts? (semantics §10): a flag, with one symbol of its own. Another
+// symbol is a slip ('side, 'sidez) that would quietly give the plain report.
+bool decode(ReportMode, SCM key, SCM v, uint8_t& out, uint32_t, Decoded&, Failure& f) {
+    if (scm_is_symbol(v) && !scm_is_eq(v, keys->sides)) {
+        fail(f, "wrong-type-arg", scm_list_2(key, v), "entity key ~S: expected #t, #f or 'sides, got ~S");
+        return false;
+    }
     out = scm_is_false(v) ? kContactsOff : scm_is_eq(v, keys->sides) ? kContactsSides : kContactsNames;
     return true;
 }

@@ -93,6 +93,11 @@
          (unless (>= v 0)
            (scm-error 'out-of-range (symbol->string who)
                       "entity key ~S: expected a number ≥ 0, got ~S" (list key v) #f)))
+        ;; A flag, with one symbol of its own (§10): another symbol is a slip
+        ;; ('side, 'sidez) that would quietly give the plain report.
+        ((eq? key #:contacts?)
+         (when (and (symbol? v) (not (eq? v 'sides)))
+           (fail who "entity key ~S: expected #t, #f or 'sides, got ~S" key v)))
         ((eq? key #:bounce)
          (unless (real? v) (fail who "entity key ~S: expected a real number, got ~S" key v))
          (check-finite who key v)

@@ -1197,6 +1197,13 @@
        (resolve-entity-collisions (list (side-box 'enemy 0 20 #:contacts? 'sides)
                                         (side-box 'player 2 14 #:contacts? 'sides)))))
 (test-equal "a scene no frame made has no sides" '() (scene-contact-sides (make-scene)))
+(test-equal "a symbol other than 'sides is a slip, refused naming the key and the value"
+  '(wrong-type-arg #t)
+  (catch 'wrong-type-arg
+    (lambda () (step-scene (make-scene #:entities (list (side-box 'enemy 0 20 #:contacts? 'sidez))) 16))
+    (lambda (key who fmt args rest)
+      (list key (string-prefix? "entity key #:contacts?: expected #t, #f or 'sides, got sidez"
+                                (apply format #f fmt args))))))
 (test-equal "scene-contact-sides refuses what is not a scene, naming it"
   '(wrong-type-arg "scene-contact-sides" "expected a scene, got (1)")
   (catch 'wrong-type-arg (lambda () (scene-contact-sides '(1)))
