@@ -11,6 +11,8 @@
 (define coin-picture 10)
 (define walker-picture 11)
 (define walker-stepping 12)
+;; A walker's feet: each picture for 128 ms (8 frames of 16 ms), in turn.
+(define walker-walk (list (cons walker-picture 128) (cons walker-stepping 128)))
 
 (for-each (lambda (name)
             (load-sound name (game-file (string-append "sounds/" (symbol->string name) ".wav"))))
@@ -44,15 +46,17 @@
         #:x (entity-ref object #:x) #:y (entity-ref object #:y) #:width 8 #:height 8
         #:sensor? #t #:collides-with '(player) #:sprite coin-picture))
 
-(define (make-enemy object)
+(define (make-enemy object place)
   ;; It turns at walls and at the ends of its patrol, the object's own
-  ;; property `patrol' px either way of where it starts.
+  ;; property `patrol' px either way of where it starts. PLACE, its place
+  ;; among the level's walkers, sets its step 5 frames after the one before.
   (let ((x (entity-ref object #:x)) (patrol (entity-ref object #:patrol 32)))
     (list #:id (string->symbol (entity-ref object #:name)) #:kind 'enemy
           #:x x #:y (entity-ref object #:y) #:width 12 #:height 14
           #:vx -1 #:vy 0 #:gravity? #t #:contacts? #t
           #:sensor? #t #:collides-with '(player)
-          #:from (- x patrol) #:to (+ x patrol) #:sprite walker-picture)))
+          #:from (- x patrol) #:to (+ x patrol)
+          #:animation walker-walk #:animation-start (* -5 place))))
 
 (define (make-door object)
   ;; Its property `to' names the next level's map; the last door has none.
@@ -66,7 +70,8 @@
   (let ((level (load-level file)))
     (make-scene entities: (cons (make-player (car (objects-of-class level 'player)) file coins)
                                 (append (map make-coin (objects-of-class level 'coin))
-                                        (map make-enemy (objects-of-class level 'enemy))
+                                        (let ((walkers (objects-of-class level 'enemy)))
+                                          (map make-enemy walkers (iota (length walkers))))
                                         (map make-door (objects-of-class level 'door))))
                 tilemap: level camera-target: 'player)))
 
@@ -86,15 +91,14 @@
                                       ((zero? speed) player-standing)
                                       (else player-running)))))
 
-(define (patrol enemy frame)
+(define (patrol enemy)
   (let* ((vx (entity-ref enemy #:vx))
          (blocked (entity-ref enemy #:blocked '()))
          (x (entity-ref enemy #:x))
          (vx (cond ((or (memq 'left blocked) (< x (entity-ref enemy #:from))) (abs vx))
                    ((or (memq 'right blocked) (> x (entity-ref enemy #:to))) (- (abs vx)))
                    (else vx))))
-    (entity-set (entity-set (entity-set enemy #:vx vx) #:flip-x? (negative? vx))
-                #:sprite (if (even? (quotient frame 8)) walker-picture walker-stepping))))
+    (entity-set (entity-set enemy #:vx vx) #:flip-x? (negative? vx))))
 
 (define (touched-by-player scene)
   (let ((ids (filter-map (lambda (pair)
@@ -114,7 +118,9 @@
          (door (find (lambda (e) (eq? (entity-ref e #:kind #f) 'door)) touched))
          (enemies (of-kind 'enemy touched))
          (falling? (positive? (entity-ref player #:vy))))
-    (cond ((entity-ref player #:won? #f)
+    (cond ((input-pressed? (game-input game) 'pause)
+           (game-paused-set! game #t))
+          ((entity-ref player #:won? #f)
            (game-scene-set! game (update-scene scene entities:
                                                (cons (entity-set player #:vx 0) (cdr (scene-entities scene))))))
           ((and door (entity-ref door #:to))
@@ -144,7 +150,7 @@
                     (cons player
                           (filter-map (lambda (e)
                                         (cond ((memq (entity-ref e #:id) gone) #f)
-                                              ((eq? (entity-ref e #:kind #f) 'enemy) (patrol e (game-frame game)))
+                                              ((eq? (entity-ref e #:kind #f) 'enemy) (patrol e))
                                               (else e)))
                                       (cdr (scene-entities scene))))))))
 
@@ -157,17 +163,26 @@
     (draw-label (format #f "COINS ~a" (entity-ref player #:coins)) 4 4 'yellow)
     (draw-label title (- width 4 (text-width title)) 4 'white)
     (when (entity-ref player #:won? #f)
-      (draw-label "YOU WIN!" (quotient (- width (text-width "YOU WIN!" #:scale 3)) 2) 90 'yellow #:scale 3))))
+      (draw-label "YOU WIN!" (quotient (- width (text-width "YOU WIN!" #:scale 3)) 2) 90 'yellow #:scale 3))
+    (when (game-paused? game)
+      (draw-label "PAUSED" (quotient (- width (text-width "PAUSED" #:scale 2)) 2) 100 'white #:scale 2))))
 
 (define input-script
   '((0 . ())
     (10 . (right))))
 
+(define (paused game dt)
+  ;; Called instead of update while the game is paused: nothing steps, the
+  ;; window shows the game as it stood, and P goes on from there.
+  (when (input-pressed? (game-input game) 'pause)
+    (game-paused-set! game #f)))
+
 (define (new-game)
   "A fresh game, at its first frame, in the first level."
   (make-game title: "Downstroke tutorial" width: 320 height: 240
              scene: (level-scene first-level 0)
-             update: update render: render input-script: input-script))
+             input-map: (append (default-input-map) '((pause "P")))
+             update: update render: render paused: paused input-script: input-script))
 
 (when (main-script? "game.scm")
   (let ((game (game-run! (new-game) frames: (if (eq? (display-mode) 'window) #f 600))))

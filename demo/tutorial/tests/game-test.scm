@@ -39,4 +39,13 @@
     (test-assert "wins" (entity-ref (player game) #:won?))
     (test-equal "and the player stops there" 0 (entity-ref (player game) #:vx))))
 
+(test-group "pause"
+  (let ((paused (play (new-game) frames: 30
+                      input: '((0 . ()) (10 . (right)) (20 . (right pause)) (21 . (right))
+                               (25 . (right pause)) (26 . (right)))))
+        (never (play (new-game) frames: 30 input: '((0 . ()) (10 . (right))))))
+    (test-equal "30 frames in 35 ticks, not paused at the end" '(30 35 #f)
+      (list (game-frame paused) (length (game-input-log paused)) (game-paused? paused)))
+    (test-equal "where a game never paused is" (entity-ref (player never) #:x) (entity-ref (player paused) #:x))))
+
 (test-end "tutorial")
