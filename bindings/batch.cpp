@@ -176,7 +176,8 @@ void zero_as_decoded(T&) {}
 // exact zeros are +0.0, as decoding makes them. Tweened entities are left to
 // be decoded again: their #:tween changes outside the body.
 // `placed`: the entity was rewritten in place order (rewrite_placed), so
-// its keys sit where they sat; otherwise they are found again. `edits` are
+// its keys sit where they sat, after the report fields put in front;
+// otherwise they are found again. `edits` are
 // those that made it: report values they wrote replace the ones kept.
 void remember(Batch& batch, size_t i, SCM entity, bool placed, const Edit* edits, size_t n) {
     if (batch.has_tween[i]) return;
@@ -192,7 +193,13 @@ void remember(Batch& batch, size_t i, SCM entity, bool placed, const Edit* edits
 #include "body_fields.def"
     const uint32_t edited = batch.fields[i] | batch.writes[i].written();
     c.watched = static_cast<uint16_t>(c.watched & ~edited);
-    if (!placed) c.places = places_of(entity);
+    if (!placed) {
+        c.places = places_of(entity);
+    } else {
+        // The absent report fields went in front, each before the previous.
+        for (size_t k = 0; k < n; ++k)
+            if (c.places.at[edits[k].field] == FieldPlaces::kUnplaced) c.places.put_in_front(edits[k].field);
+    }
     SCM_SIMPLE_VECTOR_SET(batch.cache, i, entity);
 }
 

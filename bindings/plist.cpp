@@ -369,6 +369,7 @@ bool decode_entity(SCM plist, Decoded& d, Failure& f) {
         fail(f, "wrong-type-arg", scm_list_1(plist), "malformed entity: expected a keyword plist, got ~S");
         return false;
     }
+    d.places.pairs = static_cast<uint16_t>(std::min(index, FieldPlaces::kMaxPlace + 2));
     settle_report(d);
     return true;
 }
@@ -392,7 +393,7 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
                 last = index + 1;
             }
     bool appends = false;
-    for (size_t i = 0; i < count; ++i) appends |= !((found >> i) & 1u) && !edits[i].remove;
+    for (size_t i = 0; i < count; ++i) appends |= !((found >> i) & 1u) && !edits[i].remove && !goes_in_front(edits[i].field);
     SCM head = SCM_EOL, tail = SCM_BOOL_F;
     const Conser cons;
     auto emit = [&](SCM key, SCM value) {
@@ -416,26 +417,38 @@ SCM rewrite_plist(SCM plist, const Edit* edits, size_t count) {
         if (!edits[i].remove) emit(key, edits[i].value);
     }
     for (size_t i = 0; i < count; ++i)
-        if (!((found >> i) & 1u) && !edits[i].remove) emit(edits[i].key, edits[i].value);
-    if (scm_is_false(tail)) return p;  // everything before p was removed
-    SCM_SETCDR(tail, p);
-    return head;
+        if (!((found >> i) & 1u) && !edits[i].remove && !goes_in_front(edits[i].field)) emit(edits[i].key, edits[i].value);
+    SCM result = p;  // when everything before p was removed
+    if (scm_is_true(tail)) {
+        SCM_SETCDR(tail, p);
+        result = head;
+    }
+    for (size_t i = 0; i < count; ++i)
+        if (!((found >> i) & 1u) && !edits[i].remove && goes_in_front(edits[i].field))
+            result = cons(edits[i].key, cons(edits[i].value, result));
+    return result;
 }
 
 bool all_placed(const Edit* edits, size_t count, const FieldPlaces& places) {
-    for (size_t i = 0; i < count; ++i)
-        if (edits[i].remove || edits[i].field < 0 || places.at[edits[i].field] == FieldPlaces::kUnplaced)
+    for (size_t i = 0; i < count; ++i) {
+        const Edit& e = edits[i];
+        if (e.remove || e.field < 0) return false;
+        if (places.at[e.field] == FieldPlaces::kUnplaced && !(goes_in_front(e.field) && places.absent(e.field)))
             return false;
+    }
     return count != 0;
 }
 
 SCM rewrite_placed(SCM plist, const Edit* edits, size_t count, const FieldPlaces& places) {
-    // By pair index up to the last edited pair: which edit replaces its value.
+    // By pair index up to the last replaced pair: which edit replaces its value.
     int8_t edit_at[FieldPlaces::kMaxPlace + 1];
     size_t last = 0;
-    for (size_t i = 0; i < count; ++i) last = std::max<size_t>(last, places.at[edits[i].field] + 1u);
+    auto replaces = [&](size_t i) { return places.at[edits[i].field] != FieldPlaces::kUnplaced; };
+    for (size_t i = 0; i < count; ++i)
+        if (replaces(i)) last = std::max<size_t>(last, places.at[edits[i].field] + 1u);
     std::fill_n(edit_at, last, int8_t{-1});
-    for (size_t i = 0; i < count; ++i) edit_at[places.at[edits[i].field]] = static_cast<int8_t>(i);
+    for (size_t i = 0; i < count; ++i)
+        if (replaces(i)) edit_at[places.at[edits[i].field]] = static_cast<int8_t>(i);
     const Conser cons;
     SCM p = plist, head = SCM_EOL, tail = SCM_EOL;
     for (size_t index = 0; index < last; ++index, p = SCM_CDR(SCM_CDR(p))) {
@@ -445,8 +458,21 @@ SCM rewrite_placed(SCM plist, const Edit* edits, size_t count, const FieldPlaces
         else SCM_SETCDR(tail, cell);
         tail = SCM_CDR(cell);
     }
-    SCM_SETCDR(tail, p);
-    return head;
+    SCM result = p;
+    if (last != 0) {
+        SCM_SETCDR(tail, p);
+        result = head;
+    }
+    for (size_t i = 0; i < count; ++i)  // the absent report fields (all_placed)
+        if (!replaces(i)) result = cons(edits[i].key, cons(edits[i].value, result));
+    return result;
+}
+
+void FieldPlaces::put_in_front(int field) {
+    for (uint8_t& a : at)
+        if (a != kUnplaced) a = a < kMaxPlace ? static_cast<uint8_t>(a + 1) : kUnplaced;
+    at[field] = 0;
+    if (pairs <= kMaxPlace + 1) ++pairs;
 }
 
 FieldPlaces places_of(SCM plist) {
@@ -454,12 +480,14 @@ FieldPlaces places_of(SCM plist) {
     // One bit per PhysKey, as Decoded::present (keys.hpp asserts they fit).
     uint64_t seen = 0;
     size_t index = 0;
-    for (SCM p = plist; scm_is_pair(p) && index <= FieldPlaces::kMaxPlace; p = SCM_CDR(SCM_CDR(p)), ++index) {
+    SCM p = plist;
+    for (; scm_is_pair(p) && index <= FieldPlaces::kMaxPlace; p = SCM_CDR(SCM_CDR(p)), ++index) {
         const uint8_t k = keys->lookup(SCM_CAR(p));
         if (k == kNotPhysics || ((seen >> k) & 1u)) continue;
         seen |= uint64_t{1} << k;
         place(places, k, index);
     }
+    if (!scm_is_pair(p)) places.pairs = static_cast<uint16_t>(index);
     return places;
 }
 
@@ -511,7 +539,8 @@ size_t field_edits(uint32_t changed, const Body& after, Edit* out, const FirstWr
     size_t n = 0;
     // Watched fields a step wrote are written whatever their final value: an
     // absent key goes last, in the order written (where the composition
-    // appended it); a lossy one is replaced in place.
+    // appended it), or in front if a report field's (rewrite_plist); a lossy
+    // one is replaced in place.
     const uint32_t appended = writes ? writes->written() : 0;
     for (uint32_t rest = changed & ~appended; rest != 0; rest &= rest - 1)
         out[n++] = field_edit(__builtin_ctz(rest), after);

@@ -22,8 +22,25 @@ struct FieldPlaces {
     static constexpr uint8_t kUnplaced = 255;
     static constexpr size_t kMaxPlace = 254;  // a uint8_t, kUnplaced aside
     uint8_t at[kFieldCount];
+    // How many pairs the plist has, up to kMaxPlace + 2 ("more"): while every
+    // pair has a place, an unplaced field is known to be absent, and a report
+    // key's first write goes in front without a walk (rewrite_placed).
+    uint16_t pairs = kMaxPlace + 2;
     FieldPlaces() { for (uint8_t& a : at) a = kUnplaced; }
+    bool absent(int field) const { return at[field] == kUnplaced && pairs <= kMaxPlace + 1; }
+    // The places once an absent field's key is put in front of the plist.
+    void put_in_front(int field);
 };
+
+// The fields the contact report adds beyond the seed (semantics §10, and
+// #:crushed? of §11): a step that writes one for the first time puts it at
+// the front of the plist, each before those already there, so the whole
+// plist is shared as its tail. Appending copied every pair: on a frame that
+// first reports fresh sensor shots, the copies made encoding several times
+// dearer (docs/benchmarks.org, "Cheap report keys"). The seed's own keys are
+// still appended, as the seed's examples show.
+constexpr uint32_t kFrontFields = kFieldBlocked | kFieldTouching | kFieldStandingOn | kFieldCrushed;
+inline bool goes_in_front(int8_t field) { return field >= 0 && ((kFrontFields >> field) & 1u); }
 
 struct Decoded {
     Body body;
@@ -74,13 +91,15 @@ struct Edit {
 };
 
 // A new plist with each edit applied to the first occurrence of its key
-// (removed when `remove`), absent keys appended in edit order. Conses only
-// up to the last edited key and shares the rest; returns plist itself when
-// there are no edits.
+// (removed when `remove`); absent keys are appended in edit order, except a
+// report field's (goes_in_front), put in front, each before the previous.
+// Conses only up to the last edited key and shares the rest; returns plist
+// itself when there are no edits.
 SCM rewrite_plist(SCM plist, const Edit* edits, size_t count);
 
 // Whether rewrite_placed can apply these edits: each replaces a field whose
-// first occurrence `places` knows.
+// first occurrence `places` knows, or puts a report field `places` knows to
+// be absent in front.
 bool all_placed(const Edit* edits, size_t count, const FieldPlaces& places);
 // rewrite_plist for edits that all_placed accepts: the same new plist, built
 // in one walk of the prefix up to the last edited pair.

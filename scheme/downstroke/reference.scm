@@ -186,8 +186,15 @@ each once; any other value names none."
             ((and (pair? p) (memq (car p) rest)) => (lambda (tail) (loop (cdr p) (cdr tail))))
             (else '())))))
 
+(define absent (list 'absent))
+
 (define (put-report e key value)
-  (if (equal? value (entity-ref e key (list 'absent))) e (entity-set e key value)))
+  "E with the report key KEY set to VALUE unless it holds it already: a
+first write puts KEY in front (semantics §2), so E is shared whole."
+  (let ((old (entity-ref e key absent)))
+    (cond ((equal? value old) e)
+          ((eq? old absent) (cons* key value e))
+          (else (entity-set e key value)))))
 
 (define (put-blocked e axis found gather?)
   "A tile step's part of #:blocked: its AXIS sides become FOUND (a later
@@ -1108,7 +1115,7 @@ Not their speeds: push-apart zeroes a rider's vy each frame, whatever C's."
        (<= (abs (num- (num+ (num e #:y) (num e #:height)) (num c #:y))) *on-solid-tolerance*)
        (may-stand-on? e c)))
 
-(define (crush e) (put e #:crushed? (flag e #:crushed?) #t))
+(define (crush e) (if (flag e #:crushed?) e (put-report e #:crushed? #t)))
 
 (define (clear-crushed entities)
   "No body enters a frame crushed: #:crushed? #t becomes #f on crushable ones."

@@ -964,6 +964,9 @@
   (let ((floor+wall (grid-map 10 10 (append (row 6 10) (map (lambda (r) (cons 3 r)) (iota 6))))))
     (test-equal "… into a wall, where it is crushed"
       '(34 80 #t) (keys-of (rider-after (list platform box) 1 floor+wall) '(#:x #:y #:crushed?)))
+    (test-equal "… #:crushed? put in front when first written, the rest shared"
+      '(#:crushed? #t #:x 34 #:y 80 #:width 16 #:height 16 #:solid? #t)
+      (rider-after (list platform box) 1 floor+wall))
     (test-equal "… and not any more once the platform stops"
       '(30 #f)
       (keys-of (rider-after (list (entity-set platform #:vx 0) (entity-set box #:crushed? #t)) 1 floor+wall)
@@ -997,12 +1000,12 @@
   (scene-entities (step-scene (make-scene #:entities entities #:tilemap (and (pair? map) (car map))) 16)))
 (define (report e) (map (lambda (k) (entity-ref e k 'absent)) '(#:blocked #:touching #:standing-on)))
 (define floor-4 (grid-map 4 4 (row 3 4)))
-(test-equal "a box landing on the floor is blocked down, every key appended where first written"
-  '((#:x 0 #:y 32 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:contacts? #t
-     #:blocked (down) #:on-ground? #t #:standing-on #f #:touching ()))
+(test-equal "a box landing on the floor is blocked down: the seed's keys appended, the report's in front, the latest first"
+  '((#:touching () #:standing-on #f #:blocked (down)
+     #:x 0 #:y 32 #:width 16 #:height 16 #:vy 0 #:gravity? #t #:contacts? #t #:on-ground? #t))
   (stepped '((#:x 0 #:y 30 #:width 16 #:height 16 #:vy 4 #:gravity? #t #:contacts? #t)) floor-4))
 (test-equal "walking into a wall: (right); no #:standing-on without #:gravity?"
-  '((#:x 16 #:y 0 #:width 16 #:height 16 #:vx 0 #:contacts? #t #:blocked (right) #:touching ()))
+  '((#:touching () #:blocked (right) #:x 16 #:y 0 #:width 16 #:height 16 #:vx 0 #:contacts? #t))
   (stepped '((#:x 10 #:y 0 #:width 16 #:height 16 #:vx 8 #:contacts? #t)) (grid-map 4 4 (column 2 4))))
 (test-equal "a head bump: (up)" '((up) () absent)
   (report (car (stepped '((#:x 0 #:y 20 #:width 16 #:height 16 #:vy -8 #:contacts? #t))
@@ -1023,7 +1026,11 @@
     (map report (scene-entities s)))
   (test-equal "… and the scene holds the pair" '((a . b)) (scene-contacts s))
   (test-equal "resolve-entity-collisions alone writes #:touching the same way" '((b) (a))
-    (map (lambda (e) (entity-ref e #:touching)) (resolve-entity-collisions pair))))
+    (map (lambda (e) (entity-ref e #:touching)) (resolve-entity-collisions pair)))
+  (test-equal "… in front, while the seed's #:vx it also writes first is appended"
+    '((#:touching (b) #:id a #:x -2 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t #:vx -1)
+      (#:touching (a) #:id b #:x 8 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t #:vx 1))
+    (resolve-entity-collisions pair)))
 (test-equal "no #:id: the position in the list names it" '((1) (0))
   (map (lambda (e) (entity-ref e #:touching))
        (stepped '((#:x 0 #:y 0 #:width 10 #:height 10 #:solid? #t #:contacts? #t)
@@ -1032,8 +1039,8 @@
 (define on-platform '(#:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t))
 (let ((s (step-scene (make-scene #:entities (list platform on-platform)) 16)))
   (test-equal "standing on an immovable platform: it holds the box up and pushes it"
-    '(#:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t
-      #:blocked () #:on-ground? #t #:standing-on floor #:touching (floor))
+    '(#:touching (floor) #:standing-on floor #:blocked ()
+      #:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t #:on-ground? #t)
     (cadr (scene-entities s)))
   (test-eq "the platform, without #:contacts?, is left as it was" platform (car (scene-entities s)))
   (test-equal "the pair, the earlier in the list first" '((floor . box)) (scene-contacts s))
@@ -1074,14 +1081,14 @@
            (let ((es (scene-entities s)))
              (list (entity-ref (car es) #:x) (entity-ref (car es) #:touching) (entity-ref (cadr es) #:touching))))
          scenes))
-  (test-equal "… the report keys appended after the game's keys, where first written"
-    '(#:id shot #:x 12 #:y 0 #:width 4 #:height 4 #:vx 4 #:sensor? #t #:contacts? #t #:kind shot #:ttl 60
-      #:blocked () #:touching (enemy))
+  (test-equal "… the report keys in front of the game's keys, where first written"
+    '(#:touching (enemy) #:blocked ()
+      #:id shot #:x 12 #:y 0 #:width 4 #:height 4 #:vx 4 #:sensor? #t #:contacts? #t #:kind shot #:ttl 60)
     (car (nth 2)))
   (test-eq "… an enemy whose report did not change stays itself" (cadr (nth 1)) (cadr (nth 2)))
   (test-equal "… and one whose report changed back is rewritten in place"
-    '(#:id enemy #:x 10 #:y 0 #:width 10 #:height 10 #:solid? #t #:immovable? #t #:contacts? #t #:kind grunt
-      #:blocked () #:touching ())
+    '(#:touching () #:blocked ()
+      #:id enemy #:x 10 #:y 0 #:width 10 #:height 10 #:solid? #t #:immovable? #t #:contacts? #t #:kind grunt)
     (cadr (nth 4)))
   (test-equal "stepping an earlier frame again (a rewind) gives that frame's successor again"
     (nth 2) (scene-entities (step-scene (list-ref scenes 1) 16))))
@@ -1098,10 +1105,26 @@
            (let ((b (cadr (scene-entities s))))
              (list (entity-ref b #:y) (entity-ref b #:standing-on) (entity-ref b #:touching))))
          scenes))
-  (test-equal "… its last plist, the game's keys before the report's"
-    '(#:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t
-      #:kind crate #:hp 3 #:blocked () #:standing-on #f #:touching (floor) #:on-ground? #f)
+  (test-equal "… its last plist: the report's keys in front, the game's after, #:on-ground? appended"
+    '(#:touching (floor) #:standing-on #f #:blocked ()
+      #:id box #:x 0 #:y 10 #:width 10 #:height 10 #:vy 0 #:gravity? #t #:solid? #t #:contacts? #t
+      #:kind crate #:hp 3 #:on-ground? #f)
     (cadr (scene-entities (list-ref scenes 4)))))
+;; The report keys put in front move every other key two places on: the
+;; next frames must still find #:x, also when it moves past the places a
+;; frame remembers (255 pairs) or sits there already.
+(let ((shot-after (lambda (pairs frames)
+                    (let* ((pad (append-map (lambda (k) (list (symbol->keyword (symbol-append 'k (string->symbol (number->string k)))) k))
+                                            (iota (- pairs 8))))
+                           (shot (append pad '(#:id shot #:y 0 #:width 4 #:height 4 #:vx 4 #:sensor? #t #:contacts? #t #:x 0)))
+                           (e (car (scene-entities (frames-of (make-scene #:entities (list shot)) frames)))))
+                      (list (list-head e 6) (entity-ref e #:x) (/ (length e) 2) (count (lambda (k) (eq? k #:x)) e))))))
+  (test-equal "a shot whose #:x is its 255th pair: the report in front, #:x found again, once"
+    '((#:touching () #:blocked () #:k0 0) 12 257 1) (shot-after 255 3))
+  (test-equal "… its 300th"
+    '((#:touching () #:blocked () #:k0 0) 12 302 1) (shot-after 300 3))
+  (test-equal "… its 8th"
+    '((#:touching () #:blocked () #:id shot) 12 10 1) (shot-after 8 3)))
 (let ((e '(#:x 0 #:y 0 #:width 16 #:height 16 #:vy 0 #:contacts? #t #:blocked (right))))
   (test-eq "a tile step leaves the other axis's sides, and an equal value, as they are" e
     (resolve-tile-collisions-y e (make-scene #:tilemap floor-4) 16)))
