@@ -197,8 +197,14 @@ void remember(Batch& batch, size_t i, SCM entity, bool placed, const Edit* edits
         c.places = places_of(entity);
     } else {
         // The absent report fields went in front, each before the previous.
+        // Which were absent is read before any shift: a shift can push a
+        // placed key past kMaxPlace, and it must not be taken for one.
+        static_assert(kFieldCount + 2 <= 32, "an edit list (encode_batch) fits the mask");
+        uint32_t absent = 0;  // bit k: edits[k] went in front
         for (size_t k = 0; k < n; ++k)
-            if (c.places.at[edits[k].field] == FieldPlaces::kUnplaced) c.places.put_in_front(edits[k].field);
+            if (c.places.at[edits[k].field] == FieldPlaces::kUnplaced) absent |= 1u << k;
+        for (size_t k = 0; k < n; ++k)
+            if ((absent >> k) & 1u) c.places.put_in_front(edits[k].field);
     }
     SCM_SIMPLE_VECTOR_SET(batch.cache, i, entity);
 }

@@ -1125,6 +1125,24 @@
     '((#:touching () #:blocked () #:k0 0) 12 302 1) (shot-after 300 3))
   (test-equal "… its 8th"
     '((#:touching () #:blocked () #:id shot) 12 10 1) (shot-after 8 3)))
+;; A box in the air whose #:on-ground? 'yes (rewritten: not a boolean) is its
+;; 255th pair, the last place a frame remembers: the report keys put in
+;; front push it out of reach, and it must not be taken for one of them.
+;; Floor row 3, wall column 2: it walks into the wall, falls, lands.
+(let* ((walled (grid-map 4 4 (append (column 2 4) (row 3 4))))
+       (pad (append-map (lambda (k) (list (symbol->keyword (symbol-append 'k (string->symbol (number->string k)))) k))
+                        (iota 246)))
+       (box (append '(#:x 10 #:y 26 #:width 16 #:height 16 #:vx 8 #:vy 0 #:gravity? #t #:contacts? #t)
+                    pad '(#:on-ground? yes)))
+       (after (lambda (n)
+                (let ((e (car (scene-entities (frames-of (make-scene #:entities (list box) #:tilemap walled) n)))))
+                  (append (list-head e 24) (take-right e 2) (list (/ (length e) 2)))))))
+  (test-equal "a far #:on-ground? rewritten with the report's first write, then landing"
+    '((#:touching () #:standing-on #f #:blocked (right) #:x 16 #:y 27 #:width 16 #:height 16 #:vx 0 #:vy 1
+       #:gravity? #t #:contacts? #t #:k0 0 #:on-ground? #f 258)
+      (#:touching () #:standing-on #f #:blocked (down) #:x 16 #:y 32 #:width 16 #:height 16 #:vx 0 #:vy 0
+       #:gravity? #t #:contacts? #t #:k0 0 #:on-ground? #t 258))
+    (map after '(1 4))))
 (let ((e '(#:x 0 #:y 0 #:width 16 #:height 16 #:vy 0 #:contacts? #t #:blocked (right))))
   (test-eq "a tile step leaves the other axis's sides, and an equal value, as they are" e
     (resolve-tile-collisions-y e (make-scene #:tilemap floor-4) 16)))
