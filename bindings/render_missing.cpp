@@ -18,7 +18,7 @@ constexpr const char* kStandIns[] = {
     "%display-set-input-map!", "%display-poll!",      "%open-audio!",           "%load-sound",
     "%play-sound",        "%note-pushed-pairs!",      "%load-music",            "%play-music",
     "%stop-music",        "%set-volume!",             "%display-set-fullscreen!", "%display-fullscreen?",
-    "%display-refresh-rate", "%display-vsync?",   "%display-compare-png"};
+    "%display-refresh-rate", "%display-vsync?",   "%display-compare-png",   "%named-colors"};
 
 // One function per name (I), as each registered function has one name.
 template <size_t I>

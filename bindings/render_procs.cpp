@@ -83,8 +83,25 @@ Display* display_of(SCM obj, const char* proc, Failure& f) {
 
 // ---------------------------------------------------------------- arguments
 
-// (r g b) or (r g b a), each an exact integer 0–255.
+// kNamedColors' names as symbols, interned once (register_render_procedures).
+SCM named_color_symbols[std::size(kNamedColors)];
+
+// "white black … gray", for messages.
+std::string color_names() {
+    std::string names;
+    for (const NamedColor& c : kNamedColors) (names += names.empty() ? "" : " ") += c.name;
+    return names;
+}
+
+// (r g b) or (r g b a), each an exact integer 0–255, or a colour's name.
 bool color_arg(SCM v, Rgba& out, Failure& f, Arg what = "color") {
+    if (scm_is_symbol(v)) {
+        for (size_t i = 0; i < std::size(kNamedColors); ++i)
+            if (scm_is_eq(v, named_color_symbols[i])) {
+                out = kNamedColors[i].rgba;
+                return true;
+            }
+    }
     uint8_t c[4] = {0, 0, 0, 255};
     const long n = scm_ilength(v);
     bool ok = n == 3 || n == 4;
@@ -94,7 +111,7 @@ bool color_arg(SCM v, Rgba& out, Failure& f, Arg what = "color") {
         if (ok) c[i] = static_cast<uint8_t>(scm_to_uint(SCM_CAR(p)));
     }
     if (!ok) {
-        fail_arg(f, what, v, "(r g b) or (r g b a) of integers 0–255");
+        fail_arg(f, what, v, "(r g b) or (r g b a) of integers 0–255, or one of the names %s", color_names().c_str());
         return false;
     }
     out = {c[0], c[1], c[2], c[3]};
@@ -819,6 +836,17 @@ SCM note_pushed_pairs(SCM on) {
 
 SCM renderer_p() { return SCM_BOOL_T; }
 
+// ((name r g b) …): kNamedColors for (downstroke render)'s color-rgba.
+SCM named_colors() {
+    SCM out = SCM_EOL;
+    for (size_t i = std::size(kNamedColors); i-- > 0;) {
+        const Rgba c = kNamedColors[i].rgba;
+        out = scm_cons(scm_list_4(named_color_symbols[i], scm_from_uint8(c.r), scm_from_uint8(c.g), scm_from_uint8(c.b)),
+                       out);
+    }
+    return out;
+}
+
 }  // namespace
 
 void register_render_procedures() {
@@ -827,6 +855,9 @@ void register_render_procedures() {
     scm_permanent_object(display_type);
     sym_world = scm_permanent_object(scm_from_utf8_symbol("world"));
     sym_screen = scm_permanent_object(scm_from_utf8_symbol("screen"));
+    for (size_t i = 0; i < std::size(kNamedColors); ++i)
+        named_color_symbols[i] = scm_permanent_object(
+            scm_from_utf8_symboln(kNamedColors[i].name.data(), kNamedColors[i].name.size()));
     key_sprite = scm_permanent_object(scm_from_utf8_keyword("sprite"));
     key_flip_x = scm_permanent_object(scm_from_utf8_keyword("flip-x?"));
     key_visible = scm_permanent_object(scm_from_utf8_keyword("visible?"));
@@ -843,6 +874,7 @@ void register_render_procedures() {
     constexpr const char* engine = "(downstroke engine)";
     define_procedure<0, 0, 0, renderer_p>("%renderer?", WrapperDoc{"()", "renderer-available?", render});
     define_procedure<0, 0, 0, default_map>("%default-input-map", WrapperDoc{"()", "default-input-map", render});
+    define_procedure<0, 0, 0, named_colors>("%named-colors", WrapperDoc{"()", "color-rgba", render});
     define_procedure<8, 0, 0, draw_rect>("%draw-rect!",
         WrapperDoc{"(display x y w h color fill? space)", "draw-rect", render});
     define_procedure<7, 0, 0, draw_line>("%draw-line!",

@@ -48,9 +48,12 @@ build without the renderer there are no inputs: it is ()."
   (%default-input-map))
 
 (define named-colors
-  '((white 255 255 255) (black 0 0 0) (red 230 60 60) (green 80 220 100)
-    (blue 80 150 255) (yellow 250 220 70) (cyan 90 220 240) (magenta 220 90 220)
-    (orange 255 150 40) (grey 150 150 150) (gray 150 150 150)))
+  ;; The native table (src/render/color.hpp), which #:color reads too; asked
+  ;; for when first needed, as a build without the renderer has none.
+  (let ((table #f))
+    (lambda ()
+      (unless table (set! table (%named-colors)))
+      table)))
 
 (define (color-rgba who color)
   "COLOR as the (r g b [a]) list the drawing procedures take, or an error
@@ -58,9 +61,9 @@ naming WHO (the procedure asking) when it is not a colour: a list of 3 or 4
 integers 0–255 as it is, or one of the names white black red green blue
 yellow cyan magenta orange grey."
   (cond ((symbol? color)
-         (or (assq-ref named-colors color)
+         (or (assq-ref (named-colors) color)
              (scm-error 'wrong-type-arg who "color: no color is named ~S (try ~S)"
-                        (list color (map car named-colors)) #f)))
+                        (list color (map car (named-colors))) #f)))
         (else color)))
 
 (define (display-for who)

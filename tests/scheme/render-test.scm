@@ -121,11 +121,18 @@
 (test-equal "… blended by its alpha"
   (append (map (lambda (c b) (inexact->exact (round (/ (+ (* c 128) (* b 127)) 255)))) '(0 100 200) '(24 28 40)) '(255))
   (game-pixel coloured 8 0))
-(test-assert "a bad #:color is named by game-draw with its value"
+(define named (make-game width: 8 height: 8
+                         scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 2 #:height 2 #:color red)
+                                                            '(#:x 4 #:y 0 #:width 2 #:height 2 #:color gray)))))
+(capture-of named)
+(test-equal "#:color takes the drawing procedures' colour names: red, gray"
+  '((230 60 60 255) (150 150 150 255))
+  (list (game-pixel named 1 1) (game-pixel named 5 1)))
+(test-assert "a bad #:color is named by game-draw with its value, and the names it could be"
   (mentions? (error-text (lambda () (game-capture (make-game width: 8 height: 8
-                                                             scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 1 #:height 1 #:color red))))
+                                                             scene: (make-scene entities: (list '(#:x 0 #:y 0 #:width 1 #:height 1 #:color redd))))
                                                   (string-append dir "/x.png"))))
-             "game-draw" "#:color" "red"))
+             "game-draw" "#:color" "redd" "white black red green blue yellow cyan magenta orange grey gray"))
 (game-debug-draw-set! boxes #t)
 (test-assert "game-debug-draw? follows the setter" (game-debug-draw? boxes))
 (capture-of boxes)
