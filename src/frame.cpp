@@ -144,7 +144,6 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
     const std::span<const uint32_t> active(active_);
     uint64_t before[kStepCount];
     for (int id = 0; id < kStepCount; ++id) before[id] = stats_.step[id].processed;
-    uint64_t limits_ran = 0;
     for (size_t lo = 0; lo < active.size(); lo += kStepBlock) {
         const auto block = active.subspan(lo, std::min(kStepBlock, active.size() - lo));
         auto t = Clock::now();
@@ -152,29 +151,19 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
             t = pass(kStepAcceleration, block, bodies, writes, t,
                      [](const Body& b) { return kFieldVy | unless_zero(b.ay, kFieldAy); },
                      [](Body& b, size_t) { return apply_acceleration(b); });
-        // Gravity and then the speed limits (semantics §14), body by body in
-        // one walk of the block when some body has limits. The limits never
-        // write a velocity the entity lacks (drag and caps keep an absent 0
-        // at 0), so the first writes are logged as with two passes; their
-        // time counts as gravity's.
-        auto gravity = [&](Body& b, size_t i) {
-            if (opts.resting_contacts && b.gravity && !b.skips(kSkipGravity) &&
-                pulled_down(b, opts.gravity) && rests(b, i, grid, indexed)) {
-                resting_[i] = 1;
-                return false;
-            }
-            return apply_gravity(b, sub, opts.gravity);
-        };
-        if (limited_ == 0)
-            t = pass(kStepGravity, block, bodies, writes, t, [](const Body&) { return kFieldVy; }, gravity);
-        else
-            t = pass(kStepGravity, block, bodies, writes, t,
-                     [](const Body& b) { return b.limits_speed() ? kFieldVx | kFieldVy : kFieldVy; },
-                     [&](Body& b, size_t i) {
-                         const bool ran = gravity(b, i);
-                         limits_ran += apply_speed_limits(b, sub);
-                         return ran;
-                     });
+        t = pass(kStepGravity, block, bodies, writes, t, [](const Body&) { return kFieldVy; },
+                 [&](Body& b, size_t i) {
+                     if (opts.resting_contacts && b.gravity && !b.skips(kSkipGravity) &&
+                         pulled_down(b, opts.gravity) && rests(b, i, grid, indexed)) {
+                         resting_[i] = 1;
+                         return false;
+                     }
+                     return apply_gravity(b, sub, opts.gravity);
+                 });
+        if (limited_ != 0)
+            t = pass(kStepSpeedLimits, block, bodies, writes, t,
+                     [](const Body& b) { return b.limits_speed() ? kFieldVx | kFieldVy : 0u; },
+                     [&](Body& b, size_t) { return apply_speed_limits(b, sub); });
         t = pass(kStepVelocityX, block, bodies, writes, t, [](const Body&) { return kFieldX; },
                  [&](Body& b, size_t) { return apply_velocity_x(b, sub); });
         t = pass(kStepTileX, block, bodies, writes, t,
@@ -203,7 +192,6 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
         if (settling_.counting() && round + 1 == std::max(1, opts.substeps))
             for (const uint32_t i : block) settling_.count(bodies[i], colliders_);
     }
-    stats_.step[kStepSpeedLimits].processed += limits_ran;
     // A step leaves alone every body it did not apply to, asleep ones included.
     for (int id = kStepAcceleration; id <= kStepOnSolid; ++id) {
         if (id == kStepAcceleration && round != 0) continue;

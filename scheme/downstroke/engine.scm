@@ -465,9 +465,7 @@ groups), and encode
 (writing back what changed). PROCESSED counts the entities a step applied
 to; SKIPPED those it left alone (skip-pipelines, no #:gravity?, no speed on
 a tile step's axis, not solid, not in a group); for encode, the entities
-handed back as new plists and those handed back as they were. The speed
-limits run in gravity's walk over the bodies, so their ms is counted in
-gravity's and their own row's is 0. Then
+handed back as new plists and those handed back as they were. Then
 (collect collections bytes ms): the collections that ran during the frame,
 the bytes it allocated (Boehm's count, exact to a few KB) and the time the
 collections took, which the decode and encode times leave out. It is the
