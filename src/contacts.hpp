@@ -30,12 +30,13 @@ bool collision_eligible(const Body& a, const Body& b);
 // other lands on it (semantics §4's immovable rule, first case).
 // Returns the side of a that met b (a kSide bit, semantics §10): the axis
 // and direction it was pushed on, or for a pair nothing moved (two
-// immovable bodies, a one-way body passed through) the overlap's axis of
-// least penetration (sensed_side).
+// immovable bodies, a one-way body passed through) the axis their overlap
+// began on last (sensed_side).
 uint8_t resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
 
-// The side of a that met b when neither moves (a sensor's pair): x when the
-// overlap is narrower along x than along y, else y; facing b's centre, and
+// The side of a that met b when neither moves (a sensor's pair): the axis
+// their overlap began on last, judged from their relative speed (x when
+// ox·|Δvy| < oy·|Δvx|), else the narrower overlap's; facing b's centre, and
 // on a tie as if a were pushed the negative way (right along x, down along y).
 uint8_t sensed_side(const Body& a, const Body& b);
 

@@ -919,12 +919,19 @@ axis that faces the other."
   "A is on the negative side of B: B's centre is not smaller (a tie: A)."
   (not (< (centre2 b-pos b-size) (centre2 a-pos a-size))))
 
-(define (least-penetration-side a b)
-  "The side of A that met B when nothing moved them (§10): the axis of the
-narrower overlap (x when ox < oy), facing B, a tie as push-apart breaks it."
-  (if (< (overlap (x a) (w a) (x b) (w b)) (overlap (y a) (h a) (y b) (h b)))
-      (facing #t (negative-of? (x a) (w a) (x b) (w b)))
-      (facing #f (negative-of? (y a) (h a) (y b) (h b)))))
+(define (entry-side a b)
+  "The side of A that met B when nothing moved them (§10): the axis their
+overlap began on last, from their relative speed (x when ox·|Δvy| <
+oy·|Δvx|, in doubles), else (no relative speed, or a tie) the narrower
+overlap's (x when ox < oy); facing B, a tie as push-apart breaks it."
+  (let* ((ox (overlap (x a) (w a) (x b) (w b)))
+         (oy (overlap (y a) (h a) (y b) (h b)))
+         (x-later (* ox (abs (- (fl (vector-ref a 5)) (fl (vector-ref b 5))))))
+         (y-later (* oy (abs (- (fl (vector-ref a 4)) (fl (vector-ref b 4))))))
+         (along-x (if (= x-later y-later) (< ox oy) (< x-later y-later))))
+    (if along-x
+        (facing #t (negative-of? (x a) (w a) (x b) (w b)))
+        (facing #f (negative-of? (y a) (h a) (y b) (h b))))))
 
 (define (part neg pos bounce)
   "Two movable bodies' velocities after they were pushed apart, NEG the one
@@ -971,7 +978,7 @@ before its own."
 (define (resolve-pair! ea a a-rests eb b b-rests)
   "A resting body (resting contacts) holds up one whose centre is above its
 own, as an immovable body would. Returns the side of A that met B (§10):
-as it was pushed, or where nothing moved, least-penetration-side."
+as it was pushed, or where nothing moved, entry-side."
   (let ((a-fixed (flag ea #:immovable?)) (b-fixed (flag eb #:immovable?))
         (ox (overlap (x a) (w a) (x b) (w b)))
         (oy (overlap (y a) (h a) (y b) (h b)))
@@ -984,8 +991,8 @@ as it was pushed, or where nothing moved, least-penetration-side."
                     (vector-set! m 1 (num- (y o) (h m)))
                     (vector-set! m 5 (rebound (vector-ref m 5) bounce))
                     (if a-one-way 'up 'down))
-                   (else (least-penetration-side a b)))))
-          ((and a-fixed b-fixed) (least-penetration-side a b))
+                   (else (entry-side a b)))))
+          ((and a-fixed b-fixed) (entry-side a b))
           (a-fixed (opposite (push-off-immovable! b a ox oy bounce)))
           (b-fixed (push-off-immovable! a b ox oy bounce))
           ((and a-rests (above? b a)) (opposite (push-off-immovable! b a ox oy bounce)))
@@ -1022,7 +1029,7 @@ the side it was first found on."
                       (when (and (overlaps? (cadr m) (cadr o)) (meets? (car m) (car o))
                                  (not (and (sensor? (car m)) (sensor? (car o)))))
                         (let ((side (if (or (sensor? (car m)) (sensor? (car o)))
-                                        (least-penetration-side (cadr m) (cadr o))
+                                        (entry-side (cadr m) (cadr o))
                                         (resolve-pair! (car m) (cadr m) (caddr m) (car o) (cadr o) (caddr o))))
                               (i (cadddr m)) (j (cadddr o)))
                           (when (and (or (reports-pairs? (car m)) (reports-pairs? (car o)))

@@ -105,8 +105,9 @@ made. update-scene keeps them."
 second on: ((name-a name-b . side-of-a) …), in the same order. The side is
 left, right, up or down: the axis and direction push-apart moved the pair
 on, or for a pair nothing moved (a sensor's, two immovable bodies) the
-overlap's narrower axis. B met A on the opposite side; a landing body's
-side is down."
+axis its overlap began on last, from the bodies' speeds (with no relative
+speed, the narrower overlap's). B met A on the opposite side; a landing
+body's side is down."
   (unless (scene? scene)
     (scm-error 'wrong-type-arg "scene-contact-sides" "expected a scene, got ~S" (list scene) #f))
   (let ((report (%scene-contacts scene)))

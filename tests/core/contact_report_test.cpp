@@ -121,7 +121,7 @@ TEST_CASE("push-apart returns the side of the first body that met the second, as
     CHECK(ds::opposite_side(kSideDown) == kSideUp);
 }
 
-TEST_CASE("a sensor's pair takes the overlap's axis of least penetration, facing the other's centre") {
+TEST_CASE("a still sensor's pair takes the overlap's axis of least penetration, facing the other's centre") {
     Body s = box(0, 0, 10, 10), b = solid_box(8, 2, 10, 10);  // ox 2 < oy 8
     s.sensor = true;
     CHECK(ds::meet(s, b, false, false) == ds::kSideRight);
@@ -130,6 +130,24 @@ TEST_CASE("a sensor's pair takes the overlap's axis of least penetration, facing
     t.sensor = true;
     CHECK(ds::meet(s, t, false, false) == 0);  // two sensors never meet
     CHECK(b.x.v == 8);                         // and nothing moved
+}
+
+TEST_CASE("a sensor's pair met by a moving body takes the axis its overlap began on last") {
+    // A fast fall onto a corner: ox 5, oy 9, relative speed 4 across and 13
+    // down. x overlapped 5/4 frames ago, y 9/13: y is the younger, from above.
+    Body walker = box(254, 226, 12, 14), player = solid_box(246, 219, 12, 16);
+    walker.sensor = true;
+    walker.vx = I(-1);
+    player.vx = I(3);
+    player.vy = I(13);
+    CHECK(ds::meet(player, walker, false, false) == ds::kSideDown);
+    CHECK(ds::meet(walker, player, false, false) == ds::kSideUp);
+    // Still, it would be the narrower overlap: x, the player on the left.
+    player.vx = I(0), player.vy = I(0), walker.vx = I(0);
+    CHECK(ds::meet(player, walker, false, false) == ds::kSideRight);
+    // Moving only across (5·0 < 9·4): x as well.
+    player.vx = I(3);
+    CHECK(ds::meet(player, walker, false, false) == ds::kSideRight);
 }
 
 TEST_CASE("a frame logs each pair's side beside it, sub-frame after sub-frame") {

@@ -1225,14 +1225,25 @@
   (test-equal "… and in the scene" '((coin player . right)) (scene-contact-sides s)))
 (let ((falling-in (make-scene #:entities (list (side-box 'zone 0 0 #:width 20 #:height 20 #:sensor? #t)
                                                (side-box 'b 15 -12 #:vy 8 #:contacts? 'sides)))))
-  ;; One frame: y [-4, 6) against x [15, 20): ox 5 < oy 6, along x. Two
-  ;; sub-frames: the first finds y [-8, 2), oy 2 < ox 5, along y.
-  (test-equal "one frame: the side of the frame's overlap" '((zone b . right))
-    (scene-contact-sides (step-scene falling-in 16)))
+  ;; One frame: y [-4, 6) against x [15, 20): ox 5 < oy 6, but b moves
+  ;; 8 px a frame down and none across (ox·8 = 40 > oy·0), so the y overlap
+  ;; is the younger. Two sub-frames: the first finds y [-8, 2), along y too.
+  (test-equal "one frame: the axis the overlap began on last, though it is the wider"
+    '((zone b . up)) (scene-contact-sides (step-scene falling-in 16)))
   (test-equal "sub-frames: the first sub-frame that found the partner gives the side" '((zone b . up))
     (scene-contact-sides (step-scene falling-in 16 #:substeps 2)))
   (test-equal "… for #:touching too" '((zone . down))
     (entity-ref (cadr (scene-entities (step-scene falling-in 16 #:substeps 2))) #:touching)))
+(test-equal "a 13 px/frame fall onto a sensor's corner, 4 px/frame across (ox 5, oy 9: 5·13 > 9·4), is from above"
+  '((player walker . down))
+  (scene-contact-sides
+   (step-scene (make-scene #:entities (list (list #:id 'player #:x 243 #:y 206 #:width 12 #:height 16 #:vx 3 #:vy 13 #:solid? #t)
+                                            (list #:id 'walker #:x 254 #:y 226 #:width 12 #:height 14 #:vx -1
+                                                  #:sensor? #t)))
+               16)))
+(test-equal "two still bodies: the narrower overlap (ox 5 < oy 10), as without speed"
+  '((coin player . right))
+  (scene-contact-sides (step-scene (make-scene #:entities (list (side-box 'coin 0 0 #:sensor? #t) (side-box 'player 5 0))) 16)))
 (test-equal "resolve-entity-collisions alone writes the sides too" '(((player . up)) ((enemy . down)))
   (map (lambda (e) (entity-ref e #:touching))
        (resolve-entity-collisions (list (side-box 'enemy 0 20 #:contacts? 'sides)
