@@ -284,8 +284,15 @@
   ;; paths (default tests/).
   (let loop ((args args) (junit #f) (paths '()))
     (cond ((null? args)
-           ((@ (downstroke testing) run-tests) (if (null? paths) '("tests") (reverse paths)) test-environment
-            #:junit junit #:load-file load-test-file))
+           ;; A --junit FILE that may not be written is refused before any
+           ;; test runs (run-tests says why).
+           (catch 'misc-error
+             (lambda ()
+               ((@ (downstroke testing) run-tests) (if (null? paths) '("tests") (reverse paths)) test-environment
+                #:junit junit #:load-file load-test-file))
+             (lambda (key who fmt fargs . _)
+               (format (current-error-port) "~a: ~a~%" who (apply format #f fmt fargs))
+               2)))
           ((string=? (car args) "--junit")
            (if (pair? (cdr args))
                (loop (cddr args) (cadr args) paths)
@@ -504,8 +511,16 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
              (when scale (window-scale (string->number scale))))
            (when (assq-ref opts 'fullscreen) (window-fullscreen #t))
            (let ((log (assq-ref opts 'frame-log))) (when log (frame-log-file log)))
-           (let ((record (assq-ref opts 'record))) (when record (record-file record)))
-           #t)
+           (let ((record (assq-ref opts 'record)))
+             ;; Checked now, not when the game ends: a session played
+             ;; onto a path that cannot be written would be lost.
+             (let ((problem (and record ((@ (downstroke tool-files) output-file-problem) record))))
+               (cond (problem
+                      (format (current-error-port) "downstroke: --record: cannot write ~s: ~a~%" record problem)
+                      #f)
+                     (else
+                      (when record (record-file record))
+                      #t)))))
           (else #t))))
 
 (define* (main args #:optional (version "unknown") (templates "templates"))

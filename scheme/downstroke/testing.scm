@@ -9,6 +9,8 @@
   #:use-module (downstroke engine)
   #:use-module (downstroke render)
   #:use-module ((downstroke native) #:select (%display-compare-png))
+  #:use-module (downstroke tool-files)
+  #:use-module ((ice-9 textual-ports) #:select (get-string-n))
   #:re-export (record-input read-input-script)
   #:export (test-files run-tests play check-frame))
 
@@ -146,8 +148,26 @@ load is one failure naming its error. Returns its results."
           (case c ((#\<) "&lt;") ((#\>) "&gt;") ((#\&) "&amp;") ((#\") "&quot;") (else (string c))))
         (string->list s))))
 
+;; How much of an existing file is read to tell a JUnit report: its XML
+;; declaration and the <testsuites> after it fit in the first line or two.
+(define junit-sniff-chars 512)
+
+(define (junit-target-problem file)
+  ;; #f when FILE may take a JUnit report: absent, or a regular file that
+  ;; holds one (a report of an earlier run). Else why not: `--junit' with
+  ;; its name forgotten takes the next argument, a test file or the game.
+  (or (output-file-problem file)
+      (and (file-exists? file)
+           (or (input-file-problem file)
+               (let ((head (false-if-exception
+                            (call-with-input-file file
+                              (lambda (port) (get-string-n port junit-sniff-chars))
+                              #:encoding "UTF-8"))))
+                 (and (not (and (string? head) (string-prefix? "<?xml" head) (string-contains head "<testsuites")))
+                      "it exists and is not a JUnit report (it does not start with <?xml and hold <testsuites>), so it is not written over"))))))
+
 (define (write-junit file by-file)
-  (call-with-output-file file
+  (call-with-output-file/whole "downstroke test" file
     (lambda (port)
       (format port "<?xml version=\"1.0\" encoding=\"UTF-8\"?>~%<testsuites>~%")
       (for-each
@@ -180,12 +200,23 @@ report there. LOAD-FILE loads one file (the host's compiles it quietly).
 Games made while they run are strict (strict-games): an entity key that is
 a slip of an engine key is an error. Returns the exit status: 0 only when
 nothing failed."
+  (let ((problem (and junit (junit-target-problem junit))))
+    (when problem
+      (scm-error 'misc-error "downstroke test" "--junit ~s: ~a" (list junit problem) #f)))
   (let* ((missing (remove file-exists? paths))
-         (files (test-files paths))
+         (found (test-files paths))
+         ;; A FIFO would block the run, a device be read without end.
+         (files (filter (lambda (f) (not (input-file-problem f))) found))
          (by-file (append
                    (map (lambda (p) (cons p (list (list p "(no such file or folder)" 'error #f
                                                          (format #f "no such file or folder: ~a~%" p) #f))))
                         missing)
+                   (filter-map (lambda (f)
+                                 (let ((problem (input-file-problem f)))
+                                   (and problem
+                                        (cons f (list (list f "(the file was not run)" 'error #f
+                                                            (string-append problem "\n") #f))))))
+                               found)
                    ;; Games made in tests are strict: a misspelt entity key
                    ;; fails the test that runs it (make-game strict?: #f opts out).
                    (parameterize ((strict-games #t))
