@@ -10,6 +10,7 @@
   #:use-module (downstroke history)
   #:use-module (downstroke render)
   #:use-module (downstroke arity)
+  #:use-module (downstroke tool-files)
   #:use-module ((downstroke native)
                 #:select (%frame-stats %gc-space-divisor %set-gc-space-divisor! %make-display
                           %display-draw! %display-stats %display-save-png %display-pixel
@@ -836,7 +837,7 @@ where the script quits, and record-input says so on the error port."
   (let* ((script (recorded-script game))
          (full-at (input-log-full-at (%game-input-log game)))
          (cut (and full-at (< full-at (input-clock game)) full-at)))  ; where the script quits
-    (call-with-output-file file
+    (call-with-output-file/whole "record-input" file
       (lambda (port)
         (format port ";;; The input of ~s, ~a frames, as an input script (record-input).~%" (game-title game)
                 (input-clock game))
@@ -859,9 +860,21 @@ where the script quits, and record-input says so on the error port."
               file (- cut 1) (input-clock game) *max-input-changes* cut))
     script))
 
+;; The largest input script read-input-script reads: a recording at the
+;; input log's bound, 2^21 changes, each a line of at most about 120 bytes
+;; (a frame number, a few actions, the pointer with its buttons), is 252 MB.
+(define max-input-script-bytes (* 256 1024 1024))
+
 (define (read-input-script file)
   "The input script record-input wrote to FILE, checked as make-game checks
-one."
+one. FILE must be a regular file (not a FIFO or a device) of at most 256 MiB."
+  (unless (string? file)
+    (scm-error 'wrong-type-arg "read-input-script" "file: expected a string, got ~S" (list file) #f))
+  (check-input-file "read-input-script" file)
+  (let ((size (stat:size (stat file))))
+    (when (> size max-input-script-bytes)
+      (scm-error 'misc-error "read-input-script" "~s: ~a bytes, more than an input script may hold (~a)"
+                 (list file size max-input-script-bytes) #f)))
   (let ((script (catch #t
                   (lambda () (call-with-input-file file read))
                   (lambda (key . args)
@@ -1200,6 +1213,12 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
   (let ((file (frame-log-file)))
     (and file (open-output-file file))))
 
+;; --record writes the recording this often while the game runs, not only
+;; as it ends, so that a crash or a kill keeps what was played but these
+;; last seconds. Each write is of the whole log (renamed into place, never
+;; half a file), in time that grows with it: so not more often.
+(define record-interval-seconds 5)
+
 (define (run-window! game frames)
   ;; Real time at a fixed timestep ("Fix Your Timestep!"): time accumulates,
   ;; and each fixed step of frame-delay ms consumes it. The window presents
@@ -1215,6 +1234,7 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
     (let ((present (round (/ internal-time-units-per-second (%display-refresh-rate display))))
           (log (open-frame-log))
           (start (get-internal-real-time)))
+      (define saved start)   ; when the --record file was last written
       (when log
         (format log "# ~a Hz, ~a~%" (%display-refresh-rate display)
                 (if (%display-vsync? display) "presented on vsync" "paced by the loop (no vsync)")))
@@ -1248,6 +1268,10 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
                        (alpha (min 1 (max 0 (exact->inexact (/ owed tick))))))
                   (draw-game! game (and (game-interpolate? game) before
                                         (list (car before) alpha (cadr before) (caddr before))))
+                  (when (and (record-file) (not (input-log-full-at (%game-input-log game)))
+                             (> (- now saved) (* record-interval-seconds internal-time-units-per-second)))
+                    (record-input game (record-file))
+                    (set! saved now))
                   (when log
                     (format log "~a ~a ~a ~a~%"
                             ;; The frame's clock: the time its steps and α were taken at.
