@@ -153,6 +153,37 @@
   (let ((xml (call-with-input-file (string-append dir "/report.xml") get-string-all)))
     (and (string-contains xml "<testsuite name=\"") (string-contains xml "failures=\"1\"")
          (string-contains xml "<failure message=\"line 2\">expected 5, actual 4</failure>"))))
+;; --junit with the report's name forgotten takes the next argument: a test
+;; file, or the game. It is refused, before any test runs, and left as it was.
+(define good-text (call-with-input-file (string-append suite-dir "/good-test.scm") get-string-all))
+(test-equal "--junit onto a file that is not a JUnit report: refused, exit 2, naming it and why"
+  (list 2 "" (string-append "downstroke test: --junit \"" suite-dir "/good-test.scm\": it exists and is not a JUnit report (it does not start with <?xml and hold <testsuites>), so it is not written over\n"))
+  (run "test" "--junit" (string-append suite-dir "/good-test.scm") suite-dir))
+(test-equal "… and the file is unchanged" good-text
+  (call-with-input-file (string-append suite-dir "/good-test.scm") get-string-all))
+(test-equal "--junit onto an earlier report replaces it" 1
+  (first (run "test" "--junit" (string-append dir "/report.xml") suite-dir)))
+(test-equal "… whole, and leaves no temporary file beside it"
+  '("report.xml")
+  (scandir dir (lambda (n) (string-prefix? "report.xml" n))))
+;; Guile has no mkfifo: mkfifo(1) makes them.
+(define (make-fifo path) (system* "mkfifo" path))
+(make-fifo (string-append dir "/junit-fifo"))
+(test-equal "--junit onto a FIFO: refused, never blocking"
+  (list 2 "" (string-append "downstroke test: --junit \"" dir "/junit-fifo\": it is a FIFO, not a regular file\n"))
+  (run "test" "--junit" (string-append dir "/junit-fifo") suite-dir))
+(test-equal "--junit onto a device: refused"
+  (list 2 "" "downstroke test: --junit \"/dev/null\": it is a character device, not a regular file\n")
+  (run "test" "--junit" "/dev/null" suite-dir))
+(test-equal "--junit into a folder that does not exist: refused before any test runs"
+  (list 2 "" (string-append "downstroke test: --junit \"" dir "/no-such-dir/r.xml\": its folder \"" dir "/no-such-dir\" does not exist\n"))
+  (run "test" "--junit" (string-append dir "/no-such-dir/r.xml") suite-dir))
+(mkdir (string-append dir "/fifos"))
+(make-fifo (string-append dir "/fifos/pipe-test.scm"))
+(test-equal "a *-test.scm that is a FIFO is a failure saying so, not a run that blocks"
+  (list 1 (string-append "FAIL " dir "/fifos/pipe-test.scm: (the file was not run): it is a FIFO, not a regular file\n"
+                         "0 passed, 1 failed\n"))
+  (list-head (run "test" (string-append dir "/fifos")) 2))
 (write-script "raises/raises-test.scm" "(test-begin \"raises\")\n(test-equal \"car of 5\" 1 (car 5))\n(test-end \"raises\")\n")
 (test-equal "a check that raises: one line, the error on it"
   (list 1 (string-append "FAIL " dir "/raises/raises-test.scm:2: car of 5: expected 1, raised: "

@@ -1,7 +1,7 @@
 ;;; Long recordings (issue 45): a replay walks its script once, however many
 ;;; key frames it has; a recording keeps every change of input from frame 0
 ;;; on, up to its bound, and past it says so and quits where it stopped.
-(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing))
+(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 ftw) (downstroke) (downstroke testing))
 
 (load "support.scm")
 
@@ -152,6 +152,69 @@
   "In procedure record-input: game: expected a game (make-game), got 5\n"
   (error-text (lambda () (record-input 5 (string-append dir "/never.scm")))))
 
+;;; ---------------------------------------------------------------- files
+;; Only regular files: a FIFO would block for ever, /dev/zero be read
+;; without end. Guile has no mkfifo: mkfifo(1) makes it.
+(define fifo (string-append dir "/fifo.scm"))
+(system* "mkfifo" fifo)
+(test-equal "read-input-script refuses a FIFO, naming it, without blocking"
+  (format #f "In procedure read-input-script: ~s: it is a FIFO, not a regular file\n" fifo)
+  (error-text (lambda () (read-input-script fifo))))
+(test-equal "… and a device, without reading it"
+  "In procedure read-input-script: \"/dev/zero\": it is a character device, not a regular file\n"
+  (error-text (lambda () (read-input-script "/dev/zero"))))
+(test-equal "… and a folder"
+  (format #f "In procedure read-input-script: ~s: it is a directory, not a regular file\n" dir)
+  (error-text (lambda () (read-input-script dir))))
+(test-equal "… and a file that is not there, saying so"
+  (format #f "In procedure read-input-script: ~s: it cannot be read (No such file or directory)\n"
+          (string-append dir "/absent.scm"))
+  (error-text (lambda () (read-input-script (string-append dir "/absent.scm")))))
+(define small (make-game engine-update: #f input-script: '((0 right) (3 left) (5 quit))))
+(game-run! small)
+(test-equal "record-input refuses a FIFO, naming it"
+  (format #f "In procedure record-input: cannot write ~s: it is a FIFO, not a regular file\n" fifo)
+  (error-text (lambda () (record-input small fifo))))
+(test-equal "… and a folder that does not exist"
+  (format #f "In procedure record-input: cannot write ~s: its folder ~s does not exist\n"
+          (string-append dir "/absent/rec.scm") (string-append dir "/absent"))
+  (error-text (lambda () (record-input small (string-append dir "/absent/rec.scm")))))
+(define small-file (string-append dir "/small.scm"))
+(record-input small small-file)
+(test-equal "record-input writes the file whole (no temporary file left), read back as it was"
+  '(("small.scm") ((0 right) (3 left)))
+  (list (scandir dir (lambda (n) (string-prefix? "small" n))) (read-input-script small-file)))
+
+;; --record writes as the game runs: a windowed game (SDL's dummy video
+;; driver) that ends itself with primitive-exit after 6 s, so running no
+;; cleanup, has its recording of the first 5 s on disk.
+(define recorded (string-append dir "/recorded.scm"))
+(define exiting (string-append dir "/exiting.scm"))
+(call-with-output-file exiting
+  (lambda (port)
+    (display "(define start (get-internal-real-time))
+(game-run! (make-game width: 64 height: 48 engine-update: #f
+  update: (lambda (game dt)
+            (when (> (- (get-internal-real-time) start) (* 6 internal-time-units-per-second))
+              (primitive-exit 3)))))
+" port)))
+(when (renderer-available?)
+  (test-equal "a --record game that exits part-way, running no cleanup, has exited so"
+    3 (status:exit-val (system (string-append "SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy '" (readlink "/proc/self/exe")
+                                              "' --window --record '" recorded "' '" exiting "' >/dev/null 2>&1"))))
+  (test-equal "… and its recording holds what was played, read back as an input script"
+    '((0)) (read-input-script recorded))
+  (test-equal "--record into a folder that does not exist is refused before the game starts"
+    (list 2 (format #f "downstroke: --record: cannot write ~s: its folder ~s does not exist\n"
+                    (string-append dir "/absent/r.scm") (string-append dir "/absent")))
+    (let* ((err (string-append dir "/err"))
+           (status (system (string-append "SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy '" (readlink "/proc/self/exe")
+                                          "' --window --record '" dir "/absent/r.scm' '" exiting "' 2>'" err "'")))
+           (text (call-with-input-file err (@ (ice-9 textual-ports) get-string-all))))
+      (delete-file err)
+      (list (status:exit-val status) text))))
+
+(for-each delete-file (filter file-exists? (list fifo small-file recorded exiting)))
 (for-each delete-file (list session cut-file refilled-file))
 (rmdir dir)
 
