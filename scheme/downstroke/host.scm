@@ -401,8 +401,8 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --scale N           the window's whole scale factor (default: fit the screen);
                       the window can be resized, the picture stays whole-scaled
   --fullscreen        open the window fullscreen
-  --record FILE       with --window: when the game ends, write its input to
-                      FILE as an input script a test can replay
+  --record FILE       with --window: write its input to FILE as an input
+                      script a test can replay, every 5 s and as it ends
   --frame-log FILE    with --window: write each presented frame's time (ms),
                       step, alpha (the share of a step drawn past it) and
                       the steps dropped after stalls so far
