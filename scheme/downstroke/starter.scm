@@ -6,6 +6,7 @@
   #:use-module (ice-9 ftw)
   #:use-module (ice-9 textual-ports)
   #:use-module (srfi srfi-1)
+  #:use-module ((downstroke tool-files) #:select (input-file-problem))
   #:export (write-starter starter-name-token))
 
 ;;; Text files of the template say @NAME@ where the game's name goes (its
@@ -82,6 +83,12 @@ list of the files written, relative to DIR."
            (fail "~S exists and is not empty: give a new folder's name" dir)))
     (let ((files (template-files source))
           (name (basename (canonical-or-as-is dir))))
+      ;; A FIFO among the templates would block `new', a device be copied
+      ;; without end: each is checked before anything is written.
+      (for-each (lambda (rel)
+                  (let* ((from (string-append source "/" rel)) (problem (input-file-problem from)))
+                    (when problem (fail "template file ~S: ~a" from problem))))
+                files)
       (make-folders! dir)
       (for-each (lambda (rel)
                   (let ((to (string-append dir "/" rel)))

@@ -243,6 +243,18 @@
       (unsetenv "DOWNSTROKE_TEMPLATE_DIR")
       (list (first r) (third r)))))
 
+(mkdir (string-append dir "/piped"))
+(mkdir (string-append dir "/piped/starter"))
+(call-with-output-file (string-append dir "/piped/starter/game.scm") (lambda (p) (display "(display 1)\n" p)))
+(make-fifo (string-append dir "/piped/starter/zz-pipe"))
+(test-equal "a FIFO among the templates is refused, named, before anything is written"
+  (list 1 (string-append "downstroke new: template file \"" dir "/piped/starter/zz-pipe\": it is a FIFO, not a regular file\n") #f)
+  (begin
+    (setenv "DOWNSTROKE_TEMPLATE_DIR" (string-append dir "/piped"))
+    (let ((r (run "new" (string-append games "/piped"))))
+      (unsetenv "DOWNSTROKE_TEMPLATE_DIR")
+      (list (first r) (third r) (file-exists? (string-append games "/piped"))))))
+
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
 
