@@ -1270,7 +1270,13 @@ a hook (game-update-set! ...) or the scene (game-scene-set! ...) is replaced" fr
                                         (list (car before) alpha (cadr before) (caddr before))))
                   (when (and (record-file) (not (input-log-full-at (%game-input-log game)))
                              (> (- now saved) (* record-interval-seconds internal-time-units-per-second)))
-                    (record-input game (record-file))
+                    ;; A write that fails (the disk full, the folder
+                    ;; gone) is said and the game plays on: the write as
+                    ;; it ends tries again.
+                    (catch 'misc-error
+                      (lambda () (record-input game (record-file)))
+                      (lambda (key who fmt args . _)
+                        (format (current-error-port) "downstroke: --record: ~a~%" (apply format #f fmt args))))
                     (set! saved now))
                   (when log
                     (format log "~a ~a ~a ~a~%"
