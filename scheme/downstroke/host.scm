@@ -279,25 +279,40 @@
   ;; warned of as unbound (filtering-warning-port).
   (load-script path #t))
 
+(define (test-child-command file results)
+  ;; The command that runs one test file in a child process: this same
+  ;; executable, in the runner's folder, with the runner's ports.
+  (list (readlink "/proc/self/exe") "test" "--run-one" results file))
+
 (define (run-test-command args)
-  ;; downstroke test [--junit FILE] [PATH…]: every *-test.scm under the
-  ;; paths (default tests/).
-  (let loop ((args args) (junit #f) (paths '()))
-    (cond ((null? args)
-           ;; A --junit FILE that may not be written is refused before any
-           ;; test runs (run-tests says why).
-           (catch 'misc-error
-             (lambda ()
-               ((@ (downstroke testing) run-tests) (if (null? paths) '("tests") (reverse paths)) test-environment
-                #:junit junit #:load-file load-test-file))
-             (lambda (key who fmt fargs . _)
-               (format (current-error-port) "~a: ~a~%" who (apply format #f fmt fargs))
-               2)))
-          ((string=? (car args) "--junit")
-           (if (pair? (cdr args))
-               (loop (cddr args) (cadr args) paths)
-               (begin (display "downstroke test: --junit needs a file\n" (current-error-port)) 2)))
-          (else (loop (cdr args) junit (cons (car args) paths))))))
+  ;; downstroke test [--junit FILE] [--timeout S] [PATH…]: every *-test.scm
+  ;; under the paths (default tests/), each in a child process. The child's
+  ;; own form, test --run-one RESULTS FILE, is internal.
+  (if (and (= (length args) 3) (string=? (car args) "--run-one"))
+      ((@ (downstroke testing) run-test-file) (caddr args) test-environment load-test-file (cadr args))
+      (let loop ((args args) (junit #f) (timeout #f) (paths '()))
+        (cond ((null? args)
+               ;; A --junit FILE that may not be written is refused before any
+               ;; test runs (run-tests says why).
+               (catch 'misc-error
+                 (lambda ()
+                   ((@ (downstroke testing) run-tests) (if (null? paths) '("tests") (reverse paths)) test-child-command
+                    #:junit junit
+                    #:timeout (if timeout (string->number timeout) (@ (downstroke testing) default-test-timeout))))
+                 (lambda (key who fmt fargs . _)
+                   (format (current-error-port) "~a: ~a~%" who (apply format #f fmt fargs))
+                   2)))
+              ((string=? (car args) "--junit")
+               (if (pair? (cdr args))
+                   (loop (cddr args) (cadr args) timeout paths)
+                   (begin (display "downstroke test: --junit needs a file\n" (current-error-port)) 2)))
+              ((string=? (car args) "--timeout")
+               (if (and (pair? (cdr args)) (seconds-text? (cadr args)))
+                   (loop (cddr args) junit (cadr args) paths)
+                   (begin (unless (pair? (cdr args))
+                            (display "downstroke test: --timeout needs a number of seconds\n" (current-error-port)))
+                          2)))
+              (else (loop (cdr args) junit timeout (cons (car args) paths)))))))
 
 (define (run-new-command args templates)
   ;; downstroke new DIR: a starter game in DIR (see (downstroke starter)).
@@ -422,11 +437,13 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
   --version           the version of downstroke
   new DIR             write a new game into DIR (absent or empty): game.scm,
                       a Tiled map and tileset, sounds, tests, a README
-  test [--junit FILE] [PATH...]
+  test [--junit FILE] [--timeout S] [PATH...]
                       run every *-test.scm under PATH (default: tests/), each
-                      with (downstroke) and SRFI-64; print each failed check
-                      (file:line, expected, actual) and N passed, N failed;
-                      exit 0 only when nothing failed
+                      in its own process with (downstroke) and SRFI-64, for
+                      at most S seconds (default 60); print each failed check
+                      (file:line, expected, actual), each file with its count
+                      of checks, and N passed, N failed; exit 0 only when
+                      nothing failed
   --help              this text
 
 An uncaught error prints its message and the calls in FILE.scm's folder;

@@ -12,7 +12,7 @@
   #:use-module (downstroke tool-files)
   #:use-module ((ice-9 textual-ports) #:select (get-string-n))
   #:re-export (record-input read-input-script)
-  #:export (test-files run-tests play check-frame))
+  #:export (test-files run-tests run-test-file default-test-timeout play check-frame))
 
 ;;; ---------------------------------------------------------------- games in tests
 
@@ -79,48 +79,150 @@ down), each once, in name order within a folder."
             (else (list path))))
     paths)))
 
-;;; One result: (file name kind expected actual line), kind pass, fail or error.
-(define (runner-for file results)
-  (let ((runner (test-runner-null)))
-    (test-runner-on-test-end! runner
-      (lambda (r)
-        (let ((kind (test-result-kind r)))
-          (set-car! results
-                    (cons (list file (or (test-runner-test-name r) "")
-                                (if (memq kind '(pass xfail skip)) 'pass 'fail)
-                                (test-result-ref r 'expected-value)
-                                ;; A check that raised: (raised . the error, as it would print).
-                                (let ((err (test-result-ref r 'actual-error)))
-                                  (if err
-                                      (cons 'raised
-                                            (call-with-output-string
-                                              (lambda (port)
-                                                (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port)))))
-                                      (test-result-ref r 'actual-value)))
-                                (test-result-ref r 'source-line))
-                          (car results))))))
-    runner))
+;;; One result: (file name kind expected actual line), kind pass, fail or
+;;; error. EXPECTED and ACTUAL are as `write' prints them (a string), ACTUAL
+;;; (raised . the error's text) for a check that raised: a file runs in a
+;;; child process, which sends its results to the runner as text.
 
-(define (run-file file make-environment load-file)
-  "Load FILE with a runner that records each check; a file that does not
-load is one failure naming its error. Returns its results."
-  (let ((results (list '())))
-    (test-runner-factory (lambda () (runner-for file results)))
+;;; How long one test file may run, by default (downstroke test --timeout S):
+;;; long enough for a file that plays several games to their ends on a slow
+;;; machine, short enough that a file that loops is noticed in a CI run.
+(define default-test-timeout 60)
+
+;;; How long a file that ran out of time has, once told, to say the frame its
+;;; game reached and end, before its process group is killed: a file stuck in
+;;; native code cannot answer.
+(define timeout-grace-seconds 1)
+
+;;; How often the runner looks whether a file's process has ended.
+(define wait-poll-microseconds 20000)
+
+(define (written value) (call-with-output-string (lambda (port) (write value port))))
+
+(define (check-record r)
+  ;; A finished check as the child sends it: (check name kind expected actual line).
+  (let ((kind (test-result-kind r)))
+    (list 'check (or (test-runner-test-name r) "")
+          (if (memq kind '(pass xfail skip)) 'pass 'fail)
+          (written (test-result-ref r 'expected-value))
+          ;; A check that raised: (raised . the error, as it would print).
+          (let ((err (test-result-ref r 'actual-error)))
+            (if err
+                (cons 'raised
+                      (call-with-output-string
+                        (lambda (port)
+                          (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port)))))
+                (written (test-result-ref r 'actual-value))))
+          (test-result-ref r 'source-line))))
+
+(define (send port record)
+  ;; Each record on its own line, out at once: what was sent is kept
+  ;; whatever ends the process after it.
+  (write record port)
+  (newline port)
+  (force-output port))
+
+(define (run-test-file file make-environment load-file results)
+  "The child's side of `downstroke test': load FILE (in a module
+MAKE-ENVIRONMENT returns, with LOAD-FILE) and append each check's result to
+the file RESULTS as it ends, then (end). A file that does not load is one
+error naming it. Told to stop (SIGTERM), it sends the frame its game reached
+and exits. Returns 0."
+  (let ((port (open-file results "a")))
+    (set-port-encoding! port "UTF-8")
+    (sigaction SIGTERM
+      (lambda (sig)
+        (let ((game ((@@ (downstroke engine) current-game))))
+          (send port (list 'timeout (and game (game-frame game))))
+          (force-output (current-output-port))
+          (force-output (current-error-port))
+          (primitive-_exit 124))))
+    (let ((runner (test-runner-null)))
+      (test-runner-on-test-end! runner (lambda (r) (send port (check-record r))))
+      (test-runner-factory (lambda () runner)))
     (test-runner-current #f)
     (catch #t
       (lambda ()
-        (save-module-excursion
-         (lambda ()
-           (set-current-module (make-environment))
-           (load-file (canonicalize-path file)))))
+        ;; Games made in tests are strict: a misspelt entity key
+        ;; fails the test that runs it (make-game strict?: #f opts out).
+        (parameterize ((strict-games #t))
+          (save-module-excursion
+           (lambda ()
+             (set-current-module (make-environment))
+             (load-file (canonicalize-path file))))))
       (lambda (key . args)
-        (set-car! results
-                  (cons (list file "(the file did not run to its end)" 'error
-                              #f (call-with-output-string
-                                   (lambda (port) (print-exception port #f key args)))
-                              #f)
-                        (car results)))))
-    (reverse (car results))))
+        (send port (list 'check "(the file did not run to its end)" 'error #f
+                         (call-with-output-string (lambda (p) (print-exception p #f key args)))
+                         #f))))
+    (send port '(end))
+    (close-port port)
+    0))
+
+(define (read-records file)
+  ;; The records a child sent, up to the first it did not finish writing.
+  (call-with-input-file file
+    (lambda (port)
+      (set-port-encoding! port "UTF-8")
+      (let loop ((acc '()))
+        (let ((r (false-if-exception (read port))))
+          (if (pair? r) (loop (cons r acc)) (reverse acc)))))))
+
+(define (kill-group pid sig)
+  ;; The file's process group (a game it started too), or the process alone
+  ;; if it has not made its group yet.
+  (catch 'system-error
+    (lambda () (kill (- pid) sig))
+    (lambda _ (false-if-exception (kill pid sig)))))
+
+(define (wait-until pid deadline)
+  ;; The process's status, or #f when DEADLINE (internal real time) came first.
+  (let loop ()
+    (let ((r (waitpid pid WNOHANG)))
+      (cond ((not (zero? (car r))) (cdr r))
+            ((>= (get-internal-real-time) deadline) #f)
+            (else (usleep wait-poll-microseconds) (loop))))))
+
+(define (seconds->ticks s) (inexact->exact (round (* s internal-time-units-per-second))))
+
+(define (run-child file child-command timeout)
+  ;; FILE's results, run by the command CHILD-COMMAND makes of it and a file
+  ;; for its results; a child that did not end normally adds an error.
+  (let* ((port (mkstemp (string-append (or (getenv "TMPDIR") "/tmp") "/downstroke-test-XXXXXX")))
+         (results (port-filename port)))
+    (close-port port)
+    (force-output (current-output-port))
+    (force-output (current-error-port))
+    (let* ((argv (child-command file results))
+           (pid (primitive-fork)))
+      (when (zero? pid)
+        ;; The child: a process group of its own, so that a timeout ends what
+        ;; it started too.
+        (catch #t
+          (lambda () (setpgid 0 0) (apply execl (car argv) argv))
+          (lambda _ (primitive-_exit 127))))
+      (let* ((status (wait-until pid (+ (get-internal-real-time) (seconds->ticks timeout))))
+             (ran-out? (not status))
+             (status (or status
+                         (begin (kill-group pid SIGTERM)
+                                (wait-until pid (+ (get-internal-real-time) (seconds->ticks timeout-grace-seconds))))
+                         (begin (kill-group pid SIGKILL) (cdr (waitpid pid)))))
+             (records (read-records results))
+             (checks (filter-map (lambda (r) (and (eq? (car r) 'check) (cons file (cdr r)))) records))
+             (frame (let ((r (assq 'timeout records))) (and r (cadr r)))))
+        (delete-file results)
+        (if (and (assq 'end records) (not ran-out?))
+            checks
+            (append checks
+                    (list (list file (if ran-out? "(the file ran out of time)" "(the file did not run to its end)")
+                                'error #f
+                                (cond (ran-out?
+                                       (format #f "it ran past the time limit of ~a s~a and was ended" timeout
+                                               (if frame (format #f " (its game at frame ~a)" frame) "")))
+                                      ((status:exit-val status)
+                                       (format #f "it exited with status ~a before its end" (status:exit-val status)))
+                                      (else
+                                       (format #f "it was ended by signal ~a before its end" (status:term-sig status))))
+                                #f))))))))
 
 (define (raised? actual) (and (pair? actual) (eq? (car actual) 'raised)))
 
@@ -131,8 +233,8 @@ load is one failure naming its error. Returns its results."
 (define (outcome-text expected actual)
   ;; "expected 5, actual 4", or "expected 5, raised: In procedure car: …".
   (if (raised? actual)
-      (format #f "expected ~s, raised: ~a" expected (one-line (cdr actual)))
-      (format #f "expected ~s, actual ~s" expected actual)))
+      (format #f "expected ~a, raised: ~a" expected (one-line (cdr actual)))
+      (format #f "expected ~a, actual ~a" expected actual)))
 
 (define (report-failure port r)
   ;; One line a failed check: where, its name, what was expected and what came.
@@ -192,14 +294,22 @@ load is one failure naming its error. Returns its results."
        by-file)
       (format port "</testsuites>~%"))))
 
-(define* (run-tests paths make-environment #:key junit (load-file load))
-  "Run every *-test.scm under PATHS, each loaded in a module MAKE-ENVIRONMENT
-returns; print each failure (file:line, the check's name, expected and
-actual) and then `N passed, N failed'. With JUNIT, also write a JUnit XML
-report there. LOAD-FILE loads one file (the host's compiles it quietly).
-Games made while they run are strict (strict-games): an entity key that is
-a slip of an engine key is an error. Returns the exit status: 0 only when
-nothing failed."
+(define (count-text results)
+  ;; "3 checks", "1 check, 1 failed", "0 checks".
+  (let ((n (length results)) (failed (count (lambda (r) (not (eq? (caddr r) 'pass))) results)))
+    (format #f "~a check~a~a" n (if (= n 1) "" "s") (if (zero? failed) "" (format #f ", ~a failed" failed)))))
+
+(define* (run-tests paths child-command #:key junit (timeout default-test-timeout))
+  "Run every *-test.scm under PATHS, each in a child process of its own
+(CHILD-COMMAND, given the file and a file for its results, makes its
+command line: see run-test-file) for at most TIMEOUT seconds. Print, file by
+file as each ends, each failure (file:line, the check's name, expected and
+actual) and the file with its count of checks; then `N passed, N failed'. A
+file that ran out of time, or ended before its end, is a failure saying so;
+a test file that is not a regular file (a FIFO, a device) is not run and is
+a failure saying what it is. With JUNIT, also write a JUnit XML report
+there, refused before any test runs when that file may not be written.
+Returns the exit status: 0 only when nothing failed."
   (let ((problem (and junit (junit-target-problem junit))))
     (when problem
       (scm-error 'misc-error "downstroke test" "--junit ~s: ~a" (list junit problem) #f)))
@@ -207,26 +317,28 @@ nothing failed."
          (found (test-files paths))
          ;; A FIFO would block the run, a device be read without end.
          (files (filter (lambda (f) (not (input-file-problem f))) found))
+         (report (lambda (file results)
+                   (for-each (lambda (r) (unless (eq? (caddr r) 'pass) (report-failure (current-output-port) r)))
+                             results)
+                   (format #t "~a: ~a~%" file (count-text results))
+                   (force-output (current-output-port))
+                   (cons file results)))
          (by-file (append
-                   (map (lambda (p) (cons p (list (list p "(no such file or folder)" 'error #f
-                                                         (format #f "no such file or folder: ~a~%" p) #f))))
+                   (map (lambda (p) (report p (list (list p "(no such file or folder)" 'error #f
+                                                          (format #f "no such file or folder: ~a~%" p) #f))))
                         missing)
                    (filter-map (lambda (f)
                                  (let ((problem (input-file-problem f)))
                                    (and problem
-                                        (cons f (list (list f "(the file was not run)" 'error #f
-                                                            (string-append problem "\n") #f))))))
+                                        (report f (list (list f "(the file was not run)" 'error #f
+                                                              (string-append problem "\n") #f))))))
                                found)
-                   ;; Games made in tests are strict: a misspelt entity key
-                   ;; fails the test that runs it (make-game strict?: #f opts out).
-                   (parameterize ((strict-games #t))
-                     (map (lambda (f) (cons f (run-file f make-environment load-file))) files))))
+                   (map (lambda (f) (report f (run-child f child-command timeout))) files)))
          (all (append-map cdr by-file))
          (passed (count (lambda (r) (eq? (caddr r) 'pass)) all))
          (failed (- (length all) passed)))
     (when (null? files)
       (format (current-error-port) "downstroke test: no *-test.scm under ~a~%" (string-join paths " ")))
-    (for-each (lambda (r) (unless (eq? (caddr r) 'pass) (report-failure (current-output-port) r))) all)
     (when junit (write-junit junit by-file))
     (format #t "~a passed, ~a failed~%" passed failed)
     (if (zero? failed) 0 1)))
