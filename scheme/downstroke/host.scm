@@ -298,7 +298,7 @@
                  (lambda ()
                    ((@ (downstroke testing) run-tests) (if (null? paths) '("tests") (reverse paths)) test-child-command
                     #:junit junit
-                    #:timeout (if timeout (string->number timeout) (@ (downstroke testing) default-test-timeout))))
+                    #:timeout (and timeout (string->number timeout))))
                  (lambda (key who fmt fargs . _)
                    (format (current-error-port) "~a: ~a~%" who (apply format #f fmt fargs))
                    2)))

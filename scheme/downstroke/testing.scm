@@ -12,7 +12,7 @@
   #:use-module (downstroke tool-files)
   #:use-module ((ice-9 textual-ports) #:select (get-string-n))
   #:re-export (record-input read-input-script)
-  #:export (test-files run-tests run-test-file default-test-timeout play check-frame))
+  #:export (test-files run-tests run-test-file play check-frame))
 
 ;;; ---------------------------------------------------------------- games in tests
 
@@ -299,10 +299,11 @@ and exits. Returns 0."
   (let ((n (length results)) (failed (count (lambda (r) (not (eq? (caddr r) 'pass))) results)))
     (format #f "~a check~a~a" n (if (= n 1) "" "s") (if (zero? failed) "" (format #f ", ~a failed" failed)))))
 
-(define* (run-tests paths child-command #:key junit (timeout default-test-timeout))
+(define* (run-tests paths child-command #:key junit timeout)
   "Run every *-test.scm under PATHS, each in a child process of its own
 (CHILD-COMMAND, given the file and a file for its results, makes its
-command line: see run-test-file) for at most TIMEOUT seconds. Print, file by
+command line: see run-test-file) for at most TIMEOUT seconds (#f: 60).
+Print, file by
 file as each ends, each failure (file:line, the check's name, expected and
 actual) and the file with its count of checks; then `N passed, N failed'. A
 file that ran out of time, or ended before its end, is a failure saying so;
@@ -327,13 +328,7 @@ Returns the exit status: 0 only when nothing failed."
                    (map (lambda (p) (report p (list (list p "(no such file or folder)" 'error #f
                                                           (format #f "no such file or folder: ~a~%" p) #f))))
                         missing)
-                   (filter-map (lambda (f)
-                                 (let ((problem (input-file-problem f)))
-                                   (and problem
-                                        (report f (list (list f "(the file was not run)" 'error #f
-                                                              (string-append problem "\n") #f))))))
-                               found)
-                   (map (lambda (f) (report f (run-child f child-command timeout))) files)))
+                   (map (lambda (f) (report f (run-child f child-command (or timeout default-test-timeout)))) files)))
          (all (append-map cdr by-file))
          (passed (count (lambda (r) (eq? (caddr r) 'pass)) all))
          (failed (- (length all) passed)))

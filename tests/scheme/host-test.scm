@@ -142,11 +142,14 @@
 (write-script "suite/more/bad-test.scm"
               "(test-begin \"bad\")\n(test-equal \"wrong sum\" 5 (+ 2 2))\n(test-end \"bad\")\n")
 (write-script "suite/helpers.scm" "(error \"never loaded: not a *-test.scm\")\n")
-(test-equal "downstroke test PATH: a passing file, exit 0" '(0 "3 passed, 0 failed\n")
+(test-equal "downstroke test PATH: a passing file, exit 0, the file named with its count"
+  (list 0 (string-append suite-dir "/good-test.scm: 3 checks\n3 passed, 0 failed\n"))
   (list-head (run "test" (string-append suite-dir "/good-test.scm")) 2))
 (define suite-run (run "test" "--junit" (string-append dir "/report.xml") suite-dir))
 (test-equal "a failing check: exit 1, file:line, expected, actual, then the count"
-  (list 1 (string-append "FAIL " suite-dir "/more/bad-test.scm:2: wrong sum: expected 5, actual 4\n"
+  (list 1 (string-append suite-dir "/good-test.scm: 3 checks\n"
+                         "FAIL " suite-dir "/more/bad-test.scm:2: wrong sum: expected 5, actual 4\n"
+                         suite-dir "/more/bad-test.scm: 1 check, 1 failed\n"
                          "3 passed, 1 failed\n"))
   (list-head suite-run 2))
 (test-assert "--junit writes a JUnit report naming the failure"
@@ -187,7 +190,8 @@
 (write-script "raises/raises-test.scm" "(test-begin \"raises\")\n(test-equal \"car of 5\" 1 (car 5))\n(test-end \"raises\")\n")
 (test-equal "a check that raises: one line, the error on it"
   (list 1 (string-append "FAIL " dir "/raises/raises-test.scm:2: car of 5: expected 1, raised: "
-                         "In procedure car: Wrong type argument in position 1 (expecting pair): 5\n0 passed, 1 failed\n"))
+                         "In procedure car: Wrong type argument in position 1 (expecting pair): 5\n"
+                         dir "/raises/raises-test.scm: 1 check, 1 failed\n0 passed, 1 failed\n"))
   (list-head (run "test" (string-append dir "/raises")) 2))
 (write-script "suite/broken-test.scm" "(test-begin \"broken\")\n(car '())\n")
 (test-assert "a file that does not load is a failure, named with its error"
@@ -196,6 +200,46 @@
          (string-contains (second r) (string-append "FAIL " suite-dir "/broken-test.scm: (the file did not run to its end)"))
          (string-contains (second r) "0 passed, 1 failed"))))
 (test-equal "a path that is not there is a failure" 1 (first (run "test" (string-append dir "/no-such-dir"))))
+
+;;; Each file runs in a child process of its own, for a limited time.
+(define alone-dir (string-append dir "/alone"))
+(mkdir alone-dir)
+(write-script "alone/a-loops-test.scm"
+              "(test-begin \"loops\")\n(test-assert \"before the loop\" #t)\n(let loop () (loop))\n")
+(write-script "alone/b-game-loops-test.scm"
+              "(test-begin \"game\")\n(game-run! (make-game width: 8 height: 8 update: (lambda (game dt) (when (= (game-frame game) 5) (let loop () (loop))))))\n")
+(write-script "alone/c-exits-test.scm"
+              "(test-begin \"exits\")\n(test-equal \"wrong\" 5 (+ 2 2))\n(primitive-exit 0)\n")
+(write-script "alone/d-moves-test.scm"
+              (string-append "(test-begin \"moves\")\n(chdir \"/\")\n(set-current-output-port (open-output-string))\n"
+                             "(test-end \"moves\")\n"))
+(write-script "alone/e-here-test.scm"
+              "(test-begin \"here\")\n(test-assert \"starts in the runner's folder\" (file-exists? \"alone/e-here-test.scm\"))\n(test-end \"here\")\n")
+(write-script "alone/f-empty-test.scm" "(define nothing-checked #t)\n")
+(define alone-run (run-in dir "test" "--timeout" "1" "alone"))
+(test-equal "a file that loops is ended at --timeout, named with what it checked, and the next file runs; a game's frame is said; primitive-exit after a failed check fails the run; a chdir or a port set in one file does not reach the next; a file with no checks is named"
+  (list 1 (string-append
+           "FAIL alone/a-loops-test.scm: (the file ran out of time): it ran past the time limit of 1 s and was ended\n"
+           "alone/a-loops-test.scm: 2 checks, 1 failed\n"
+           "FAIL alone/b-game-loops-test.scm: (the file ran out of time): it ran past the time limit of 1 s (its game at frame 5) and was ended\n"
+           "alone/b-game-loops-test.scm: 1 check, 1 failed\n"
+           "FAIL alone/c-exits-test.scm:2: wrong: expected 5, actual 4\n"
+           "FAIL alone/c-exits-test.scm: (the file did not run to its end): it exited with status 0 before its end\n"
+           "alone/c-exits-test.scm: 2 checks, 2 failed\n"
+           "alone/d-moves-test.scm: 0 checks\n"
+           "alone/e-here-test.scm: 1 check\n"
+           "alone/f-empty-test.scm: 0 checks\n"
+           "2 passed, 4 failed\n"))
+  (list-head alone-run 2))
+(mkdir (string-append dir "/signal"))
+(write-script "signal/signal-test.scm" "(test-begin \"signal\")\n(kill (getpid) SIGKILL)\n")
+(test-equal "a file killed by a signal is a failure naming the signal"
+  (list 1 (string-append "FAIL signal/signal-test.scm: (the file did not run to its end): it was ended by signal 9 before its end\n"
+                         "signal/signal-test.scm: 1 check, 1 failed\n0 passed, 1 failed\n"))
+  (list-head (run-in dir "test" "signal") 2))
+(test-equal "--timeout takes a number of seconds > 0"
+  '(2 "" "downstroke: --timeout: expected a number of seconds > 0, got \"0\"\n")
+  (run "test" "--timeout" "0" alone-dir))
 
 ;;; ---------------------------------------------------------------- downstroke new
 (define games (string-append dir "/games"))
@@ -217,7 +261,7 @@
   '(0 "frame 300: 4 coins, the player at (588, 208)\n" "")
   (run (string-append starter "/game.scm")))
 (test-equal "… and its own tests pass under downstroke test, run in its folder"
-  '(0 "7 passed, 0 failed\n" "")
+  '(0 "tests/game-test.scm: 7 checks\n7 passed, 0 failed\n" "")
   (run-in starter "test"))
 (test-equal "a folder that is not empty is refused, named, and left as it was"
   (list 1 "" (string-append "downstroke new: \"" starter "\" exists and is not empty: give a new folder's name\n")
