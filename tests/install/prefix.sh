@@ -30,5 +30,6 @@ $expected_demo"
 # game's own tests pass with nothing from this tree.
 clean "$bindir/downstroke" new "$prefix/newgame" >/dev/null || fail "downstroke new failed"
 tested=$(cd "$prefix/newgame" && clean "$bindir/downstroke" test) || fail "the new game's tests failed: $tested"
-[ "$tested" = "7 passed, 0 failed" ] || fail "the new game's tests said $tested"
+[ "$tested" = "tests/game-test.scm: 7 checks
+7 passed, 0 failed" ] || fail "the new game's tests said $tested"
 echo "install.prefix: guile and the installed host both ran from $prefix"
