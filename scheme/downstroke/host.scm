@@ -4,6 +4,7 @@
   #:use-module (downstroke engine)
   #:use-module (downstroke render)
   #:use-module (ice-9 format)
+  #:use-module ((rnrs bytevectors) #:select (string->utf8 utf8->string bytevector->u8-list u8-list->bytevector))
   #:use-module ((srfi srfi-1) #:select (any))
   #:export (main script-interfaces use-script-environment!))
 
@@ -279,17 +280,29 @@
   ;; warned of as unbound (filtering-warning-port).
   (load-script path #t))
 
+(define (path->hex path)
+  ;; A path as its UTF-8 bytes in hex: the child decodes its command line
+  ;; before it can set its locale, and would read any other byte as "?".
+  (string-concatenate
+   (map (lambda (b) (string-pad (number->string b 16) 2 #\0)) (bytevector->u8-list (string->utf8 path)))))
+
+(define (hex->path hex)
+  (utf8->string
+   (u8-list->bytevector
+    (map (lambda (i) (string->number (substring hex i (+ i 2)) 16)) (iota (quotient (string-length hex) 2) 0 2)))))
+
 (define (test-child-command file results)
   ;; The command that runs one test file in a child process: this same
   ;; executable, in the runner's folder, with the runner's ports.
-  (list (readlink "/proc/self/exe") "test" "--run-one" results file))
+  (list (readlink "/proc/self/exe") "test" "--run-one" (path->hex results) (path->hex file)))
 
 (define (run-test-command args)
   ;; downstroke test [--junit FILE] [--timeout S] [PATH…]: every *-test.scm
   ;; under the paths (default tests/), each in a child process. The child's
   ;; own form, test --run-one RESULTS FILE, is internal.
   (if (and (= (length args) 3) (string=? (car args) "--run-one"))
-      ((@ (downstroke testing) run-test-file) (caddr args) test-environment load-test-file (cadr args))
+      ((@ (downstroke testing) run-test-file) (hex->path (caddr args)) test-environment load-test-file
+       (hex->path (cadr args)))
       (let loop ((args args) (junit #f) (timeout #f) (paths '()))
         (cond ((null? args)
                ;; A --junit FILE that may not be written is refused before any
