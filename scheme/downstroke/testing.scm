@@ -186,45 +186,58 @@ and exits. Returns 0."
 
 (define (seconds->ticks s) (inexact->exact (round (* s internal-time-units-per-second))))
 
+(define (results-file)
+  ;; A new empty file for a child's results, or the reason there is none.
+  (let ((template (string-append (or (getenv "TMPDIR") "/tmp") "/downstroke-test-XXXXXX")))
+    (catch 'system-error
+      (lambda () (let* ((port (mkstemp template)) (name (port-filename port))) (close-port port) name))
+      (lambda (key . args)
+        (cons 'error (format #f "cannot make a file for its results like ~a: ~a"
+                             template (strerror (system-error-errno (cons key args)))))))))
+
 (define (run-child file child-command timeout)
   ;; FILE's results, run by the command CHILD-COMMAND makes of it and a file
   ;; for its results; a child that did not end normally adds an error.
-  (let* ((port (mkstemp (string-append (or (getenv "TMPDIR") "/tmp") "/downstroke-test-XXXXXX")))
-         (results (port-filename port)))
-    (close-port port)
-    (force-output (current-output-port))
-    (force-output (current-error-port))
-    (let* ((argv (child-command file results))
-           (pid (primitive-fork)))
-      (when (zero? pid)
-        ;; The child: a process group of its own, so that a timeout ends what
-        ;; it started too.
-        (catch #t
-          (lambda () (setpgid 0 0) (apply execl (car argv) argv))
-          (lambda _ (primitive-_exit 127))))
-      (let* ((status (wait-until pid (+ (get-internal-real-time) (seconds->ticks timeout))))
-             (ran-out? (not status))
-             (status (or status
-                         (begin (kill-group pid SIGTERM)
-                                (wait-until pid (+ (get-internal-real-time) (seconds->ticks timeout-grace-seconds))))
-                         (begin (kill-group pid SIGKILL) (cdr (waitpid pid)))))
-             (records (read-records results))
-             (checks (filter-map (lambda (r) (and (eq? (car r) 'check) (cons file (cdr r)))) records))
-             (frame (let ((r (assq 'timeout records))) (and r (cadr r)))))
-        (delete-file results)
-        (if (and (assq 'end records) (not ran-out?))
-            checks
-            (append checks
-                    (list (list file (if ran-out? "(the file ran out of time)" "(the file did not run to its end)")
-                                'error #f
-                                (cond (ran-out?
-                                       (format #f "it ran past the time limit of ~a s~a and was ended" timeout
-                                               (if frame (format #f " (its game at frame ~a)" frame) "")))
-                                      ((status:exit-val status)
-                                       (format #f "it exited with status ~a before its end" (status:exit-val status)))
-                                      (else
-                                       (format #f "it was ended by signal ~a before its end" (status:term-sig status))))
-                                #f))))))))
+  (let ((results (results-file)))
+    (if (pair? results)
+        (list (list file "(the file did not run)" 'error #f (cdr results) #f))
+        (run-child-with file child-command timeout results))))
+
+(define (run-child-with file child-command timeout results)
+  ;; The same, with its results file RESULTS made.
+  (force-output (current-output-port))
+  (force-output (current-error-port))
+  (let* ((argv (child-command file results))
+         (pid (primitive-fork)))
+    (when (zero? pid)
+      ;; The child: a process group of its own, so that a timeout ends what
+      ;; it started too.
+      (catch #t
+        (lambda () (setpgid 0 0) (apply execl (car argv) argv))
+        (lambda _ (primitive-_exit 127))))
+    (let* ((status (wait-until pid (+ (get-internal-real-time) (seconds->ticks timeout))))
+           (ran-out? (not status))
+           (status (or status
+                       (begin (kill-group pid SIGTERM)
+                              (wait-until pid (+ (get-internal-real-time) (seconds->ticks timeout-grace-seconds))))
+                       (begin (kill-group pid SIGKILL) (cdr (waitpid pid)))))
+           (records (read-records results))
+           (checks (filter-map (lambda (r) (and (eq? (car r) 'check) (cons file (cdr r)))) records))
+           (frame (let ((r (assq 'timeout records))) (and r (cadr r)))))
+      (delete-file results)
+      (if (and (assq 'end records) (not ran-out?))
+          checks
+          (append checks
+                  (list (list file (if ran-out? "(the file ran out of time)" "(the file did not run to its end)")
+                              'error #f
+                              (cond (ran-out?
+                                     (format #f "it ran past the time limit of ~a s~a and was ended" timeout
+                                             (if frame (format #f " (its game at frame ~a)" frame) "")))
+                                    ((status:exit-val status)
+                                     (format #f "it exited with status ~a before its end" (status:exit-val status)))
+                                    (else
+                                     (format #f "it was ended by signal ~a before its end" (status:term-sig status))))
+                              #f)))))))
 
 (define (raised? actual) (and (pair? actual) (eq? (car actual) 'raised)))
 

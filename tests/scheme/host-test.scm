@@ -237,6 +237,15 @@
   (list 1 (string-append "FAIL signal/signal-test.scm: (the file did not run to its end): it was ended by signal 9 before its end\n"
                          "signal/signal-test.scm: 1 check, 1 failed\n0 passed, 1 failed\n"))
   (list-head (run-in dir "test" "signal") 2))
+(test-equal "a file whose results have nowhere to go is a failure saying why, and the run goes on"
+  (list 1 (string-append "FAIL alone/f-empty-test.scm: (the file did not run): cannot make a file for its results like "
+                         "/nonexistent/downstroke-test-XXXXXX: No such file or directory\n"
+                         "alone/f-empty-test.scm: 1 check, 1 failed\n0 passed, 1 failed\n"))
+  (let ((tmpdir (getenv "TMPDIR")))
+    (setenv "TMPDIR" "/nonexistent")
+    (let ((r (run-in dir "test" "alone/f-empty-test.scm")))
+      (if tmpdir (setenv "TMPDIR" tmpdir) (unsetenv "TMPDIR"))
+      (list-head r 2))))
 (test-equal "--timeout takes a number of seconds > 0"
   '(2 "" "downstroke: --timeout: expected a number of seconds > 0, got \"0\"\n")
   (run "test" "--timeout" "0" alone-dir))
