@@ -343,6 +343,12 @@ Returns the exit status: 0 only when nothing failed."
                    (map (lambda (p) (report p (list (list p "(no such file or folder)" 'error #f
                                                           (format #f "no such file or folder: ~a~%" p) #f))))
                         missing)
+                   (filter-map (lambda (f)
+                                 (let ((problem (input-file-problem f)))
+                                   (and problem
+                                        (report f (list (list f "(the file was not run)" 'error #f
+                                                              (string-append problem "\n") #f))))))
+                               found)
                    (map (lambda (f) (report f (run-child f child-command (or timeout default-test-timeout)))) files)))
          (all (append-map cdr by-file))
          (passed (count (lambda (r) (eq? (caddr r) 'pass)) all))

@@ -185,6 +185,7 @@
 (make-fifo (string-append dir "/fifos/pipe-test.scm"))
 (test-equal "a *-test.scm that is a FIFO is a failure saying so, not a run that blocks"
   (list 1 (string-append "FAIL " dir "/fifos/pipe-test.scm: (the file was not run): it is a FIFO, not a regular file\n"
+                         dir "/fifos/pipe-test.scm: 1 check, 1 failed\n"
                          "0 passed, 1 failed\n"))
   (list-head (run "test" (string-append dir "/fifos")) 2))
 (write-script "raises/raises-test.scm" "(test-begin \"raises\")\n(test-equal \"car of 5\" 1 (car 5))\n(test-end \"raises\")\n")
