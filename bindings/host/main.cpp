@@ -3,10 +3,14 @@
 // to (downstroke host), which runs a script or the REPL.
 #include <libguile.h>
 
+#include <clocale>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <system_error>
+
+#include <langinfo.h>
 
 extern "C" void ds_init_native();
 
@@ -42,6 +46,21 @@ SCM dir_setting(const char* env, const char* fallback) {
     return scm_from_utf8_stringn(dir.data(), dir.size());
 }
 
+// Guile encodes file names, command-line arguments and console text in the
+// C locale's character set, and the C default ("C", ASCII) turns every
+// non-ASCII name into "?": a folder `downstroke new ünï' made as "??n??", a
+// script in such a folder not found, "≥" printed as "?". So the locale comes
+// from the environment, and where that gives none or one that is not UTF-8,
+// C.UTF-8 (built into glibc) takes its place: names on disk are UTF-8 bytes.
+// Numbers stay in the C form (a decimal point, never a comma), as the C++
+// core and the files it reads expect.
+void install_locale() {
+    const char* from_environment = std::setlocale(LC_ALL, "");
+    const bool utf8 = from_environment && std::strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    if (!utf8) std::setlocale(LC_ALL, "C.UTF-8");
+    std::setlocale(LC_NUMERIC, "C");
+}
+
 void prepend(const char* variable, SCM dir) {
     SCM var = scm_c_lookup(variable);
     scm_variable_set_x(var, scm_cons(dir, scm_variable_ref(var)));
@@ -65,6 +84,7 @@ void inner_main(void*, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    install_locale();
     scm_boot_guile(argc, argv, inner_main, nullptr);
     return 0;  // not reached
 }
