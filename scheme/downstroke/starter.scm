@@ -10,7 +10,8 @@
   #:export (write-starter starter-name-token))
 
 ;;; Text files of the template say @NAME@ where the game's name goes (its
-;;; folder's name); every other file is copied byte for byte.
+;;; folder's name), "@NAME@" where it goes as a string literal; every other
+;;; file is copied byte for byte.
 (define starter-name-token "@NAME@")
 (define text-suffixes '(".scm" ".md"))
 
@@ -54,18 +55,33 @@
     (make-folders! (dirname path))
     (naming-system-errors "make the folder" path (lambda () (mkdir path)))))
 
+(define (one-line name)
+  ;; NAME where it stands in a comment or a heading, which a line break
+  ;; would end: each line break a space.
+  (string-map (lambda (c) (if (memv c '(#\newline #\return)) #\space c)) name))
+
+(define (fill-in text name)
+  ;; TEXT with the token in quotes, a string literal of the game, the name
+  ;; written as a Scheme string (a " or \ in it escaped, so that game.scm
+  ;; still reads), and everywhere else the name on one line.
+  (let ((quoted-token (string-append "\"" starter-name-token "\"")))
+    (string-replace-all (string-replace-all text quoted-token (object->string name))
+                        starter-name-token (one-line name))))
+
 (define (copy-file! from to name)
   (if (any (lambda (s) (string-suffix? s from)) text-suffixes)
       (let ((text (call-with-input-file from get-string-all #:encoding "UTF-8")))
         (call-with-output-file to
-          (lambda (port) (put-string port (string-replace-all text starter-name-token name)))
+          (lambda (port) (put-string port (fill-in text name)))
           #:encoding "UTF-8"))
       (let ((bytes (call-with-input-file from get-bytevector-all #:binary #t)))
         (call-with-output-file to (lambda (port) (put-bytevector port bytes)) #:binary #t))))
 
 (define* (write-starter dir templates #:key (template "starter"))
   "Write a new game into DIR from TEMPLATES/TEMPLATE (a folder copied whole,
-@NAME@ in its .scm and .md files replaced by DIR's own name). DIR may be
+@NAME@ in its .scm and .md files replaced by DIR's own name: written as a
+Scheme string literal where the template has \"@NAME@\", so that any name
+gives a game that reads, and on one line elsewhere). DIR may be
 absent (it is made, with its parents) or an empty folder; anything else is
 refused with an error naming it, before anything is written. Returns the
 list of the files written, relative to DIR."

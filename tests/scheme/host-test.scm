@@ -17,8 +17,17 @@
 
 (define (run-in where . argv)
   ;; The same, run in the folder WHERE.
-  (let ((out (string-append dir "/out")) (err (string-append dir "/err")))
-    (let ((status (system (string-append "cd " (quoted where) " && XDG_CACHE_HOME=" (quoted cache) " "
+  (apply run-in-locale #f where argv))
+
+(define (run-in-locale locale where . argv)
+  ;; The same, with LOCALE the only locale in the environment: a name, or
+  ;; 'unset for none at all (#f: the environment as it is).
+  (let ((out (string-append dir "/out")) (err (string-append dir "/err"))
+        (environment (cond ((eq? locale 'unset) "env -u LANG -u LC_CTYPE -u LC_ALL ")
+                           (locale (string-append "env -u LANG -u LC_CTYPE LC_ALL=" locale " "))
+                           (else ""))))
+    (let ((status (system (string-append "cd " (quoted where) " && " environment
+                                         "XDG_CACHE_HOME=" (quoted cache) " "
                                          (string-join (map quoted (cons host argv)) " ")
                                          " >" (quoted out) " 2>" (quoted err)))))
       (list (status:exit-val status)
@@ -308,6 +317,49 @@
     (let ((r (run "new" (string-append games "/piped"))))
       (unsetenv "DOWNSTROKE_TEMPLATE_DIR")
       (list (first r) (third r) (file-exists? (string-append games "/piped"))))))
+
+;;; Names as the author gives them: in any locale the environment sets (or
+;;; none), non-ASCII ones are kept; quotes, backslashes and line breaks in
+;;; a game's name still give a game that runs.
+(define (game-title-in name)
+  ;; The title of the game games/NAME/game.scm makes, as the host runs it.
+  (let ((title (write-script (string-append "games/" name "/title.scm")
+                             "(load \"game.scm\")\n(write (game-title (new-game)))\n")))
+    (second (run-in (dirname title) title))))
+(for-each
+ (lambda (locale tag)
+   (let* ((name (string-append "ünï-" tag)) (game (string-append games "/" name)))
+     (test-equal (string-append "with " tag ": downstroke new keeps a non-ASCII name")
+       (list 0 (string-append "Made " game ": 9 files, a game that plays at once.") "" #t)
+       (let ((r (run-in-locale locale "." "new" game)))
+         (list (first r) (car (string-split (second r) #\newline)) (third r)
+               (and (member name (scandir games)) #t))))
+     (test-equal (string-append "… and its game, in that folder, is found and plays (" tag ")")
+       '(0 "frame 300: 4 coins, the player at (588, 208)\n" "")
+       (run-in-locale locale "." (string-append game "/game.scm")))
+     (test-equal (string-append "… titled with the name (" tag ")")
+       (object->string name) (game-title-in name))
+     (test-equal (string-append "record-input writes the file it is given (" tag ")")
+       '(0 "" "" #t)
+       (let ((r (run-in-locale locale game
+                               (write-script "record.scm"
+                                             "(record-input (make-game) \"rec-ü≥.scm\")\n"))))
+         (append r (list (file-exists? (string-append game "/rec-ü≥.scm"))))))
+     (test-equal (string-append "… and \"≥\" in an error prints as itself (" tag ")")
+       "In procedure make-game: history: expected a count of frames ≥ 0, got -1"
+       (car (string-split (third (run-in-locale locale "."
+                                                (write-script "history.scm" "(make-game history: -1)\n")))
+                          #\newline)))))
+ '("C" unset) '("C" "unset"))
+(for-each
+ (lambda (name)
+   (let ((game (string-append games "/" name)))
+     (test-equal (string-append "a game named " (object->string name) " is made and runs")
+       '(0 0 "frame 300: 4 coins, the player at (588, 208)\n")
+       (let* ((made (run "new" game)) (ran (run-in game "--no-auto-compile" "game.scm")))
+         (list (first made) (first ran) (second ran))))
+     (test-equal "… titled with its name, whole" (object->string name) (game-title-in name))))
+ '("say \"hi\"" "back\\slash" "two\nlines"))
 
 (test-equal "(exit 3) in a script is its status, not an error" '(3 "" "")
   (run (write-script "exit.scm" "(exit 3)\n")))
