@@ -29,9 +29,15 @@ record-input wrote), and return it."
   game)
 
 (define (sibling file suffix)
-  ;; expected.png → expected.actual.png
-  (let ((dot (string-rindex file #\.)))
-    (if dot (string-append (substring file 0 dot) suffix (substring file dot)) (string-append file suffix))))
+  ;; expected.png → expected.actual.png; the extension is the file name's
+  ;; own: a dot in a folder's name (v1.2/expected) or a name's leading dot
+  ;; (.expected) is no extension, and SUFFIX then goes at the end.
+  (let* ((slash (string-rindex file #\/))
+         (name-start (if slash (+ slash 1) 0))
+         (dot (string-rindex file #\. name-start)))
+    (if (and dot (> dot name-start))
+        (string-append (substring file 0 dot) suffix (substring file dot))
+        (string-append file suffix))))
 
 (define (check-frame game file)
   "Draw GAME's current frame and compare it, pixel by pixel, with the golden

@@ -1,6 +1,6 @@
 ;;; (downstroke testing): play, check-frame against golden pictures, and a
 ;;; recorded session replayed.
-(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing) (downstroke hash))
+(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 ftw) (downstroke) (downstroke testing) (downstroke hash))
 
 (load "support.scm")
 
@@ -63,6 +63,17 @@
              (file-exists? (string-append dir "/walker.diff.png"))))
       (test-assert "… naming the two colours there: the golden box's colour expected, the background got"
         (mentions? text "expected (170 170 170 255)" "got (24 28 40 255)")))
+    (let* ((folder (string-append dir "/v1.2")) (golden (string-append folder "/walker"))
+           (moved (play (walker) #:frames 10 #:input '((0 . (right)) (9 . ())))))
+      (mkdir folder)
+      (copy-file (string-append dir "/walker.png") golden)
+      (test-equal "a golden file with no extension, in a folder with a dot: the mismatch, and the pictures beside it"
+        (list (string-append "In procedure check-frame: 32 pixel(s) differ from \"" golden
+                             "\", the first at (5, 4): expected (170 170 170 255), got (24 28 40 255); see \""
+                             golden ".actual\" and \"" golden ".diff\"\n")
+              '("walker" "walker.actual" "walker.diff"))
+        (list (error-text (lambda () (check-frame moved golden)))
+              (cddr (scandir folder)))))
     (let ((broken (string-append dir "/broken.png")))
       (call-with-output-file broken (lambda (p) (display "\x89PNG\r\n\x1a\nnot a picture" p)))
       (test-assert "a golden file that is no picture is an error naming it as the golden picture"
