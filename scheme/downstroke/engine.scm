@@ -212,7 +212,9 @@ collision mode, substeps and resting contacts."
 (define (mouse-entry? x)
   ;; (mouse x y buttons): the pointer in picture pixels and the buttons held.
   (and (pair? x) (eq? (car x) 'mouse) (list? x) (= (length x) 4)
-       (real? (cadr x)) (real? (caddr x)) (not (nan? (cadr x))) (not (nan? (caddr x)))
+       ;; A pointer at infinity or NaN has no pixel: camera arithmetic on it
+       ;; gives NaN positions to the game's code.
+       (real? (cadr x)) (real? (caddr x)) (finite? (cadr x)) (finite? (caddr x))
        (list? (cadddr x)) (every (lambda (b) (memq b '(left middle right))) (cadddr x))))
 
 (define (input-script-entry? entry)
@@ -865,9 +867,45 @@ where the script quits, and record-input says so on the error port."
 ;; (a frame number, a few actions, the pointer with its buttons), is 252 MB.
 (define max-input-script-bytes (* 256 1024 1024))
 
+(define (error-args->text key args)
+  ;; What a caught error says, as Guile prints it (for a read error, with
+  ;; the file, line and column); KEY alone when its arguments are not the
+  ;; usual (who message message-args …).
+  (or (and (= (length args) 4) (string? (cadr args)) (list? (caddr args))
+           (false-if-exception (apply format #f (cadr args) (caddr args))))
+      (object->string key)))
+
+(define (skip-blanks-and-comments port)
+  ;; Past white space and ; comments, to where a datum would start.
+  (let ((c (peek-char port)))
+    (cond ((eof-object? c))
+          ((char-whitespace? c) (read-char port) (skip-blanks-and-comments port))
+          ((char=? c #\;)
+           (let to-line-end ()
+             (let ((c (read-char port)))
+               (unless (or (eof-object? c) (char=? c #\newline)) (to-line-end))))
+           (skip-blanks-and-comments port)))))
+
+(define (read-one-datum file port)
+  ;; PORT's one datum (the eof object for none), refusing text after it: it
+  ;; would be silently ignored, and is more likely a script pasted twice or
+  ;; cut than anything meant.
+  (let ((datum (read port)))
+    (skip-blanks-and-comments port)
+    (let* ((line (+ 1 (port-line port))) (column (+ 1 (port-column port)))
+           (more (read port)))  ; past a #| |# or #; comment: the end, or more
+      (unless (eof-object? more)
+        (scm-error 'misc-error "read-input-script"
+                   "~A:~A:~A: text after the input script (a file holds one list of (frame . actions))"
+                   (list file line column) #f)))
+    datum))
+
 (define (read-input-script file)
   "The input script record-input wrote to FILE, checked as make-game checks
-one. FILE must be a regular file (not a FIFO or a device) of at most 256 MiB."
+one. FILE must be a regular file (not a FIFO or a device) of at most 256
+MiB. A file that cannot be read, or holds text after the script, is refused
+with an error naming it, and for text that does not read, the line and
+column and what is wrong."
   (unless (string? file)
     (scm-error 'wrong-type-arg "read-input-script" "file: expected a string, got ~S" (list file) #f))
   (check-input-file "read-input-script" file)
@@ -876,10 +914,12 @@ one. FILE must be a regular file (not a FIFO or a device) of at most 256 MiB."
       (scm-error 'misc-error "read-input-script" "~s: ~a bytes, more than an input script may hold (~a)"
                  (list file size max-input-script-bytes) #f)))
   (let ((script (catch #t
-                  (lambda () (call-with-input-file file read))
+                  (lambda () (call-with-input-file file (lambda (port) (read-one-datum file port))))
                   (lambda (key . args)
-                    (scm-error 'misc-error "read-input-script" "cannot read an input script from ~S (~a)"
-                               (list file key) #f)))))
+                    (if (and (eq? key 'misc-error) (pair? args) (equal? (car args) "read-input-script"))
+                        (apply throw key args)
+                        (scm-error 'misc-error "read-input-script" "cannot read an input script from ~S: ~a"
+                                   (list file (error-args->text key args)) #f))))))
     (let ((script (if (eof-object? script) '() script)))  ; an empty file: no input
       (check-input-script "read-input-script" script)
       script)))

@@ -45,6 +45,30 @@
          (text (error-text (lambda () (play game #:frames 10 #:input '((2 . (right)) (2 . ())))))))
     (list text (game-frame game))))
 
+(define (script-file name text)
+  (let ((file (string-append dir "/" name)))
+    (call-with-output-file file (lambda (p) (display text p)))
+    file))
+(let ((cut (script-file "cut.scm" "((0) (1 right")))
+  (test-equal "a script that does not read is refused with the file, line, column and what is wrong"
+    (string-append "In procedure read-input-script: cannot read an input script from \"" cut "\": " cut
+                   ":1:14: unexpected end of input while searching for: )\n")
+    (error-text (lambda () (read-input-script cut)))))
+(let ((twice (script-file "twice.scm" "((0) (1 right))\n; a comment\n\n  ((2 left))\n")))
+  (test-equal "text after the script is refused, with where it starts"
+    (string-append "In procedure read-input-script: " twice
+                   ":4:3: text after the input script (a file holds one list of (frame . actions))\n")
+    (error-text (lambda () (read-input-script twice)))))
+(test-equal "… but comments after it are not text"
+  '((0) (1 right)) (read-input-script (script-file "commented.scm" "((0) (1 right)) ; done\n#| end |#\n")))
+(test-equal "a missing file is named, with the reason"
+  (string-append "In procedure read-input-script: cannot read an input script from \"" dir
+                 "/none.scm\": No such file or directory: \"" dir "/none.scm\"\n")
+  (error-text (lambda () (read-input-script (string-append dir "/none.scm")))))
+(test-equal "a scripted pointer at infinity is refused, naming it"
+  "In procedure read-input-script: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got (1 (mouse +inf.0 2 ()))\n"
+  (error-text (lambda () (read-input-script (script-file "inf.scm" "((0) (1 (mouse +inf.0 2 ())))")))))
+
 ;;; ---------------------------------------------------------------- golden frames
 (when (renderer-available?)
   (let ((golden (string-append dir "/walker.png")))
