@@ -62,8 +62,8 @@
 (test-equal "… but comments after it are not text"
   '((0) (1 right)) (read-input-script (script-file "commented.scm" "((0) (1 right)) ; done\n#| end |#\n")))
 (test-equal "a missing file is named, with the reason"
-  (string-append "In procedure read-input-script: cannot read an input script from \"" dir
-                 "/none.scm\": No such file or directory: \"" dir "/none.scm\"\n")
+  (string-append "In procedure read-input-script: \"" dir
+                 "/none.scm\": it cannot be read (No such file or directory)\n")
   (error-text (lambda () (read-input-script (string-append dir "/none.scm")))))
 (test-equal "a scripted pointer at infinity is refused, naming it"
   "In procedure read-input-script: input-script: expected (frame . actions), a frame ≥ 0 and a list of symbols and at most one (mouse x y buttons), got (1 (mouse +inf.0 2 ()))\n"
