@@ -197,6 +197,14 @@
                          dir "/fifos/pipe-test.scm: 1 check, 1 failed\n"
                          "0 passed, 1 failed\n"))
   (list-head (run "test" (string-append dir "/fifos")) 2))
+(mkdir (string-append dir "/ünï"))
+(write-script "ünï/ünï-test.scm" "(test-begin \"u\")\n(test-equal 1 1)\n(test-end \"u\")\n")
+(for-each
+ (lambda (locale)
+   (test-equal (format #f "a test file with a non-ASCII name runs and is named (locale ~a)" locale)
+     (list 0 (string-append dir "/ünï/ünï-test.scm: 1 check\n1 passed, 0 failed\n"))
+     (list-head (run-in-locale locale "." "test" (string-append dir "/ünï")) 2)))
+ '(unset "C"))
 (write-script "raises/raises-test.scm" "(test-begin \"raises\")\n(test-equal \"car of 5\" 1 (car 5))\n(test-end \"raises\")\n")
 (test-equal "a check that raises: one line, the error on it"
   (list 1 (string-append "FAIL " dir "/raises/raises-test.scm:2: car of 5: expected 1, raised: "
