@@ -153,11 +153,15 @@
 
 ;; Resized to 300 × 200 at the screen's corner: the largest whole scale that
 ;; fits is 4 (256 × 192), centred with black bars of 22 and 4 px.
-(define window-id
-  (let* ((p (open-input-pipe "xdotool search --name window-test 2>/dev/null"))
+(define (window-of pid)
+  ;; The window of the process PID (SDL sets _NET_WM_PID). Not by name: the
+  ;; host runs in a UTF-8 locale, so SDL writes WM_NAME as UTF8_STRING,
+  ;; which xdotool's --name, in its own C locale, cannot read.
+  (let* ((p (open-input-pipe (format #f "xdotool search --pid ~a 2>/dev/null" pid)))
          (line (read-line p)))
     (close-pipe p)
     (and (string? line) line)))
+(define window-id (window-of game))
 (test-assert "xdotool finds the game's window" window-id)
 (when window-id
   (system* "xdotool" "windowmove" window-id "0" "0")
@@ -239,18 +243,13 @@
                           (port->fdes (cdr focus-out))))
 (close-port (cdr focus-out))
 (test-equal "the focus game steps" "frame 0" (read-line-within (car focus-out) 20))
-(define (window-named name)
-  (let* ((p (open-input-pipe (string-append "xdotool search --name " name " 2>/dev/null")))
-         (line (read-line p)))
-    (close-pipe p)
-    (and (string? line) line)))
 (define root-window
   (let* ((p (open-input-pipe "xdotool search --maxdepth 0 --name '' 2>/dev/null")) (line (read-line p)))
     (close-pipe p)
     (and (string? line) line)))
 (define focus-window
   (let ((found #f))
-    (wait-for (lambda () (set! found (window-named "focus-test")) found) 10)
+    (wait-for (lambda () (set! found (window-of focus-game)) found) 10)
     found))
 (test-equal "xdotool finds the focus game's window and the root" #t (and (string? focus-window) (string? root-window)))
 (when (and focus-window root-window)
@@ -303,7 +302,7 @@
 (define starter (spawn host (list "--window" "--scale" "1" (string-append starter-dir "/game.scm"))
                        (port->fdes (cdr starter-out))))
 (close-port (cdr starter-out))
-(test-assert "the new game's window opens" (wait-for (lambda () (window-named "starter")) 20))
+(test-assert "the new game's window opens" (wait-for (lambda () (window-of starter)) 20))
 (system* "xdotool" "mousemove" "160" "120")
 (system* "xdotool" "keydown" "Right")
 (usleep 1000000)
