@@ -105,21 +105,39 @@ down), each once, in name order within a folder."
 ;;; How often the runner looks whether a file's process has ended.
 (define wait-poll-microseconds 20000)
 
-(define (written value) (call-with-output-string (lambda (port) (write value port))))
+;;; The most of a value a FAIL line shows: a value as long as a screenful
+;;; says what it is, and one failed check once printed a 13.8 MB line.
+(define max-shown-chars 400)
+
+(define (shown text)
+  ;; TEXT, or its first max-shown-chars characters and how long it was.
+  (if (<= (string-length text) max-shown-chars)
+      text
+      (format #f "~a… (~a characters in all)" (substring text 0 max-shown-chars) (string-length text))))
+
+(define (written value) (shown (call-with-output-string (lambda (port) (write value port)))))
+
+(define (asserted form)
+  ;; The expression a (test-assert [name] expr) form checks.
+  (if (and (pair? form) (eq? (car form) 'test-assert) (list? form)) (last form) form))
 
 (define (check-record r)
   ;; A finished check as the child sends it: (check name kind expected actual line).
   (let ((kind (test-result-kind r)))
     (list 'check (or (test-runner-test-name r) "")
           (if (memq kind '(pass xfail skip)) 'pass 'fail)
-          (written (test-result-ref r 'expected-value))
+          ;; test-assert has no expected value: (assert . its expression).
+          (if (assq 'expected-value (test-result-alist r))
+              (written (test-result-ref r 'expected-value))
+              (cons 'assert (written (asserted (test-result-ref r 'source-form)))))
           ;; A check that raised: (raised . the error, as it would print).
           (let ((err (test-result-ref r 'actual-error)))
             (if err
                 (cons 'raised
-                      (call-with-output-string
-                        (lambda (port)
-                          (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port)))))
+                      (shown
+                       (call-with-output-string
+                         (lambda (port)
+                           (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port))))))
                 (written (test-result-ref r 'actual-value))))
           (test-result-ref r 'source-line))))
 
@@ -252,10 +270,14 @@ and exits. Returns 0."
   (string-join (remove string-null? (map string-trim-both (string-split text #\newline))) " "))
 
 (define (outcome-text expected actual)
-  ;; "expected 5, actual 4", or "expected 5, raised: In procedure car: …".
-  (if (raised? actual)
-      (format #f "expected ~a, raised: ~a" expected (one-line (cdr actual)))
-      (format #f "expected ~a, actual ~a" expected actual)))
+  ;; "expected 5, actual 4", or "expected 5, raised: In procedure car: …";
+  ;; for test-assert, "assertion failed: (= 1 2)" or "… raised: …".
+  (cond ((and (pair? expected) (eq? (car expected) 'assert))
+         (if (raised? actual)
+             (format #f "assertion ~a raised: ~a" (cdr expected) (one-line (cdr actual)))
+             (format #f "assertion failed: ~a" (cdr expected))))
+        ((raised? actual) (format #f "expected ~a, raised: ~a" expected (one-line (cdr actual))))
+        (else (format #f "expected ~a, actual ~a" expected actual))))
 
 (define (report-failure port r)
   ;; One line a failed check: where, its name, what was expected and what came.

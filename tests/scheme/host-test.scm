@@ -205,6 +205,17 @@
      (list 0 (string-append dir "/ünï/ünï-test.scm: 1 check\n1 passed, 0 failed\n"))
      (list-head (run-in-locale locale "." "test" (string-append dir "/ünï")) 2)))
  '(unset "C"))
+(mkdir (string-append dir "/asserts"))
+(write-script "asserts/assert-test.scm"
+              "(test-begin \"a\")\n(test-assert \"one is two\" (= 1 2))\n(test-assert \"car of 5\" (car 5))\n(test-equal \"long\" (make-string 1000 #\\a) \"b\")\n(test-end \"a\")\n")
+(test-equal "a failed test-assert says so with its expression; a long value is cut, saying how long it was"
+  (list 1 (string-append
+           "FAIL " dir "/asserts/assert-test.scm:2: one is two: assertion failed: (= 1 2)\n"
+           "FAIL " dir "/asserts/assert-test.scm:3: car of 5: assertion (car 5) raised: In procedure car: Wrong type argument in position 1 (expecting pair): 5\n"
+           "FAIL " dir "/asserts/assert-test.scm:4: long: expected \"" (make-string 399 #\a) "… (1002 characters in all), actual \"b\"\n"
+           dir "/asserts/assert-test.scm: 3 checks, 3 failed\n"
+           "0 passed, 3 failed\n"))
+  (list-head (run "test" (string-append dir "/asserts")) 2))
 (write-script "raises/raises-test.scm" "(test-begin \"raises\")\n(test-equal \"car of 5\" 1 (car 5))\n(test-end \"raises\")\n")
 (test-equal "a check that raises: one line, the error on it"
   (list 1 (string-append "FAIL " dir "/raises/raises-test.scm:2: car of 5: expected 1, raised: "
