@@ -288,9 +288,17 @@ and exits. Returns 0."
          r))
 
 (define (xml-escape s)
+  ;; XML 1.0 allows no control character but tab, newline and return, not
+  ;; even as a reference: the others (from a test's name or a value) are
+  ;; written as \xN; so the report still parses.
   (string-concatenate
    (map (lambda (c)
-          (case c ((#\<) "&lt;") ((#\>) "&gt;") ((#\&) "&amp;") ((#\") "&quot;") (else (string c))))
+          (case c
+            ((#\<) "&lt;") ((#\>) "&gt;") ((#\&) "&amp;") ((#\") "&quot;")
+            ((#\tab #\newline #\return) (string c))
+            (else (if (or (char<? c #\space) (char=? c #\delete))
+                      (format #f "\\x~x;" (char->integer c))
+                      (string c)))))
         (string->list s))))
 
 ;; How much of an existing file is read to tell a JUnit report: its XML

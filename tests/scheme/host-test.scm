@@ -165,6 +165,16 @@
   (let ((xml (call-with-input-file (string-append dir "/report.xml") get-string-all)))
     (and (string-contains xml "<testsuite name=\"") (string-contains xml "failures=\"1\"")
          (string-contains xml "<failure message=\"line 2\">expected 5, actual 4</failure>"))))
+(mkdir (string-append dir "/controls"))
+(write-script "controls/ctl-test.scm"
+              "(test-begin \"c\")\n(test-equal \"bell\\a and escape\\x1b\" \"\\x01\" \"ok\")\n(test-end \"c\")\n")
+(run "test" "--junit" (string-append dir "/controls.xml") (string-append dir "/controls"))
+(test-equal "control characters in a JUnit report are written as \\xN;, so the report parses as XML"
+  '("bell\\x7; and escape\\x1b;" "expected \"\\x01\", actual \"ok\"")
+  (let* ((sxpath (@ (sxml xpath) sxpath))
+         (doc ((@ (sxml simple) xml->sxml) (call-with-input-file (string-append dir "/controls.xml") get-string-all)))
+         (tc (car ((sxpath '(// testcase)) doc))))
+    (list (car ((sxpath '(@ name *text*)) tc)) (car ((sxpath '(failure *text*)) tc)))))
 ;; --junit with the report's name forgotten takes the next argument: a test
 ;; file, or the game. It is refused, before any test runs, and left as it was.
 (define good-text (call-with-input-file (string-append suite-dir "/good-test.scm") get-string-all))
