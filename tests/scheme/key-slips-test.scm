@@ -90,7 +90,7 @@
 
 ;; downstroke test itself (the host, in a child): the game of a test file is strict.
 (test-equal "downstroke test makes games strict: a misspelt key fails the check that plays the game"
-  '(1 "FAIL slip-test.scm:3: plays: expected #f, raised: In procedure game-run!: entity key #:sensr? is not one the engine reads (entity 0 of the list): did you mean #:sensor?? (make-game strict?: #t makes this an error)")
+  '(1 "FAIL slip-test.scm:3: plays: assertion (game? (play (make-game #:scene (make-scene #:entities (list (list #:x 0 #:sensr? #t)))) #:frames 1)) raised: In procedure game-run!: entity key #:sensr? is not one the engine reads (entity 0 of the list): did you mean #:sensor?? (make-game strict?: #t makes this an error)")
   (let* ((dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-slips-XXXXXX")))
          (file (string-append dir "/slip-test.scm"))
          (out (string-append dir "/out")))
