@@ -1,5 +1,6 @@
 ;;; (downstroke engine) — the game record and its frame loop.
 (define-module (downstroke engine)
+  #:use-module (downstroke error-text)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-9)
   #:use-module ((system vm vm) #:select (call-with-stack-overflow-handler))
@@ -1104,7 +1105,7 @@ game-capture, a capture run or a window)."
           (lambda (port)
             (format port "downstroke: ~a:~%" (what))
             (display (frames-text frames) port)
-            (print-exception port #f key args))))
+            (print-error port key args))))
         (on-error))
       (lambda (key . args)
         ;; The frames from the hook on, as Guile's REPL narrows them: the

@@ -1,5 +1,6 @@
 ;;; (downstroke host) — what the `downstroke' executable runs.
 (define-module (downstroke host)
+  #:use-module (downstroke error-text)
   #:declarative? #f
   #:use-module (downstroke engine)
   #:use-module (downstroke render)
@@ -13,7 +14,7 @@
 ;;; code reaches for (find, any, filter-map, fold, let-values …), so an
 ;;; example copied from the docs runs as it is. The docs test evaluates
 ;;; every example in exactly this environment (tests/scheme/docs-test.scm).
-(define script-interfaces '((downstroke) (srfi srfi-1) (srfi srfi-11)))
+(define script-interfaces '((downstroke) (srfi srfi-1) (srfi srfi-11) (srfi srfi-34)))
 
 (define (use-script-environment! module)
   "Make MODULE see what a script sees (script-interfaces)."
@@ -65,7 +66,7 @@
   (let ((port (current-error-port))
         (stack (make-stack #t 3)))
     (force-output (current-output-port))  ; the script's output came first
-    (print-exception port #f key args)
+    (print-error port key args)
     (if (full-backtrace?)
         (display-backtrace stack port)
         (begin

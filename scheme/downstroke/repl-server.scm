@@ -9,6 +9,7 @@
 ;;; cost is bounded: its input line, its unread output, the time one
 ;;; evaluation may hold the game.
 (define-module (downstroke repl-server)
+  #:use-module (downstroke error-text)
   #:use-module (system repl repl)
   #:use-module (system repl common)
   #:use-module (system repl debug)
@@ -531,7 +532,7 @@ Meta-command used by Geiser to evaluate and compile code."))))
          (text (call-with-output-string
                 (lambda (p)
                   (print-frames (narrow-stack->vector stack 1 tag 0 (and tag 1)) p)
-                  (print-exception p #f key args)))))
+                  (print-error p key args)))))
     (write `((error (key . ,key)) (output . ,text)) port)
     (newline port)))
 
@@ -581,7 +582,7 @@ Meta-command used by Geiser to evaluate and compile code."))))
       (when (zero? *strikes*)
         (let ((tag (and (pair? (fluid-ref %stacks)) (cdr (fluid-ref %stacks)))))
           (print-frames (narrow-stack->vector (make-stack #t) 3 tag 0 (and tag 1)) port)))
-      (print-exception port #f key args))))
+      (print-error port key args))))
 
 (define (call-with-bounded-stack thunk)
   ;; (THUNK) with at most repl-stack-limit of stack; past it a

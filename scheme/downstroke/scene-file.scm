@@ -6,6 +6,7 @@
 ;;; reads back to the bit. A map is named by the file and options it was
 ;;; loaded with, and the game's edits of it are listed cell by cell.
 (define-module (downstroke scene-file)
+  #:use-module (downstroke error-text)
   #:use-module (srfi srfi-1)
   #:use-module (downstroke world)
   #:use-module (downstroke tilemap)
@@ -216,7 +217,7 @@ renamed onto FILE)."
                                                    (cdr source))))
                      (lambda (key . args)
                        (refuse file "its map ~s does not load: ~a" (car source)
-                               (call-with-output-string (lambda (port) (print-exception port #f key args))))))))
+                               (error-text key args))))))
            (fold (lambda (edit tm)
                    (catch #t
                      (lambda ()

@@ -2,6 +2,7 @@
 ;;; every *-test.scm under the paths it is given, each in a script's own
 ;;; environment with SRFI-64, and says what failed, where, expected what.
 (define-module (downstroke testing)
+  #:use-module (downstroke error-text)
   #:use-module (srfi srfi-1)
   #:use-module (srfi srfi-64)
   #:use-module (ice-9 ftw)
@@ -137,7 +138,7 @@ down), each once, in name order within a folder."
                       (shown
                        (call-with-output-string
                          (lambda (port)
-                           (if (pair? err) (print-exception port #f (car err) (cdr err)) (write err port))))))
+                           (if (pair? err) (print-error port (car err) (cdr err)) (write err port))))))
                 (written (test-result-ref r 'actual-value))))
           (test-result-ref r 'source-line))))
 
@@ -178,7 +179,7 @@ and exits. Returns 0."
              (load-file (canonicalize-path file))))))
       (lambda (key . args)
         (send port (list 'check "(the file did not run to its end)" 'error #f
-                         (call-with-output-string (lambda (p) (print-exception p #f key args)))
+                         (error-text key args)
                          #f))))
     (send port '(end))
     (close-port port)

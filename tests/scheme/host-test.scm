@@ -232,6 +232,18 @@
                          "In procedure car: Wrong type argument in position 1 (expecting pair): 5\n"
                          dir "/raises/raises-test.scm: 1 check, 1 failed\n0 passed, 1 failed\n"))
   (list-head (run "test" (string-append dir "/raises")) 2))
+(mkdir (string-append dir "/raise42"))
+(write-script "raise42/raise-test.scm"
+              "(test-begin \"r\")\n(test-assert \"raises 42\" (raise 42))\n(test-equal \"guarded\" '(caught 7) (guard (e ((number? e) (list 'caught e))) (raise 7)))\n(raise 'oops)\n(test-end \"r\")\n")
+(test-equal "scripts get SRFI-34 raise: a raised non-condition is reported as an error, not a signal, and guard catches it"
+  (list 1 (string-append "FAIL " dir "/raise42/raise-test.scm:2: raises 42: assertion (raise 42) raised: uncaught raise of a non-condition: 42\n"
+                         "FAIL " dir "/raise42/raise-test.scm: (the file did not run to its end): uncaught raise of a non-condition: oops\n"
+                         dir "/raise42/raise-test.scm: 3 checks, 2 failed\n1 passed, 2 failed\n"))
+  (list-head (run "test" (string-append dir "/raise42")) 2))
+(test-equal "a script's uncaught (raise '(1 2)) is reported as an error: exit 1, the value written"
+  (list 1 "uncaught raise of a non-condition: (1 2)\n")
+  (let ((r (run (write-script "raise42/raises.scm" "(raise (list 1 2))\n"))))
+    (list (first r) (string-append (car (string-split (third r) #\newline)) "\n"))))
 (write-script "suite/broken-test.scm" "(test-begin \"broken\")\n(car '())\n")
 (test-assert "a file that does not load is a failure, named with its error"
   (let ((r (run "test" (string-append suite-dir "/broken-test.scm"))))
