@@ -203,6 +203,7 @@
                        (current-error-port)
                        (delay ((@ (downstroke script-source) loaded-definitions) file)))))
         (mend-warning-locations!)
+        ((@ (downstroke compiled-by-content) forget-stale-compiled!) file)
         (parameterize ((current-warning-port warnings))
           (load file))
         (close-port warnings))

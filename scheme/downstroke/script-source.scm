@@ -5,7 +5,7 @@
 ;;; expander refused without a place is.
 (define-module (downstroke script-source)
   #:use-module (srfi srfi-1)
-  #:export (loaded-definitions form-location))
+  #:export (loaded-definitions loaded-files form-location))
 
 (define (read-forms file)
   ;; FILE's top-level forms, with their source positions; () when it cannot
@@ -63,16 +63,22 @@
 (define (loaded-definitions file)
   "The names defined at the top level of the files FILE loads by a literal
 name, and of the files those load, each file read once."
-  (let loop ((pending (append-map (lambda (form) (loads-in form (dirname file))) (read-forms file)))
-             (seen '()) (names '()))
-    (cond ((null? pending) (delete-duplicates names eq?))
-          ((member (car pending) seen) (loop (cdr pending) seen names))
+  (delete-duplicates
+   (append-map (lambda (loaded) (append-map defined-names (read-forms loaded)))
+               (cdr (loaded-files file)))
+   eq?))
+
+(define (loaded-files file)
+  "FILE, then the files it loads by a literal name, and the files those
+load, each once."
+  (let loop ((pending (list file)) (seen '()))
+    (cond ((null? pending) (reverse seen))
+          ((member (car pending) seen) (loop (cdr pending) seen))
           (else
-           (let ((forms (read-forms (car pending))))
-             (loop (append (cdr pending)
-                           (append-map (lambda (form) (loads-in form (dirname (car pending)))) forms))
-                   (cons (car pending) seen)
-                   (append (append-map defined-names forms) names)))))))
+           (loop (append (cdr pending)
+                         (append-map (lambda (form) (loads-in form (dirname (car pending))))
+                                     (read-forms (car pending))))
+                 (cons (car pending) seen))))))
 
 (define (form-location form files)
   "Where FORM (a pair) is written outside quoted data in the first of FILES

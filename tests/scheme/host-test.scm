@@ -244,6 +244,29 @@
   (list 1 "uncaught raise of a non-condition: (1 2)\n")
   (let ((r (run (write-script "raise42/raises.scm" "(raise (list 1 2))\n"))))
     (list (first r) (string-append (car (string-split (third r) #\newline)) "\n"))))
+(mkdir (string-append dir "/restored"))
+(mkdir (string-append dir "/restored/tests"))
+(define (restore-old! name text)
+  ;; NAME written with TEXT and dated 2020, as cp -p or tar leaves an older copy.
+  (let ((file (write-script name text)))
+    (utime file 1577836800 1577836800)
+    file))
+(define (restored-run answer sum)
+  (restore-old! "restored/game.scm" (format #f "(define answer ~a)\n" answer))
+  (restore-old! "restored/tests/s-test.scm"
+                (format #f "(load \"../game.scm\")\n(test-begin \"s\")\n(test-equal \"answer\" 1 answer)\n(test-equal \"sum\" 2 ~a)\n(test-end \"s\")\n" sum))
+  (list-head (run "test" (string-append dir "/restored")) 2))
+(test-equal "a test file and the game it loads, restored with an older date, run as they now read, not their older compiled copies"
+  (list (list 0 (string-append dir "/restored/tests/s-test.scm: 2 checks\n2 passed, 0 failed\n"))
+        (list 1 (string-append "FAIL " dir "/restored/tests/s-test.scm:3: answer: expected 1, actual 2\n"
+                               "FAIL " dir "/restored/tests/s-test.scm:4: sum: expected 2, actual 3\n"
+                               dir "/restored/tests/s-test.scm: 2 checks, 2 failed\n0 passed, 2 failed\n")))
+  (list (restored-run 1 "(+ 1 1)") (restored-run 2 "(+ 1 2)")))
+(test-equal "so does a script"
+  '("1\n" "2\n")
+  (map (lambda (n)
+         (second (run (restore-old! "restored/show.scm" (format #f "(display ~a)\n(newline)\n" n)))))
+       '(1 2)))
 (write-script "suite/broken-test.scm" "(test-begin \"broken\")\n(car '())\n")
 (test-assert "a file that does not load is a failure, named with its error"
   (let ((r (run "test" (string-append suite-dir "/broken-test.scm"))))
