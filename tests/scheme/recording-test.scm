@@ -1,7 +1,7 @@
 ;;; Long recordings (issue 45): a replay walks its script once, however many
 ;;; key frames it has; a recording keeps every change of input from frame 0
 ;;; on, up to its bound, and past it says so and quits where it stopped.
-(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 ftw) (downstroke) (downstroke testing))
+(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 ftw) (ice-9 popen) (ice-9 textual-ports) (downstroke) (downstroke testing))
 
 (load "support.scm")
 
@@ -115,7 +115,7 @@
   (string-append ";;; The input of \"Downstroke\", 8 frames, as an input script (record-input).\n"
                  ";;; Frames 0 to 3 only: the input log reached its bound of 2097152 changes, and the script quits at frame 4.\n"
                  "((0 a)\n (1 b)\n (2 c)\n (3 d)\n (4 quit))\n")
-  (call-with-input-file cut-file (lambda (p) ((@ (ice-9 textual-ports) get-string-all) p))))
+  (call-with-input-file cut-file (lambda (p) (get-string-all p))))
 (define cut-seen (list '()))
 (define cut-replay (sampler (read-input-script cut-file) '(0 3 4) cut-seen))
 (game-run! cut-replay #:frames 8)
@@ -184,6 +184,23 @@
 (test-equal "record-input writes the file whole (no temporary file left), read back as it was"
   '(("small.scm") ((0 right) (3 left)))
   (list (scandir dir (lambda (n) (string-prefix? "small" n))) (read-input-script small-file)))
+
+;; A full disk without root: a file size limit of 0 makes every write fail
+;; (EFBIG; SIGXFSZ ignored, as a shell passes it on); the error goes through
+;; a pipe, which the limit leaves alone.
+(define full-script (string-append dir "/full-disk.scm"))
+(define full-target (string-append dir "/full-rec.scm"))
+(call-with-output-file full-script
+  (lambda (port) (format port "(record-input (make-game engine-update: #f) ~s)~%" full-target)))
+(test-equal "record-input onto a full disk names the file and why, and leaves no file, not even a temporary one"
+  (list 1 (format #f "In procedure record-input: cannot write ~s: File too large" full-target) '())
+  (let* ((p (open-pipe* OPEN_READ "/bin/sh" "-c"
+             (string-append "trap '' XFSZ; ulimit -f 0; exec '" (readlink "/proc/self/exe")
+                            "' --no-auto-compile '" full-script "' 2>&1")))
+         (text (get-string-all p))
+         (status (status:exit-val (close-pipe p))))
+    (list status (car (string-split text #\newline)) (scandir dir (lambda (n) (string-prefix? "full-rec" n))))))
+(delete-file full-script)
 
 ;; --record writes as the game runs: a windowed game (SDL's dummy video
 ;; driver) that ends itself with primitive-exit after 6 s, so running no
