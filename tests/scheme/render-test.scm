@@ -527,6 +527,24 @@
   (let ((stub (string-append dir "/stub.ogg")))
     (call-with-output-file stub (lambda (port) (display "OggS\x00\x02" port)))
     (mentions? (error-text (lambda () (load-music 'x stub))) "load-music" "stub.ogg")))
+(define (open-fds)
+  ;; The file descriptors open, the folder read to list them left out.
+  (let ((listed (filter-map string->number (scandir "/proc/self/fd"))))
+    (filter (lambda (fd) (false-if-exception (fstat fd))) listed)))
+(define fds-before-music (open-fds))
+(for-each (lambda (i) (load-music (string->symbol (format #f "tune-~a" i)) tone)) (iota 300))
+(test-equal "300 music names loaded hold no file open: the file is read whole and closed"
+  fds-before-music (open-fds))
+(test-equal "at the limit of open files, loading music says so, naming the file"
+  (format #f "In procedure load-music: music ~a: Too many open files\n" tone)
+  ;; The limit is on a descriptor's number: set to the lowest free one, no
+  ;; file can be opened.
+  (let ((limits (call-with-values (lambda () (getrlimit 'nofile)) cons))
+        (lowest-free (let ((open (open-fds))) (find (lambda (n) (not (memv n open))) (iota 100000)))))
+    (dynamic-wind
+      (lambda () (setrlimit 'nofile lowest-free (cdr limits)))
+      (lambda () (error-text (lambda () (load-music 'one-too-many tone))))
+      (lambda () (setrlimit 'nofile (car limits) (cdr limits))))))
 (test-assert "a volume outside 0–1 is refused"
   (mentions? (error-text (lambda () (music-volume-set! 1.5))) "music-volume-set!" "1.5"))
 (test-assert "… NaN too"
