@@ -1,12 +1,12 @@
 ;;; (downstroke host) — what the `downstroke' executable runs.
 (define-module (downstroke host)
-  #:use-module (downstroke error-text)
   #:declarative? #f
   #:use-module (downstroke engine)
+  #:use-module (downstroke error-text)
   #:use-module (downstroke render)
   #:use-module (ice-9 format)
   #:use-module ((rnrs bytevectors) #:select (string->utf8 utf8->string bytevector->u8-list u8-list->bytevector))
-  #:use-module ((srfi srfi-1) #:select (any))
+  #:use-module ((srfi srfi-1) #:select (any find))
   #:export (main script-interfaces use-script-environment!))
 
 ;;; What a script run by `downstroke' (and its REPL) sees without importing
@@ -513,6 +513,9 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
         (begin (format (current-error-port) "downstroke: --timeout: expected a number of seconds > 0, got ~s~%" v)
                #f))))
 
+;; What only a window has: refused without --window.
+(define window-only-options '(record frame-log scale fullscreen))
+
 (define (prepare-display! opts)
   ;; #f when the options cannot be honoured (said on the error port).
   (let ((window? (assq-ref opts 'window))
@@ -521,6 +524,13 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
     (cond ((and window? capture)
            (display "downstroke: --window and --capture exclude each other\n" (current-error-port))
            #f)
+          ((and (not window?) (find (lambda (o) (assq-ref opts o)) window-only-options))
+           => (lambda (o)
+                ;; Said, not ignored: a session played headless with
+                ;; --record would end with no recording and no word why.
+                (format (current-error-port) "downstroke: --~a applies only with --window~a~%" o
+                        (if (eq? o 'record) ": a headless run's input is its input-script:" ""))
+                #f))
           ((and (or window? capture) (not (renderer-available?)))
            (display "downstroke: this build has no renderer (SDL2): no --window or --capture\n"
                     (current-error-port))

@@ -141,6 +141,14 @@
                       "(let-values (((x y) (values 1 2)))\n"
                       "  (format #t \"~s ~s ~s~%\" (find (lambda (e) (eq? (entity-ref e #:id) 'b)) es) (+ x y)\n"
                       "          (filter-map (lambda (e) (and (> (entity-ref e #:x) 1) (entity-ref e #:id))) es)))\n"))))
+(test-equal "an option only a window has is refused without --window, before the script runs: status 2, the option named"
+  '((2 "" "downstroke: --record applies only with --window: a headless run's input is its input-script:\n")
+    (2 "" "downstroke: --frame-log applies only with --window\n")
+    (2 "" "downstroke: --scale applies only with --window\n")
+    (2 "" "downstroke: --fullscreen applies only with --window\n"))
+  (let ((script (write-script "never-run.scm" "(display \"ran\")\n")))
+    (map (lambda (opts) (apply run (append opts (list script))))
+         '(("--record" "r.scm") ("--frame-log" "f.log") ("--scale" "2") ("--fullscreen")))))
 ;;; ---------------------------------------------------------------- downstroke test
 (define suite-dir (string-append dir "/suite"))
 (mkdir suite-dir)
