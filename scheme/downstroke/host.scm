@@ -458,7 +458,7 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
                       at most S seconds (default 60); print each failed check
                       (file:line, expected, actual), each file with its count
                       of checks, and N passed, N failed; exit 0 only when
-                      nothing failed
+                      a test file was found and nothing failed
   --help              this text
 
 An uncaught error prints its message and the calls in FILE.scm's folder;

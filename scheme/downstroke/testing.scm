@@ -155,12 +155,15 @@ MAKE-ENVIRONMENT returns, with LOAD-FILE) and append each check's result to
 the file RESULTS as it ends, then (end). A file that does not load is one
 error naming it. Told to stop (SIGTERM), it sends the frame its game reached
 and exits. Returns 0."
-  (let ((port (open-file results "a")))
+  (let ((port (open-file results "a"))
+        (out (current-output-port)))
     (set-port-encoding! port "UTF-8")
     (sigaction SIGTERM
       (lambda (sig)
         (let ((game ((@@ (downstroke engine) current-game))))
           (send port (list 'timeout (and game (game-frame game))))
+          (unless (zero? (port-column out)) (newline out))
+          (force-output out)
           (force-output (current-output-port))
           (force-output (current-error-port))
           (primitive-_exit 124))))
@@ -181,6 +184,9 @@ and exits. Returns 0."
         (send port (list 'check "(the file did not run to its end)" 'error #f
                          (error-text key args)
                          #f))))
+    ;; The runner's count line follows: a last line the file left open
+    ;; would run into it.
+    (unless (zero? (port-column out)) (newline out))
     (send port '(end))
     (close-port port)
     0))
@@ -362,7 +368,7 @@ file that ran out of time, or ended before its end, is a failure saying so;
 a test file that is not a regular file (a FIFO, a device) is not run and is
 a failure saying what it is. With JUNIT, also write a JUnit XML report
 there, refused before any test runs when that file may not be written.
-Returns the exit status: 0 only when nothing failed."
+Returns the exit status: 0 only when a file was found and nothing failed."
   (let ((problem (and junit (junit-target-problem junit))))
     (when problem
       (scm-error 'misc-error "downstroke test" "--junit ~s: ~a" (list junit problem) #f)))
@@ -390,8 +396,10 @@ Returns the exit status: 0 only when nothing failed."
          (all (append-map cdr by-file))
          (passed (count (lambda (r) (eq? (caddr r) 'pass)) all))
          (failed (- (length all) passed)))
-    (when (null? files)
-      (format (current-error-port) "downstroke test: no *-test.scm under ~a~%" (string-join paths " ")))
+    (when (null? found)
+      ;; A failure: a CI job pointed at the wrong folder must not pass.
+      (format (current-error-port) "downstroke test: no *-test.scm under ~a: nothing was tested~%"
+              (string-join paths " ")))
     (when junit (write-junit junit by-file))
     (format #t "~a passed, ~a failed~%" passed failed)
-    (if (zero? failed) 0 1)))
+    (if (and (zero? failed) (pair? found)) 0 1)))

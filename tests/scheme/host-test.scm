@@ -275,6 +275,16 @@
   (map (lambda (n)
          (second (run (restore-old! "restored/show.scm" (format #f "(display ~a)\n(newline)\n" n)))))
        '(1 2)))
+(mkdir (string-append dir "/no-tests"))
+(write-script "no-tests/helpers.scm" "1\n")
+(test-equal "a run that finds no *-test.scm fails: exit 1, said on stderr"
+  (list 1 "0 passed, 0 failed\n" (string-append "downstroke test: no *-test.scm under " dir "/no-tests: nothing was tested\n"))
+  (run "test" (string-append dir "/no-tests")))
+(mkdir (string-append dir "/open-line"))
+(write-script "open-line/open-test.scm" "(test-begin \"o\")\n(test-equal \"one\" 1 1)\n(display \"no newline\")\n(test-end \"o\")\n")
+(test-equal "a test file's last line left open does not run into its count line"
+  (list 0 (string-append "no newline\n" dir "/open-line/open-test.scm: 1 check\n1 passed, 0 failed\n"))
+  (list-head (run "test" (string-append dir "/open-line")) 2))
 (write-script "suite/broken-test.scm" "(test-begin \"broken\")\n(car '())\n")
 (test-assert "a file that does not load is a failure, named with its error"
   (let ((r (run "test" (string-append suite-dir "/broken-test.scm"))))
