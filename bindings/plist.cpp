@@ -24,6 +24,8 @@ uint32_t field_of(uint8_t k) {
     }
 }
 
+// A number key's value as the core reads it: a finite real, exact only as
+// an exact integer (semantics §1, §2); else the error naming the key.
 bool decode_number(SCM key, SCM value, Num& out, Failure& f) {
     switch (num_from_scm(value, out)) {
         case NumCheck::Ok: return true;
@@ -66,6 +68,8 @@ bool walk_symbols(SCM key, SCM list, Failure& f, Each&& each) {
     return true;
 }
 
+// #:skip-pipelines as a mask of the steps it names (semantics §3): a proper
+// list of symbols.
 bool decode_skips(SCM key, SCM list, uint16_t& mask, Failure& f) {
     mask = 0;
     return walk_symbols(key, list, f, [&](SCM sym) {
@@ -273,6 +277,7 @@ void place(FieldPlaces& places, uint8_t k, size_t index) {
     if (field != 0 && index <= FieldPlaces::kMaxPlace) places.at[__builtin_ctz(field)] = static_cast<uint8_t>(index);
 }
 
+// Physics key k's value, checked and stored in the body (semantics §2).
 bool decode_value(uint8_t k, SCM key, SCM v, Decoded& d, Failure& f) {
     Body& b = d.body;
     switch (k) {

@@ -36,7 +36,7 @@ void clear_crushed(std::span<Body> bodies, std::span<const size_t> members);
 // body indices in list order (the carriers among the members). A rider is
 // moved along x, then y, by its carrier's displacement, each resolved
 // against the solid cells as a tile step with that motion would; one whose
-// upward carry a solid cell stops is crushed. Writes only x, y and crushed.
+// upward carry a solid cell stops is crushed. Writes only x, y and crushed (semantics §11).
 void carry_riders(std::span<Body> bodies, std::span<const Body> start,
                   std::span<const size_t> carriers, std::span<const size_t> members,
                   const TileGrid* grid, CollisionMode mode, CarryScratch& scratch);

@@ -21,7 +21,7 @@ enum class Ease : uint8_t {
 // 'linear, 'quad-in, 'bounce-in-out, … → Ease; false for an unknown name.
 bool ease_from_name(std::string_view name, Ease& out);
 std::string_view ease_name(Ease e);
-// ease(0) = 0 and ease(1) = 1 for every curve; t outside [0,1] is clamped.
+// ease(0) = 0 and ease(1) = 1 for every curve; t outside [0,1] is clamped (semantics §6).
 double ease(Ease e, double t);
 
 }  // namespace ds

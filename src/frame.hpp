@@ -92,7 +92,7 @@ public:
     Frame(Frame&&) noexcept;
     Frame& operator=(Frame&&) noexcept;
 
-    // The whole pass over a world.
+    // The whole pass over a world: default-engine-update (semantics §5).
     const FrameReport& step(World& world, const FrameOptions& opts);
 
     // The cost of each step in the last frame (tweens: only when step() ran

@@ -29,7 +29,7 @@ bool rests_on_tile(const Body& b, const TileGrid& grid);
 // skips 'on-solid), as the tile steps return whether they looked at the map.
 // Sets on_ground from the tiles and from the frame-start scene. self_slot is
 // b's own index in `scene` (or -1); bodies with b's nonzero id are skipped too.
-// Needs #:gravity?; skipped by 'on-solid.
+// Needs #:gravity?; skipped by 'on-solid (semantics §4).
 bool detect_on_solid(Body& b, std::span<const Body> scene, std::ptrdiff_t self_slot,
                      const TileGrid* grid);
 

@@ -21,7 +21,7 @@ inline Num operator*(Num a, Num b) { return {a.v * b.v, a.exact && b.exact}; }
 inline Num operator-(Num a) { return {-a.v, a.exact}; }
 
 // Same value and same exactness, and for flonums the same sign of zero:
-// Scheme's eqv? tells 0.0 from -0.0, so writing one over the other is a change.
+// Scheme's eqv? tells 0.0 from -0.0, so writing one over the other is a change (semantics §1).
 inline bool same(Num a, Num b) {
     return a.exact == b.exact && a.v == b.v && std::signbit(a.v) == std::signbit(b.v);
 }

@@ -24,7 +24,7 @@ inline bool box_contains(const Box& b, double px, double py) {
 }
 
 // Appends to `out` the index of every box that overlaps `r` (strictly), or
-// that holds the point, in ascending order.
+// that holds the point, in ascending order (semantics §8).
 void query_rect(std::span<const Box> boxes, const Box& r, std::vector<uint32_t>& out);
 void query_point(std::span<const Box> boxes, double px, double py, std::vector<uint32_t>& out);
 
@@ -65,12 +65,12 @@ struct RayHit {
 
 // The boxes the segment enters, in ascending box order (sort by t for the
 // nearest). A box holding the start point is not entered: a ray cast from
-// inside an entity does not hit the entity.
+// inside an entity does not hit the entity (semantics §8).
 void raycast_boxes(std::span<const Box> boxes, const Segment& s, std::vector<RayHit>& out);
 // The solid cells the segment enters, nearest first; with `first_only`, at
 // most one. The cell holding the start point is not entered. Walks only the
 // cells inside the grid, so a segment of any length costs at most the grid's
-// width plus height in cells.
+// width plus height in cells (semantics §8).
 void raycast_cells(const TileGrid& grid, const Segment& s, bool first_only, std::vector<RayHit>& out);
 
 // Orders hits nearest first; at equal distances boxes (in box order) come

@@ -26,10 +26,10 @@ struct SubStep {
     Num share(Num rate) const { return whole() ? rate : Num::flonum(rate.v * h); }
 };
 
-// vy += ay, then ay = 0. Needs #:gravity?; skipped by 'acceleration.
+// vy += ay, then ay = 0 (semantics §4). Needs #:gravity?; skipped by 'acceleration.
 bool apply_acceleration(Body& b);
 // vy += gravity × #:gravity-scale (·h), gravity being the scene's (the
-// seed's *gravity* by default). Needs #:gravity?; skipped by 'gravity.
+// seed's *gravity* by default; semantics §4, §14). Needs #:gravity?; skipped by 'gravity.
 bool apply_gravity(Body& b, SubStep s = {}, Num gravity = Num::integer(kGravity));
 // Whether gravity pulls the body down (gravity × scale > 0): only then may
 // a resting contact (FrameOptions::resting_contacts) hold it still.
@@ -39,13 +39,15 @@ inline bool pulled_down(const Body& b, Num gravity) {
 }
 // #:drag (·h) moves vx and vy toward 0, never past it; then #:max-vx and
 // #:max-vy clamp them (semantics §14). Needs one of the keys; skipped by
-// 'speed-limits. Writes a velocity only when it changes.
+// 'speed-limits. Stores both velocities every time: the write back to an
+// entity skips a value equal, in value and exactness, to the one read.
 bool apply_speed_limits(Body& b, SubStep s = {});
-// x += vx (·h; in a sub-frame a zero velocity moves nothing); skipped by 'velocity-x.
+// x += vx (·h; in a sub-frame a zero velocity moves nothing; semantics §4);
+// skipped by 'velocity-x.
 bool apply_velocity_x(Body& b, SubStep s = {});
-// y += vy (·h); skipped by 'velocity-y.
+// y += vy (·h; semantics §4); skipped by 'velocity-y.
 bool apply_velocity_y(Body& b, SubStep s = {});
-// The legacy step: both axes, each skippable on its own.
+// The legacy step: both axes, each skippable on its own (semantics §4).
 bool apply_velocity(Body& b);
 
 }  // namespace ds

@@ -16,9 +16,9 @@ enum class CollisionMode : uint8_t {
 
 // Snap out of solid cells along x after apply-velocity-x. No-op without a
 // grid, when vx = 0, or when the body skips 'tile-collisions-x.
-// In a sub-frame, swept mode covers the sub-frame's move (vx·h).
+// In a sub-frame, swept mode covers the sub-frame's move (vx·h) (semantics §4).
 bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
-// The same along y, after apply-velocity-y ('tile-collisions-y).
+// The same along y, after apply-velocity-y ('tile-collisions-y) (semantics §4).
 bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
 // In a grid with shaped cells (semantics §12) the x step also lifts a body
 // up a floor ramp (or down under a ceiling ramp) it walks into, and the y

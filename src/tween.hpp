@@ -29,10 +29,11 @@ struct TweenPhase {
     double t = 0;           // progress through the cycle, in [0, 1]
 };
 
+// Where a tween stands after `elapsed` ms (semantics §6).
 TweenPhase tween_phase(const TweenTiming& timing, double elapsed);
 
 // The value a property takes at a phase, given ease(t). Intermediate values
-// are flonums; once finished it is the final target itself, exactness and all.
+// are flonums; once finished it is the final target itself, exactness and all (semantics §6).
 Num tween_value(const TweenProp& p, const TweenPhase& phase, double eased);
 
 }  // namespace ds

@@ -41,12 +41,14 @@
 
 (define (fl x) (exact->inexact x))
 
+;; A number as the core reads it (§1).
 (define (as-double x)
   (cond ((not (exact? x)) x)
         ((and (integer? x) (< (abs x) (expt 2 53))) x)
         ((integer? x) (let ((d (fl x))) (if (inf? d) d (inexact->exact d))))   ; ∞: put refuses it
         (else (fl x))))                 ; exact fractions are read as flonums
 
+;; Sums and products as the core computes them (§1).
 (define (num+ a b)
   (if (and (exact? a) (exact? b)) (as-double (+ a b)) (+ (fl a) (fl b))))
 (define (num- a b)
@@ -105,6 +107,7 @@
            (scm-error 'out-of-range (symbol->string who)
                       "entity key ~S: expected a number from 0 to 1, got ~S" (list key v) #f)))))
 
+;; A whole entity checked before a step reads it (§2).
 (define (check who e)
   (let loop ((p e) (seen '()))
     (cond ((null? p) e)
@@ -127,11 +130,12 @@
     body ...))
 
 (define (num e key)
-  "The number under KEY (0 when absent), as the core reads it."
+  "The number under KEY (0 when absent), as the core reads it (§1, §2)."
   (as-double (entity-ref e key 0)))
 
 (define (flag e key) (and (entity-ref e key #f) #t))
 
+;; Whether E skips STEP by #:skip-pipelines (§3).
 (define (skips? e step) (entity-skips-pipeline? e step))
 
 (define (put e key old new)
@@ -315,7 +319,7 @@ stop's rebound; a carried move never rebounds."
           (put e pos-key pos (num+ pos (share vel h)))))))
 
 (define-step (apply-acceleration e scene dt)
-  "vy += ay, then ay = 0 (written only when it was non-zero)."
+  "vy += ay, then ay = 0 (written only when it was non-zero) (§4)."
   (if (or (not (flag e #:gravity?)) (skips? e 'acceleration))
       e
       (let* ((vy (num e #:vy)) (ay (num e #:ay))
@@ -323,23 +327,23 @@ stop's rebound; a carried move never rebounds."
         (if (zero? ay) e (put e #:ay ay 0)))))
 
 (define-step (apply-gravity e scene dt)
-  "vy += the scene's gravity × #:gravity-scale."
+  "vy += the scene's gravity × #:gravity-scale (§4, §14)."
   (gravity-step e #f (gravity-of scene)))
 
 (define-step (apply-speed-limits e scene dt)
-  "vx and vy toward 0 by #:drag, then clamped to #:max-vx and #:max-vy."
+  "vx and vy toward 0 by #:drag, then clamped to #:max-vx and #:max-vy (§14)."
   (speed-limits-step e #f))
 
 (define-step (apply-velocity-x e scene dt)
-  "x += vx."
+  "x += vx (§4)."
   (velocity-step e #f #:x #:vx 'velocity-x))
 
 (define-step (apply-velocity-y e scene dt)
-  "y += vy."
+  "y += vy (§4)."
   (velocity-step e #f #:y #:vy 'velocity-y))
 
 (define-step (apply-velocity e scene dt)
-  "Both axes, each skippable on its own."
+  "Both axes, each skippable on its own (§4)."
   (apply-velocity-y (apply-velocity-x e scene dt) scene dt))
 
 ;;; ---------------------------------------------------------------- tile cells (§4)
@@ -695,7 +699,7 @@ squeezed."
 
 (define-step (resolve-tile-collisions-x e scene dt)
   "Moving along x into solid cells (of the rows the box spans): snap flush
-against the first one, vx = 0."
+against the first one, vx = 0 (§4)."
   (tiles-x e scene #f #f))
 
 (define* (tiles-x e scene h gather? #:optional carried?)
@@ -709,7 +713,7 @@ against the first one, vx = 0."
                           gather?))))))
 
 (define-step (resolve-tile-collisions-y e scene dt)
-  "The same along y, in the columns the box spans; vy = 0."
+  "The same along y, in the columns the box spans; vy = 0 (§4)."
   (tiles-y e scene #f #f))
 
 (define* (tiles-y e scene h gather? #:optional carried?)
@@ -850,7 +854,7 @@ E's #:id. A contact entity's holder is named by (NAME-AT entity index)."
 
 (define-step (detect-on-solid e scene dt)
   "Whether E stands on a solid tile or on a solid entity of SCENE (not
-itself: not eq?, no equal #:id)."
+itself: not eq?, no equal #:id) (§4)."
   (let ((others (if scene (scene-entities scene) '())))
     (check-all 'detect-on-solid others)
     (on-solid e (scene-tiles scene) (holders others) (lambda (i o) (eq? o e)))))
@@ -1323,7 +1327,7 @@ the target itself (as the core reads it)."
 
 (define-step (step-tweens e scene dt)
   "Advance E's #:tween by DT ms: write its properties, drop it when it ends
-and call its on-complete."
+and call its on-complete (§6)."
   (let ((tw (entity-ref e #:tween #f)))
     (cond ((or (not tw) (skips? e 'tweens)) e)
           ((not (tween? tw)) (fail 'step-tweens "entity key ~S: expected a tween (make-tween), got ~S" #:tween tw))
@@ -1336,7 +1340,7 @@ and call its on-complete."
 seed's frame, by default), each taking every entity through the per-entity
 steps, all reading the scene as it was at the start of the sub-frame (the
 first: of the frame, before the tweens), then the carriers, push-apart
-and the crushing of what they pushed (§11), then groups."
+and the crushing of what they pushed (§11), then groups (§5)."
   (unless (and (exact-integer? substeps) (<= 1 substeps 1024))
     (fail 'step-scene "substeps: expected an exact integer from 1 to ~S, got ~S" 1024 substeps))
   (let* ((start (scene-entities scene))

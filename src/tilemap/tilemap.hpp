@@ -337,7 +337,7 @@ struct LoadOptions {
 // FIFO is an error), the map and its tilesets at most limits.max_bytes
 // together, and the tile layers (chunks included) at most limits.max_cells
 // cells together, checked from the attributes before anything is decoded.
-// Throws MapError.
+// Throws MapError (semantics §7).
 Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {},
                      const MapLimits& limits = {});
 
