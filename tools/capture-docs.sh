@@ -29,6 +29,12 @@ capture tweens 14
 capture fall 45
 capture sandbox 60 sandbox-debug --debug
 capture platformer 44 platformer-front
+# The five short examples (demo/examples/), each at the frame that shows its idea.
+capture examples/jump 34 example-jump
+capture examples/plank 45 example-plank
+capture examples/ramp 34 example-ramp
+capture examples/pickup 12 example-pickup
+capture examples/tween 14 example-tween
 
 # render.org's pictures of what a Tiled map draws: each feature map of the
 # oracle test drawn by the engine (left) and by Tiled's tmxrasterizer
