@@ -5,11 +5,11 @@
 ;;; In a window (downstroke --window demo/fall.scm) it runs until the player
 ;;; quits; headless it runs its 90 frames.
 (use-modules (ice-9 format))
+;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
+(add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
+(use-modules (demo looks))
 
-(define demo-dir (dirname (current-filename)))
-(define level (load-tilemap (string-append demo-dir "/maps/level1.tmx")))
-
-(include "looks.scm")
+(define level (load-tilemap (demo-file "maps/level1.tmx")))
 (define player-standing (sprite 0))
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
@@ -46,8 +46,8 @@
 
 (define (trace game)
   (when (current-display)                ; how to play, on a plate over the ground
-    (draw-rect 18 226 123 11 '(22 17 31 150) #:fill? #t #:space 'screen)
-    (draw-text "ARROWS WALK   Z JUMP" 20 228 'white #:space 'screen))
+    (draw-rect 18 226 123 11 '(22 17 31 150) fill?: #t space: 'screen)
+    (draw-text "ARROWS WALK   Z JUMP" 20 228 'white space: 'screen))
   (let ((frame (game-frame game)))
     (when (zero? (modulo frame 10))
       (format #t "frame ~3d:" frame)

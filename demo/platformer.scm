@@ -40,16 +40,13 @@
 ;;; Loaded from elsewhere (tests/scheme/demos-test.scm) it only defines
 ;;; `game', `run!', `events', `history' and friends.
 (use-modules (ice-9 format) (srfi srfi-1))
+;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
+(add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
+(use-modules (demo looks))
 
-(define demo-dir
-  (cond ((current-filename) => dirname)
-        ((getenv "DS_DEMO_DIR"))
-        (else "demo")))
-
-(define level (load-tilemap (string-append demo-dir "/maps/platformer.tmx")))
+(define level (load-tilemap (demo-file "maps/platformer.tmx")))
 
 ;;; ------------------------------------------------------------ looks and sounds
-(include "looks.scm")
 (define player-standing (sprite 0))
 (define player-running (sprite 1))
 (define player-jumping (sprite 2))
@@ -313,8 +310,6 @@ removed, and how many there were."
                                           tilemap: (car broken)
                                           data: (+ (scene-data scene) (length picked)))))))
 
-(define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
-
 (define (draw! game)
   ;; The goal flag (a map object, not an entity) and the HUD; the player is
   ;; drawn by the engine from its #:sprite.
@@ -327,15 +322,15 @@ removed, and how many there were."
                 (iota (quotient (entity-ref lift #:width) 16))))
     (draw-label (format #f "TIME ~,1f" seconds) 4 4 'white)
     (let ((text (format #f "COINS ~a" (scene-data (game-scene game)))))
-      (draw-label text (- (game-width game) 4 (* 6 (string-length text))) 4 'yellow))
+      (draw-label text (- (game-width game) 4 (text-width text)) 4 'yellow))
     (cond (reached-goal?
-           (draw-label "GOAL!" (centred-x "GOAL!" 3 (game-width game)) 70 'yellow #:scale 3)
-           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 (game-width game)) 100 'white))
+           (draw-label "GOAL!" (centred-x "GOAL!" (game-width game) scale: 3) 70 'yellow scale: 3)
+           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" (game-width game)) 100 'white))
           ((game-paused? game)
-           (draw-label "PAUSED" (centred-x "PAUSED" 3 (game-width game)) 70 'white #:scale 3)
-           (draw-label "P: GO ON" (centred-x "P: GO ON" 1 (game-width game)) 100 'white))
+           (draw-label "PAUSED" (centred-x "PAUSED" (game-width game) scale: 3) 70 'white scale: 3)
+           (draw-label "P: GO ON" (centred-x "P: GO ON" (game-width game)) 100 'white))
           ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
-           (draw-label "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (centred-x "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" 1 (game-width game)) (- (game-height game) 12) 'white)))))
+           (draw-label "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (centred-x "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (game-width game)) (- (game-height game) 12) 'white)))))
 
 (define traced -1)                      ; the last frame a line was printed for
 

@@ -26,16 +26,13 @@
 ;;; In a window (downstroke --window demo/sandbox.scm) it runs until the
 ;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
+;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
+(add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
+(use-modules (demo looks))
 
-(define demo-dir
-  (cond ((current-filename) => dirname)
-        ((getenv "DS_DEMO_DIR"))
-        (else "demo")))
-
-(define arena (load-tilemap (string-append demo-dir "/maps/sandbox.tmx")))
+(define arena (load-tilemap (demo-file "maps/sandbox.tmx")))
 
 ;;; ------------------------------------------------------------ looks
-(include "looks.scm")
 (load-demo-music!)
 (define walker-picture (sprite 3))
 (define walker-step-picture (sprite 4))
@@ -233,7 +230,7 @@ it walks left."
     (draw-line (+ dropper-x 4) (+ dropper-y 6) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
     (draw-line (+ dropper-x 8) (+ dropper-y 6) (+ dropper-x 6) (+ dropper-y 8) '(250 220 70 200))
     (draw-label (format #f "CRATES ~a   LANDED ~a" (length boxes) at-rest) 4 4 'white)
-    (draw-label hint (- (game-width game) 4 (* 6 (string-length hint))) 4 'white)))
+    (draw-label hint (- (game-width game) 4 (text-width hint)) 4 'white)))
 
 (define (render game)
   ;; Draws the platforms, the dropper and the HUD (when the game has a

@@ -26,16 +26,13 @@
 ;;; In a window (downstroke --window demo/shmup.scm) it runs until the
 ;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
-
-(define demo-dir
-  (cond ((current-filename) => dirname)
-        ((getenv "DS_DEMO_DIR"))
-        (else "demo")))
+;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
+(add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
+(use-modules (demo looks))
 
 ;;; ------------------------------------------------------------ looks and sounds
 ;;; No solid tile, no camera-target: the map changes nothing but what gids mean.
-(define backdrop (load-tilemap (string-append demo-dir "/maps/shmup.tmx")))
-(include "looks.scm")
+(define backdrop (load-tilemap (demo-file "maps/shmup.tmx")))
 (define ship-picture (sprite 5))
 (define enemy-picture (sprite 6))
 (define enemy-flap-picture (sprite 7))
@@ -170,7 +167,6 @@
           (loop (cdr pairs) (cons bullet spent) (cons (entity-ref enemy #:id) hit)
                 (+ score (entity-ref enemy #:points)))))))))
 
-(define (centred-x text scale) (quotient (- screen-width (* 6 scale (string-length text))) 2))
 
 ;;; Stars: fixed columns, drifting down at three speeds (half, one and one
 ;;; and a half pixels a frame), the faster the brighter.
@@ -192,7 +188,7 @@
                      (x (modulo (+ 13 (* i 97)) screen-width))
                      (y (modulo (+ (* i 61) (quotient (* frame (+ speed 1)) 2)) screen-height)))
                 (unless (behind-sprite? x y entities)
-                  (draw-rect x y 1 1 (vector-ref star-colors speed) #:fill? #t))))
+                  (draw-rect x y 1 1 (vector-ref star-colors speed) fill?: #t))))
             (iota star-count)))
 
 (define (draw! game)
@@ -206,12 +202,12 @@
     (for-each (lambda (x) (draw-sprite explosion-picture (car x) (- (cadr x) 4))) explosions)
     (draw-label (format #f "SCORE ~a" (entity-ref ship #:score)) 4 4 'white)
     (let ((enemies (format #f "ENEMIES ~a" left)))
-      (draw-label enemies (- screen-width 4 (* 6 (string-length enemies))) 4 'green))
+      (draw-label enemies (- screen-width 4 (text-width enemies)) 4 'green))
     (cond ((zero? left)
-           (draw-label "WAVE CLEARED!" (centred-x "WAVE CLEARED!" 2) 90 'yellow #:scale 2)
-           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1) 116 'white))
+           (draw-label "WAVE CLEARED!" (centred-x "WAVE CLEARED!" screen-width scale: 2) 90 'yellow scale: 2)
+           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" screen-width) 116 'white))
           ((< frame 240)                ; the first 4 s: how to play
-           (draw-label "ARROWS MOVE   Z FIRE" (centred-x "ARROWS MOVE   Z FIRE" 1) 4 'white)))))
+           (draw-label "ARROWS MOVE   Z FIRE" (centred-x "ARROWS MOVE   Z FIRE" screen-width) 4 'white)))))
 
 (define (render game)
   ;; Draws the stars, explosions and HUD (when the game has a display),

@@ -18,16 +18,13 @@
 ;;; In a window (downstroke --window demo/topdown.scm) it runs until the
 ;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
+;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
+(add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
+(use-modules (demo looks))
 
-(define demo-dir
-  (cond ((current-filename) => dirname)
-        ((getenv "DS_DEMO_DIR"))
-        (else "demo")))
-
-(define room (load-tilemap (string-append demo-dir "/maps/topdown.tmx")))
+(define room (load-tilemap (demo-file "maps/topdown.tmx")))
 
 ;;; ------------------------------------------------------------ looks and sounds
-(include "looks.scm")
 (define player-standing (sprite 0))
 (define player-walking (sprite 1))
 (define coin-picture (sprite 10))
@@ -168,7 +165,6 @@
     (when wall (note! game (list 'turn (entity-ref guard #:id) 'x x)))
     (entity-set (entity-set guard #:vx vx) #:flip-x? (negative? vx))))
 
-(define (centred-x text scale width) (quotient (- width (* 6 scale (string-length text))) 2))
 
 (define (draw-hud! game)
   ;; The entities are drawn by the engine: the player from its #:sprite, the
@@ -179,12 +175,12 @@
          (width (game-width game)))
     (draw-label (format #f "SCORE ~a" (entity-ref (car entities) #:score 0)) 4 4 'white)
     (let ((coins (format #f "COINS ~a/~a" (- total left) total)))
-      (draw-label coins (- width 4 (* 6 (string-length coins))) 4 'yellow))
+      (draw-label coins (- width 4 (text-width coins)) 4 'yellow))
     (cond ((zero? left)
-           (draw-label "ALL COINS!" (centred-x "ALL COINS!" 3 width) 90 'yellow #:scale 3)
-           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" 1 width) 120 'white))
+           (draw-label "ALL COINS!" (centred-x "ALL COINS!" width scale: 3) 90 'yellow scale: 3)
+           (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" width) 120 'white))
           ((< (- (game-frame game) start-frame) 240)   ; the first 4 s: how to play
-           (draw-label "ARROWS WALK - PICK UP EVERY COIN" (centred-x "ARROWS WALK - PICK UP EVERY COIN" 1 width) (- (game-height game) 12) 'white)))))
+           (draw-label "ARROWS WALK - PICK UP EVERY COIN" (centred-x "ARROWS WALK - PICK UP EVERY COIN" width) (- (game-height game) 12) 'white)))))
 
 (define (render game)
   ;; Draws the HUD (when the game has a display), remembers the entities

@@ -28,15 +28,12 @@
 ;;; In a window (downstroke --window demo/tweens.scm) it runs until the
 ;;; player quits.
 (use-modules (ice-9 format) (srfi srfi-1))
-
-(define demo-dir
-  (cond ((current-filename) => dirname)
-        ((getenv "DS_DEMO_DIR"))
-        (else "demo")))
+;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
+(add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
+(use-modules (demo looks))
 
 ;;; ------------------------------------------------------------ looks and sounds
-(define backdrop (load-tilemap (string-append demo-dir "/maps/tweens.tmx")))
-(include "looks.scm")
+(define backdrop (load-tilemap (demo-file "maps/tweens.tmx")))
 (define walker-picture (sprite 3))
 (define walker-step-picture (sprite 4))
 (define coin-picture (sprite 10))
@@ -166,8 +163,8 @@
          (pulse (get 'pulse))
          (fader (get 'fader))
          (hits (count (lambda (e) (eq? (cadr e) 'hit)) (bounded-log-items events))))
-    (draw-rect 0 212 320 2 '(98 58 42) #:fill? #t)            ; the walker's floor
-    (draw-rect 0 214 320 26 '(56 34 32) #:fill? #t)
+    (draw-rect 0 212 320 2 '(98 58 42) fill?: #t)            ; the walker's floor
+    (draw-rect 0 214 320 26 '(56 34 32) fill?: #t)
     (for-each (lambda (l) (draw-text (caddr l) (car l) (cadr l) label-color)) labels)
     (draw-rect (entity-ref pulse #:x) (entity-ref pulse #:y)
                (entity-ref pulse #:width) (entity-ref pulse #:height) '(255 150 40))
@@ -176,10 +173,10 @@
     (let ((cover (inexact->exact (round (* 255 (- 1 (entity-ref fader #:alpha 1)))))))
       (when (> cover 0)
         (draw-rect (- (entity-ref fader #:x) 4) (- (entity-ref fader #:y) 8) 16 16
-                   (append background (list cover)) #:fill? #t)))
+                   (append background (list cover)) fill?: #t)))
     (draw-label "TWEENS" 4 4 'white)
     (let ((text (format #f "HITS ~a   RETURN: AGAIN" hits)))
-      (draw-label text (- (game-width game) 4 (* 6 (string-length text))) 4 'white))))
+      (draw-label text (- (game-width game) 4 (text-width text)) 4 'white))))
 
 (define (render game)
   ;; Draws the scenery and HUD (when the game has a display), remembers the

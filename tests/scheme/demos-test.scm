@@ -121,7 +121,8 @@ demos' top-level names stay in that module."
 ;;; Loading does not run a demo: each runs itself only as the host's script.
 (let ((m (load-demo "platformer.scm")))
   (test-equal "loading a demo does not run it" 0 (game-frame (game-of m)))
-  (test-equal "the demo found its maps next to itself" demo-dir (ref m 'demo-dir)))
+  (test-equal "the demo found its maps next to itself, through (demo looks)"
+    (string-append demo-dir "/maps/platformer.tmx") ((ref m 'demo-file) "maps/platformer.tmx")))
 
 ;;; ================================================================ platformer
 ;;; Ground top: row 11, y 176; the player is 12×16, so standing y = 160.
