@@ -24,9 +24,11 @@
 ;;; player bounces off; touch it any other way and the run starts again.
 ;;; The scripted run rides over it.
 ;;;
-;;; The coins picked up are the scene's data (scene-data), so a rewind
-;;; (game-rewind!, history: 600) gives back the count of the frame it goes
-;;; to, with the coins themselves.
+;;; What the run remembers from frame to frame is the scene's data
+;;; (scene-data): the coins picked up, when the run started and reached the
+;;; goal, and what the player did last frame. So a rewind (game-rewind!,
+;;; history: 600) gives all of it back as it was at the frame it goes to,
+;;; with the coins themselves.
 ;;;
 ;;; Keys (in a window): Left/Right or A/D run, Z or Space jumps, Down or S
 ;;; drops through a plank, P pauses and goes on (the paused: hook), Return
@@ -124,13 +126,18 @@ the last 1000."
   (entity-at frame 'lift))
 
 ;;; ------------------------------------------------------------ the game
-(define was-on-ground? #f)
-(define was-blocked? #f)
-(define last-wanted 0)                  ; the #:vx asked for last frame
-(define was-standing-on #f)             ; the #:id of what it stood on last frame
-(define reached-goal? #f)
-(define start-frame 0)                  ; the frame the run (re)started at
-(define goal-frame #f)                  ; the frame the goal was reached at
+(define (fresh-run start-frame)
+  "The scene's data for a run that starts at START-FRAME: a plist."
+  (list #:coins 0                       ; picked up so far
+        #:start-frame start-frame       ; the frame the run (re)started at
+        #:goal-frame #f                 ; the frame the goal was reached at, once it is
+        ;; Last frame's: whether the player stood, was pushing against a
+        ;; wall, the #:vx it asked for and the #:id of what it stood on.
+        #:was-on-ground? #f #:was-blocked? #f #:last-wanted 0 #:was-standing-on #f))
+
+(define (run-ref game key)
+  "KEY of the run GAME's scene holds (fresh-run)."
+  (entity-ref (scene-data (game-scene game)) key))
 
 (define (dress player wanted on-ground? frame)
   "PLAYER with its picture: facing the way it last ran (#:flip-x? mirrors the
@@ -147,15 +154,8 @@ running on the ground."
 
 (define (restart! game)
   ;; Return in a window: the player back at the spawn point, the clock at 0.
-  (set! was-on-ground? #f)
-  (set! was-blocked? #f)
-  (set! last-wanted 0)
-  (set! was-standing-on #f)
-  (set! reached-goal? #f)
-  (set! start-frame (+ (game-frame game) 1))
-  (set! goal-frame #f)
   (game-scene-set! game (update-scene (game-scene game) entities: (start-entities) tilemap: level
-                                      data: 0)))
+                                      data: (fresh-run (+ (game-frame game) 1)))))
 
 (define (start-entities) (cons* (dress player0 0 #f 0) lift0 goal0 (append coins0 (list walker0))))
 
@@ -245,6 +245,7 @@ removed, and how many there were."
   ;; and the sensors the player overlaps are in the scene's contacts.
   (let* ((input (game-input game))
          (scene (game-scene game))
+         (run (scene-data scene))
          (player (car (scene-entities scene)))
          (lift (entity-find (scene-entities scene) 'lift))
          (touched (entered scene))
@@ -260,18 +261,20 @@ removed, and how many there were."
          (blocked (entity-ref player #:blocked '()))
          (standing-on (entity-ref player #:standing-on #f))
          ;; Pushing against a wall: running, and stopped along x.
-         (blocked? (and (not (zero? last-wanted)) (or (memq 'left blocked) (memq 'right blocked)) #t))
+         (blocked? (and (not (zero? (entity-ref run #:last-wanted))) (or (memq 'left blocked) (memq 'right blocked)) #t))
          (jump? (and (input-pressed? input 'a) on-ground?))
          (head-hit? (memq 'up blocked))
+         (goal? (memq 'goal touched))
          (broken (if head-hit?
                      (break-blocks (scene-tilemap scene) (cells-above-head player (scene-tilemap scene)))
                      (cons (scene-tilemap scene) 0))))
     (when (positive? (cdr broken))
       (play-sound 'boom)
       (note! game 'broke))
-    (when (and on-ground? (not was-on-ground?)) (note! game 'landed))
-    (when (and blocked? (not was-blocked?)) (note! game 'bumped))
-    (when (and (eq? standing-on 'lift) (not (eq? was-standing-on 'lift))) (note! game 'boarded))
+    (when (and on-ground? (not (entity-ref run #:was-on-ground?))) (note! game 'landed))
+    (when (and blocked? (not (entity-ref run #:was-blocked?))) (note! game 'bumped))
+    (when (and (eq? standing-on 'lift) (not (eq? (entity-ref run #:was-standing-on) 'lift)))
+      (note! game 'boarded))
     (for-each (lambda (name)
                 (play-sound 'coin)
                 (note! game (list 'coin name)))
@@ -279,15 +282,9 @@ removed, and how many there were."
     (when stomp?
       (play-sound 'boom)
       (note! game 'stomped))
-    (when (and (not reached-goal?) (memq 'goal touched))
-      (set! reached-goal? #t)
-      (set! goal-frame (game-frame game))
+    (when (and goal? (not (entity-ref run #:goal-frame)))
       (play-sound 'goal)
       (note! game 'goal))
-    (set! was-on-ground? on-ground?)
-    (set! was-blocked? blocked?)
-    (set! last-wanted wanted)
-    (set! was-standing-on standing-on)
     (when jump?
       (play-sound 'jump)
       (note! game 'jumped))
@@ -308,12 +305,22 @@ removed, and how many there were."
                                                             (else e))))
                                                   (cddr (scene-entities scene))))
                                           tilemap: (car broken)
-                                          data: (+ (scene-data scene) (length picked)))))))
+                                          data: (let* ((run (entity-set run #:coins (+ (entity-ref run #:coins)
+                                                                                       (length picked))))
+                                                       (run (if (and goal? (not (entity-ref run #:goal-frame)))
+                                                                (entity-set run #:goal-frame (game-frame game))
+                                                                run))
+                                                       (run (entity-set run #:was-on-ground? on-ground?))
+                                                       (run (entity-set run #:was-blocked? blocked?))
+                                                       (run (entity-set run #:last-wanted wanted)))
+                                                  (entity-set run #:was-standing-on standing-on)))))))
 
 (define (draw! game)
   ;; The goal flag (a map object, not an entity) and the HUD; the player is
   ;; drawn by the engine from its #:sprite.
   (let* ((frame (game-frame game))
+         (start-frame (run-ref game #:start-frame))
+         (goal-frame (run-ref game #:goal-frame))
          (seconds (/ (* (game-frame-delay game) (- (or goal-frame frame) start-frame)) 1000.)))
     (draw-sprite goal-flag (entity-ref goal #:x)
                  (- (+ (entity-ref goal #:y) (entity-ref goal #:height)) 16))
@@ -321,9 +328,9 @@ removed, and how many there were."
       (for-each (lambda (k) (draw-sprite lift-piece (+ (entity-ref lift #:x) (* 16 k)) (- (entity-ref lift #:y) 8)))
                 (iota (quotient (entity-ref lift #:width) 16))))
     (draw-label (format #f "TIME ~,1f" seconds) 4 4 'white)
-    (let ((text (format #f "COINS ~a" (scene-data (game-scene game)))))
+    (let ((text (format #f "COINS ~a" (run-ref game #:coins))))
       (draw-label text (- (game-width game) 4 (text-width text)) 4 'yellow))
-    (cond (reached-goal?
+    (cond (goal-frame
            (draw-label "GOAL!" (centred-x "GOAL!" (game-width game) scale: 3) 70 'yellow scale: 3)
            (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" (game-width game)) 100 'white))
           ((game-paused? game)
@@ -332,20 +339,17 @@ removed, and how many there were."
           ((< (- frame start-frame) 240)   ; the first 4 s: how to play, over the ground
            (draw-label "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (centred-x "ARROWS RUN  Z JUMP  DOWN DROPS  GET TO THE FLAG" (game-width game)) (- (game-height game) 12) 'white)))))
 
-(define traced -1)                      ; the last frame a line was printed for
-
 (define (render game)
   ;; Runs after camera-follow! (which keeps the view inside the map).
   ;; Draws the goal and the HUD (when the game has a display), remembers the
-  ;; player and, headless, prints a line every 20 frames (once, however
-  ;; long the game is paused on it).
+  ;; player and, headless, prints a line every 20 frames (not again while
+  ;; the game stands paused on it).
   (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (player (car (scene-entities (game-scene game))))
         (camera (scene-camera (game-scene game))))
     (remember! frame (scene-entities (game-scene game)))
-    (when (and trace? (zero? (modulo frame 20)) (not (= frame traced)))
-      (set! traced frame)
+    (when (and trace? (zero? (modulo frame 20)) (not (game-paused? game)))
       (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)~a  camera (~a, ~a)~%"
               frame (entity-ref player #:x) (entity-ref player #:y)
               (entity-ref player #:vx) (entity-ref player #:vy)
@@ -385,7 +389,7 @@ removed, and how many there were."
 (define game
   (make-game title: "Downstroke — platformer" width: 320 height: 240 frame-delay: 16
              scene: (make-scene entities: (start-entities) tilemap: level camera-target: 'player
-                                data: 0)            ; the coins picked up
+                                data: (fresh-run 0))
              update: update render: render paused: paused-update
              ;; The default keys, and P for pause.
              input-map: (append (default-input-map) '((pause "P")))

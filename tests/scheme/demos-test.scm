@@ -1,7 +1,7 @@
 ;;; The demos (demo/*.scm), each loaded into a fresh module and run headless
 ;;; with its built-in input script, then checked with exact values; and their
 ;;; maps (demo/maps/*.tmx, written by demo/maps/make_maps.py).
-(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
+(use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing))
 
 (load "support.scm")   ; demo-dir
 
@@ -247,12 +247,12 @@ demos' top-level names stay in that module."
   (test-assert "exact again from the lift on"
     (every (lambda (k) (exact? (entity-ref (p-at k) #:y))) (range 579 720))))
 
-;;; The coins picked up are the scene's data: coin-3 is picked up at frame
-;;; 123, so the scene frame 120 started from holds 2, and a rewind to it
-;;; gives 2 back; playing on picks coin-3 up again, at the same frame.
+;;; The coins picked up are in the scene's data: coin-3 is picked up at
+;;; frame 123, so the scene frame 120 started from holds 2, and a rewind to
+;;; it gives 2 back; playing on picks coin-3 up again, at the same frame.
 (define rewound (load-demo "platformer.scm"))
 ((ref rewound 'run!) 130)
-(define (coins-of m) (scene-data (game-scene (game-of m))))
+(define (coins-of m) (entity-ref (scene-data (game-scene (game-of m))) #:coins))
 (test-group "platformer: the coins in the scene data"
   (test-equal "the whole demo picks up four" 4 (coins-of platformer))
   (test-equal "three by frame 130" 3 (coins-of rewound))
@@ -267,8 +267,7 @@ demos' top-level names stay in that module."
 ;;; (P is pressed again in tick 9, in the paused: hook), and the game goes on
 ;;; from frame 6: it still lands at frame 10, four ticks later.
 (define paused (load-demo "platformer.scm"))
-((@@ (downstroke engine) game-input-script-set!) (game-of paused) '((0) (5 pause) (6) (9 pause) (10)))
-((ref paused 'run!) 12)
+(play (game-of paused) frames: 12 input: '((0) (5 pause) (6) (9 pause) (10)))
 (test-group "platformer: pause"
   (test-equal "paused after frame 5, resumed at frame 6, landed at frame 10"
     '((5 . paused) (6 . resumed) (10 . landed)) (events-of paused))
