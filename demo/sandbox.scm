@@ -146,59 +146,76 @@ it walks left."
                 (else e)))
         e)))
 
-(define landed '())                     ; ids of the boxes that came to rest
+;;; What the game remembers besides its entities is the scene's data, so a
+;;; rewind gives it back: the ids of the boxes that came to rest, where the
+;;; dropper is and how many crates it has dropped.
+(define data0 (list #:landed '() #:dropper-x 234 #:dropped 0))
+
+(define (data-ref game key) (entity-ref (scene-data (game-scene game)) key))
+
+(define (data-set scene key value)
+  "SCENE with KEY of its data set to VALUE."
+  (update-scene scene data: (entity-set (scene-data scene) key value)))
 
 (define (watch-boxes! game)
-  (for-each (lambda (e)
-              ;; At rest: supported, and not falling any more.
-              (when (and (eq? (entity-ref e #:kind) 'box) (entity-ref e #:on-ground? #f)
-                         (zero? (entity-ref e #:vy 0)) (not (memq (entity-ref e #:id) landed)))
-                (set! landed (cons (entity-ref e #:id) landed))
-                (note! game (list 'landed (entity-ref e #:id) 'y (entity-ref e #:y)))))
-            (scene-entities (game-scene game))))
+  (game-scene-set!
+   game
+   (data-set (game-scene game) #:landed
+             (fold (lambda (e landed)
+                     ;; At rest: supported, and not falling any more.
+                     (if (and (eq? (entity-ref e #:kind) 'box) (entity-ref e #:on-ground? #f)
+                              (zero? (entity-ref e #:vy 0)) (not (memq (entity-ref e #:id) landed)))
+                         (begin
+                           (note! game (list 'landed (entity-ref e #:id) 'y (entity-ref e #:y)))
+                           (cons (entity-ref e #:id) landed))
+                         landed))
+                   (data-ref game #:landed)
+                   (scene-entities (game-scene game))))))
 
 ;;; The player's part (in a window; headless runs hold nothing): a dropper
 ;;; that moves along the top and drops crates, and a reset.
-(define dropper-x 234)                  ; where a dropped crate's left edge starts
+;;; The dropper's x (its crate's left edge) is in the scene's data.
 (define dropper-y 18)
 (define dropper-speed 3)
 (define max-dropped 24)                 ; beyond that the oldest dropped crate goes
-(define dropped 0)                      ; crates dropped so far
 
-(define* (drop-crate entities #:optional (x dropper-x) (y dropper-y))
-  ;; ENTITIES with a crate at (X, Y) (under the dropper), unless something
-  ;; is in the way.
-  (let ((free? (not (any (lambda (e) (aabb-overlap? x y 12 12
-                                                    (entity-ref e #:x 0) (entity-ref e #:y 0)
-                                                    (entity-ref e #:width 0) (entity-ref e #:height 0)))
-                         entities))))
+(define (drop-crate scene x y)
+  "SCENE with a crate at (X, Y), unless something is in the way."
+  (let* ((entities (scene-entities scene))
+         (free? (not (any (lambda (e) (aabb-overlap? x y 12 12
+                                                     (entity-ref e #:x 0) (entity-ref e #:y 0)
+                                                     (entity-ref e #:width 0) (entity-ref e #:height 0)))
+                          entities))))
     (if (not free?)
-        entities
+        scene
         (let* ((old (filter (lambda (e) (entity-ref e #:dropped? #f)) entities))
-               (entities (if (>= (length old) max-dropped) (delete (car old) entities eq?) entities)))
-          (set! dropped (+ dropped 1))
-          (append entities
-                  (list (append (box (string->symbol (format #f "crate-~a" dropped)) x y)
-                                (list #:dropped? #t))))))))
+               (entities (if (>= (length old) max-dropped) (delete (car old) entities eq?) entities))
+               (dropped (+ (entity-ref (scene-data scene) #:dropped) 1)))
+          (data-set (update-scene scene entities:
+                                  (append entities
+                                          (list (append (box (string->symbol (format #f "crate-~a" dropped)) x y)
+                                                        (list #:dropped? #t)))))
+                    #:dropped dropped)))))
 
 (define (player-input! game)
   (let ((input (game-input game)) (scene (game-scene game)))
     (cond ((input-pressed? input 'start)
-           (set! landed '())
-           (game-scene-set! game (update-scene scene entities: entities0)))
+           (game-scene-set! game (data-set (update-scene scene entities: entities0) #:landed '())))
           (else
-           (set! dropper-x (max 16 (min (- 464 12)
-                                        (+ dropper-x (if (input-held? input 'left) (- dropper-speed) 0)
-                                           (if (input-held? input 'right) dropper-speed 0)))))
+           (game-scene-set! game (data-set scene #:dropper-x
+                                           (max 16 (min (- 464 12)
+                                                        (+ (data-ref game #:dropper-x)
+                                                           (if (input-held? input 'left) (- dropper-speed) 0)
+                                                           (if (input-held? input 'right) dropper-speed 0))))))
            (when (input-pressed? input 'a)
-             (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene)))))
+             (game-scene-set! game (drop-crate (game-scene game) (data-ref game #:dropper-x) dropper-y)))
            ;; A click drops a crate centred on the pointer, inside the walls.
            (let ((m (mouse-world-position game)))
              (when (and m (input-pressed? input 'click))
                (let ((x (max 16 (min (- 464 12) (- (car m) 6))))
                      (y (max 16 (min (- 208 12) (- (cadr m) 6))))
                      (scene (game-scene game)))
-                 (game-scene-set! game (update-scene scene entities: (drop-crate (scene-entities scene) x y))))))))))
+                 (game-scene-set! game (drop-crate scene x y)))))))))
 
 (define (update game dt)
   (theme-from-the-start game)
@@ -221,7 +238,8 @@ it walks left."
   ;; The crates, bots and raft are drawn by the engine from their #:sprite.
   (let* ((entities (scene-entities (game-scene game)))
          (boxes (filter (lambda (e) (eq? (entity-ref e #:kind) 'box)) entities))
-         (at-rest (count (lambda (e) (memq (entity-ref e #:id) landed)) boxes))
+         (at-rest (count (lambda (e) (memq (entity-ref e #:id) (data-ref game #:landed))) boxes))
+         (dropper-x (data-ref game #:dropper-x))
          (hint "ARROWS MOVE  Z OR CLICK: A CRATE  RETURN RESET"))
     (draw-platforms! entities)
     ;; The dropper: where the next crate appears, and an arrow down.
@@ -254,7 +272,7 @@ it walks left."
 (define game
   (make-game title: "Downstroke — sandbox" width: 480 height: 240 frame-delay: 16
              input-map: (append (default-input-map) '((click "mouse:left")))
-             scene: (make-scene entities: entities0 tilemap: arena)
+             scene: (make-scene entities: entities0 tilemap: arena data: data0)
              update: update render: render
              input-script: '()))
 

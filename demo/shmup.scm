@@ -66,7 +66,6 @@
 ;;; ------------------------------------------------------------ bookkeeping
 (define demo-script "shmup.scm")
 (include "bookkeeping.scm")
-(define shots 0)                        ; bullets fired so far
 
 (define (note! game what) (note-at! (game-frame game) what))
 
@@ -85,9 +84,9 @@
                     (if (input-held? input 'right) ship-thrust 0))))
     (entity-set (entity-set ship #:x kept) #:vx (+ vx thrust))))
 
-(define (bullet-from ship)
-  (set! shots (+ shots 1))
-  (list #:id (string->symbol (format #f "bullet-~a" shots)) #:kind 'bullet
+(define (bullet-from ship k)
+  "The K-th bullet fired, from SHIP."
+  (list #:id (string->symbol (format #f "bullet-~a" k)) #:kind 'bullet
         #:x (+ (entity-ref ship #:x) 5) #:y (- (entity-ref ship #:y) 6) #:width 2 #:height 6
         #:vx 0 #:vy (- bullet-speed) #:sprite bullet-picture
         #:sensor? #t #:category 'bullet #:collides-with '(enemy)))
@@ -101,10 +100,15 @@
       (map (lambda (e) (entity-set e #:vx (- (entity-ref e #:vx)))) enemies)
       enemies))
 
-;;; Explosions are only drawn: (x y until-frame) of each enemy shot down,
-;;; kept out of the scene so they touch nothing.
-(define explosions '())
+;;; What the game remembers besides its entities is the scene's data, so a
+;;; rewind gives it back: the bullets fired so far (across restarts, so
+;;; each bullet's #:id is new) and the explosions. Explosions are only
+;;; drawn: (x y until-frame) of each enemy shot down, newest first, kept out
+;;; of the entities so they touch nothing.
+(define data0 (list #:shots 0 #:explosions '()))
 (define explosion-frames 12)
+
+(define (explosions-of game) (entity-ref (scene-data (game-scene game)) #:explosions))
 
 (define (flap enemies frame)
   ;; The formation beats its wings together, every 8 frames.
@@ -113,12 +117,17 @@
 
 (define (restart! game)
   ;; Return in a window: a new game, the ship and the whole formation back.
-  (set! explosions '())
-  (game-scene-set! game (update-scene (game-scene game) entities: (cons ship0 enemies0))))
+  (let ((scene (game-scene game)))
+    (game-scene-set! game (update-scene scene entities: (cons ship0 enemies0)
+                                        data: (entity-set (scene-data scene) #:explosions '())))))
 
 (define (update game dt)
   (theme-from-the-start game)
-  (set! explosions (filter (lambda (x) (> (caddr x) (game-frame game))) explosions))
+  ;; An explosion whose time is up is gone.
+  (let ((scene (game-scene game)))
+    (game-scene-set! game (update-scene scene data: (entity-set (scene-data scene) #:explosions
+                                                                (filter (lambda (x) (> (caddr x) (game-frame game)))
+                                                                        (explosions-of game))))))
   (if (input-pressed? (game-input game) 'start)
       (restart! game)
       (play! game dt)))
@@ -135,7 +144,8 @@
          (named (by-id entities))
          (ship (steer-ship input (find (kind-of 'ship) entities)))
          (fire? (input-pressed? input 'a))
-         (new-bullets (if fire? (list (bullet-from ship)) '()))
+         (shots (+ (entity-ref (scene-data scene) #:shots) (if fire? 1 0)))
+         (new-bullets (if fire? (list (bullet-from ship shots)) '()))
          ;; A new bullet starts where it was fired; the frame moves it next.
          (bullets (append (filter (kind-of 'bullet) entities) new-bullets))
          (enemies (flap (turn-formation (filter (kind-of 'enemy) entities)) (game-frame game))))
@@ -145,27 +155,28 @@
     ;; Each enemy is taken by the first bullet it met that no other enemy
     ;; took: the pairs come in list order, enemies before bullets.
     (let loop ((pairs (map (lambda (p) (cons (named (cdr p)) (named (car p)))) (scene-contacts scene)))
-               (spent '()) (hit '()) (score (entity-ref ship #:score)))
+               (spent '()) (hit '()) (score (entity-ref ship #:score))
+               (explosions (explosions-of game)))
       (cond
        ((null? pairs)
         (let ((kept (remove (lambda (b) (or (memq b spent) (<= (+ (entity-ref b #:y) (entity-ref b #:height)) 0)))
                             bullets)))
-          (game-scene-set! game (update-scene scene entities:
+          (game-scene-set! game (update-scene scene data: (list #:shots shots #:explosions explosions)
+                                              entities:
                                               (cons (entity-set ship #:score score)
                                                     (append (remove (lambda (e) (memq (entity-ref e #:id) hit))
                                                                     enemies)
                                                             kept))))))
        ((or (memq (caar pairs) spent) (memq (entity-ref (cdar pairs) #:id) hit))
-        (loop (cdr pairs) spent hit score))
+        (loop (cdr pairs) spent hit score explosions))
        (else
         (let ((bullet (caar pairs)) (enemy (cdar pairs)))
           (play-sound 'boom)
           (note! game (list 'hit (entity-ref enemy #:id) 'by (entity-ref bullet #:id)))
-          (set! explosions (cons (list (entity-ref enemy #:x) (entity-ref enemy #:y)
-                                       (+ (game-frame game) explosion-frames))
-                                 explosions))
           (loop (cdr pairs) (cons bullet spent) (cons (entity-ref enemy #:id) hit)
-                (+ score (entity-ref enemy #:points)))))))))
+                (+ score (entity-ref enemy #:points))
+                (cons (list (entity-ref enemy #:x) (entity-ref enemy #:y) (+ (game-frame game) explosion-frames))
+                      explosions))))))))
 
 
 ;;; Stars: fixed columns, drifting down at three speeds (half, one and one
@@ -199,7 +210,7 @@
          (ship (find (kind-of 'ship) entities))
          (left (count (kind-of 'enemy) entities)))
     (draw-stars! frame entities)
-    (for-each (lambda (x) (draw-sprite explosion-picture (car x) (- (cadr x) 4))) explosions)
+    (for-each (lambda (x) (draw-sprite explosion-picture (car x) (- (cadr x) 4))) (explosions-of game))
     (draw-label (format #f "SCORE ~a" (entity-ref ship #:score)) 4 4 'white)
     (let ((enemies (format #f "ENEMIES ~a" left)))
       (draw-label enemies (- screen-width 4 (text-width enemies)) 4 'green))
@@ -243,7 +254,7 @@
 
 (define game
   (make-game title: "Downstroke — shmup" width: screen-width height: screen-height frame-delay: 16
-             scene: (make-scene entities: (cons ship0 enemies0) tilemap: backdrop)
+             scene: (make-scene entities: (cons ship0 enemies0) tilemap: backdrop data: data0)
              update: update render: render
              input-script: input-script))
 
@@ -255,4 +266,5 @@
   ;; Headless or capturing: the scripted demo; in a window: until the player quits.
   (run! (script-number-argument 0 (if (eq? (display-mode) 'window) #f demo-frames)))
   (format #t "score: ~a, shots: ~a, sounds: ~s~%"
-          (entity-ref (car (scene-entities (game-scene game))) #:score) shots (game-sounds game)))
+          (entity-ref (car (scene-entities (game-scene game))) #:score)
+          (entity-ref (scene-data (game-scene game)) #:shots) (game-sounds game)))

@@ -81,13 +81,20 @@
 (define (axis-intent input minus plus speed)
   (+ (if (input-held? input minus) (- speed) 0) (if (input-held? input plus) speed 0)))
 
-(define last-intent '(0 . 0))           ; the (vx . vy) the player asked for last frame
-(define blocked '(#f . #f))             ; whether a wall stops it on x, on y
+(define (fresh-run start-frame)
+  "The scene's data for a run that starts at START-FRAME: what the run
+remembers from frame to frame, so a rewind gives it back too."
+  (list #:start-frame start-frame       ; the frame the run (re)started at
+        #:last-intent '(0 . 0)          ; the (vx . vy) the player asked for last frame
+        #:blocked '(#f . #f)))          ; whether a wall stopped it on x, on y last frame
 
-(define (report-walls! game player)
-  ;; A velocity we asked for that physics zeroed: the player is against a
-  ;; wall. Reported when that starts.
+(define (report-walls! game player run)
+  "Whether a wall stops PLAYER on x, on y, as a pair: a velocity asked for
+last frame (RUN's #:last-intent) that physics zeroed. Reported when that
+starts."
   (let* ((vx (entity-ref player #:vx 0)) (vy (entity-ref player #:vy 0))
+         (last-intent (entity-ref run #:last-intent))
+         (blocked (entity-ref run #:blocked))
          (bx? (and (not (zero? (car last-intent))) (zero? vx)))
          (by? (and (not (zero? (cdr last-intent))) (zero? vy))))
     (when (and bx? (not (car blocked)))
@@ -96,7 +103,7 @@
     (when (and by? (not (cdr blocked)))
       (note! game (list 'wall (if (positive? (cdr last-intent)) 'down 'up)
                         'y (entity-ref player #:y))))
-    (set! blocked (cons bx? by?))))
+    (cons bx? by?)))
 
 (define (dress player vx vy frame)
   "PLAYER with its picture: facing the way it last walked sideways
@@ -109,15 +116,11 @@
                              player-walking
                              player-standing))))
 
-(define start-frame 0)                  ; the frame the run (re)started at
-
 (define (restart! game)
   ;; Return in a window: the player back at its spawn point, every coin back.
-  (set! last-intent '(0 . 0))
-  (set! blocked '(#f . #f))
-  (set! start-frame (+ (game-frame game) 1))
   (game-scene-set! game (update-scene (game-scene game)
-                                      entities: (cons (dress player0 0 0 0) (append coins0 (list guard0))))))
+                                      entities: (cons (dress player0 0 0 0) (append coins0 (list guard0)))
+                                      data: (fresh-run (+ (game-frame game) 1)))))
 
 (define (update game dt)
   (theme-from-the-start game)
@@ -135,18 +138,21 @@
          (vy (axis-intent input 'up 'down speed))
          (taken (scene-query-rect scene (entity-ref player #:x) (entity-ref player #:y)
                                   (entity-ref player #:width) (entity-ref player #:height)
-                                  '(#:type . coin))))
-    (report-walls! game player)
+                                  '(#:type . coin)))
+         ;; Walls first, then coins: the order the events are noted in.
+         (blocked (report-walls! game player (scene-data scene))))
     (for-each (lambda (c)
                 (play-sound 'coin)
                 (note! game (list 'coin (entity-ref c #:id))))
               taken)
-    (set! last-intent (cons vx vy))
     (let* ((player (entity-set player #:score (fold + (entity-ref player #:score 0)
                                                      (map (lambda (c) (entity-ref c #:value 1)) taken))))
            (player (entity-set (entity-set player #:vx vx) #:vy vy))
            (player (dress player vx vy (game-frame game))))
-      (game-scene-set! game (update-scene scene entities:
+      (game-scene-set! game (update-scene scene
+                                          data: (list #:start-frame (entity-ref (scene-data scene) #:start-frame)
+                                                      #:last-intent (cons vx vy) #:blocked blocked)
+                                          entities:
                                           (cons player (append (remove (lambda (c) (memq c taken)) coins)
                                                                (map (lambda (g) (patrol game scene g))
                                                                     (entities-of-type scene 'guard)))))))))
@@ -179,7 +185,7 @@
     (cond ((zero? left)
            (draw-label "ALL COINS!" (centred-x "ALL COINS!" width scale: 3) 90 'yellow scale: 3)
            (draw-label "RETURN: PLAY AGAIN" (centred-x "RETURN: PLAY AGAIN" width) 120 'white))
-          ((< (- (game-frame game) start-frame) 240)   ; the first 4 s: how to play
+          ((< (- (game-frame game) (entity-ref (scene-data (game-scene game)) #:start-frame)) 240)   ; the first 4 s: how to play
            (draw-label "ARROWS WALK - PICK UP EVERY COIN" (centred-x "ARROWS WALK - PICK UP EVERY COIN" width) (- (game-height game) 12) 'white)))))
 
 (define (render game)
@@ -195,8 +201,6 @@
                 frame (entity-ref p #:x) (entity-ref p #:y) (entity-ref p #:vx) (entity-ref p #:vy)
                 (entity-ref p #:score) (length (entities-of-type (game-scene game) 'coin)))))))
 
-;;; Built-in input: right to the inner wall, down to the bottom wall, left,
-;;; up, then diagonally across the room and over to the last coin.
 ;;; Built-in input: right to the inner wall, down to the bottom wall, left,
 ;;; up, then diagonally into the room, right under the inner wall to the
 ;;; east wall, and up.
@@ -219,7 +223,7 @@
 (define game
   (make-game title: "Downstroke — top-down" width: 320 height: 240 frame-delay: 16
              scene: (make-scene entities: (cons player0 (append coins0 (list guard0))) tilemap: room
-                                camera-target: 'player)
+                                camera-target: 'player data: (fresh-run 0))
              update: update render: render
              input-script: input-script))
 
