@@ -40,7 +40,7 @@
 ;;; In a window (downstroke --window demo/platformer.scm) it runs until the
 ;;; player quits.
 ;;; Loaded from elsewhere (tests/scheme/demos-test.scm) it only defines
-;;; `game', `run!', `events', `history' and friends.
+;;; `game', `run!', `events' and friends.
 (use-modules (ice-9 format) (srfi srfi-1))
 ;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
 (add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
@@ -110,20 +110,20 @@
 (define *stomp-bounce* 8)               ; px/frame up off a stomped walker
 (define lift-to-x (entity-ref (map-object "lift") #:to-x))
 
-;;; ------------------------------------------------------------ bookkeeping
-(define demo-script "platformer.scm")
-(include "bookkeeping.scm")
+;;; ------------------------------------------------------------ what happened
+(define trace? (main-script? "platformer.scm"))   ; headless as the host's script: print as it goes
+
+;;; What happened, (frame . what), newest first: printed when tracing, and
+;;; kept for a REPL looking back and for the soak bench, which checks that
+;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
+;;; The tests watch the frames themselves, through a frame hook.
+(define events (make-bounded-log))
+
+(define (note-at! frame what)
+  (set! events (bounded-log-push events (cons frame what) 500))
+  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
 
 (define (note! game what) (note-at! (game-frame game) what))
-
-(define (player-at frame)
-  "The player as it was at the end of FRAME, or #f when FRAME is not one of
-the last 1000."
-  (let ((entities (entities-at frame))) (and entities (car entities))))
-
-(define (lift-at frame)
-  "The lift as it was at the end of FRAME, or #f."
-  (entity-at frame 'lift))
 
 ;;; ------------------------------------------------------------ the game
 (define (fresh-run start-frame)
@@ -341,14 +341,13 @@ removed, and how many there were."
 
 (define (render game)
   ;; Runs after camera-follow! (which keeps the view inside the map).
-  ;; Draws the goal and the HUD (when the game has a display), remembers the
-  ;; player and, headless, prints a line every 20 frames (not again while
+  ;; Draws the goal and the HUD (when the game has a display) and,
+  ;; headless, prints a line every 20 frames (not again while
   ;; the game stands paused on it).
   (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (player (car (scene-entities (game-scene game))))
         (camera (scene-camera (game-scene game))))
-    (remember! frame (scene-entities (game-scene game)))
     (when (and trace? (zero? (modulo frame 20)) (not (game-paused? game)))
       (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)~a  camera (~a, ~a)~%"
               frame (entity-ref player #:x) (entity-ref player #:y)

@@ -111,9 +111,18 @@ it walks left."
    (list (ball 'ball-1 40 47 2 1)
          (ball 'ball-2 420 40 -1 0.6))))
 
-;;; ------------------------------------------------------------ bookkeeping
-(define demo-script "sandbox.scm")
-(include "bookkeeping.scm")
+;;; ------------------------------------------------------------ what happened
+(define trace? (main-script? "sandbox.scm"))   ; headless as the host's script: print as it goes
+
+;;; What happened, (frame . what), newest first: printed when tracing, and
+;;; kept for a REPL looking back and for the soak bench, which checks that
+;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
+;;; The tests watch the frames themselves, through a frame hook.
+(define events (make-bounded-log))
+
+(define (note-at! frame what)
+  (set! events (bounded-log-push events (cons frame what) 500))
+  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
 
 (define (note! game what) (note-at! (game-frame game) what))
 
@@ -252,12 +261,10 @@ it walks left."
 
 (define (render game)
   ;; Draws the platforms, the dropper and the HUD (when the game has a
-  ;; display), remembers the entities and, headless, prints a line every 20
-  ;; frames.
+  ;; display) and, headless, prints a line every 20 frames.
   (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
-    (remember! frame entities)
     (when (and trace? (zero? (modulo frame 20)))
       (format #t "frame ~3d:" frame)
       (for-each (lambda (e)

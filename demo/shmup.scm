@@ -63,9 +63,18 @@
 (define enemies0
   (append-map (lambda (row) (map (lambda (col) (enemy row col)) (iota 5))) (iota 2)))
 
-;;; ------------------------------------------------------------ bookkeeping
-(define demo-script "shmup.scm")
-(include "bookkeeping.scm")
+;;; ------------------------------------------------------------ what happened
+(define trace? (main-script? "shmup.scm"))   ; headless as the host's script: print as it goes
+
+;;; What happened, (frame . what), newest first: printed when tracing, and
+;;; kept for a REPL looking back and for the soak bench, which checks that
+;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
+;;; The tests watch the frames themselves, through a frame hook.
+(define events (make-bounded-log))
+
+(define (note-at! frame what)
+  (set! events (bounded-log-push events (cons frame what) 500))
+  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
 
 (define (note! game what) (note-at! (game-frame game) what))
 
@@ -222,11 +231,10 @@
 
 (define (render game)
   ;; Draws the stars, explosions and HUD (when the game has a display),
-  ;; remembers the entities and, headless, prints a line every 20 frames.
+  ;; and, headless, prints a line every 20 frames.
   (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
-    (remember! frame entities)
     (when (and trace? (zero? (modulo frame 20)))
       (let ((ship (find (kind-of 'ship) entities)))
         (format #t "frame ~3d: ship x ~a  enemies ~a (first at ~a)  bullets ~a  score ~a~%"

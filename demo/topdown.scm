@@ -68,14 +68,20 @@
 (define (entities-of-type scene type)
   (filter (lambda (e) (eq? (entity-ref e #:type) type)) (scene-entities scene)))
 
-;;; ------------------------------------------------------------ bookkeeping
-(define demo-script "topdown.scm")
-(include "bookkeeping.scm")
+;;; ------------------------------------------------------------ what happened
+(define trace? (main-script? "topdown.scm"))   ; headless as the host's script: print as it goes
+
+;;; What happened, (frame . what), newest first: printed when tracing, and
+;;; kept for a REPL looking back and for the soak bench, which checks that
+;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
+;;; The tests watch the frames themselves, through a frame hook.
+(define events (make-bounded-log))
+
+(define (note-at! frame what)
+  (set! events (bounded-log-push events (cons frame what) 500))
+  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
 
 (define (note! game what) (note-at! (game-frame game) what))
-
-(define (player-at frame)
-  (let ((entities (entities-at frame))) (and entities (car entities))))
 
 ;;; ------------------------------------------------------------ the game
 (define (axis-intent input minus plus speed)
@@ -189,12 +195,11 @@ starts."
            (draw-label "ARROWS WALK - PICK UP EVERY COIN" (centred-x "ARROWS WALK - PICK UP EVERY COIN" width) (- (game-height game) 12) 'white)))))
 
 (define (render game)
-  ;; Draws the HUD (when the game has a display), remembers the entities
-  ;; and, headless, prints a line every 20 frames.
+  ;; Draws the HUD (when the game has a display) and, headless, prints a
+  ;; line every 20 frames.
   (when (current-display) (draw-hud! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
-    (remember! frame entities)
     (when (and trace? (zero? (modulo frame 20)))
       (let ((p (car entities)))
         (format #t "frame ~3d: player (~a, ~a) v (~a, ~a)  score ~a  coins left ~a~%"

@@ -44,9 +44,18 @@
 (load-demo-sounds! 'hit)
 (load-demo-music!)
 
-;;; ------------------------------------------------------------ bookkeeping
-(define demo-script "tweens.scm")
-(include "bookkeeping.scm")
+;;; ------------------------------------------------------------ what happened
+(define trace? (main-script? "tweens.scm"))   ; headless as the host's script: print as it goes
+
+;;; What happened, (frame . what), newest first: printed when tracing, and
+;;; kept for a REPL looking back and for the soak bench, which checks that
+;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
+;;; The tests watch the frames themselves, through a frame hook.
+(define events (make-bounded-log))
+
+(define (note-at! frame what)
+  (set! events (bounded-log-push events (cons frame what) 500))
+  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
 
 (define (note! what)
   ;; `game' is defined below; on-complete procedures run inside it.
@@ -179,12 +188,11 @@
       (draw-label text (- (game-width game) 4 (text-width text)) 4 'white))))
 
 (define (render game)
-  ;; Draws the scenery and HUD (when the game has a display), remembers the
-  ;; entities and, headless, prints a line every 20 frames.
+  ;; Draws the scenery and HUD (when the game has a display) and, headless,
+  ;; prints a line every 20 frames.
   (when (current-display) (draw! game))
   (let ((frame (game-frame game))
         (entities (scene-entities (game-scene game))))
-    (remember! frame entities)
     (when (and trace? (zero? (modulo frame 20)))
       (let ((get (lambda (id key) (show (entity-ref (find (lambda (e) (eq? (entity-ref e #:id) id)) entities) key)))))
         (format #t "frame ~3d: slider x ~a  bouncer y ~a  pulse w ~a  repeater y ~a  looper x ~a  delayed x ~a  fader ~a  walker x ~a~%"

@@ -1,6 +1,7 @@
 ;;; The demos (demo/*.scm), each loaded into a fresh module and run headless
 ;;; with its built-in input script, then checked with exact values; and their
-;;; maps (demo/maps/*.tmx, written by demo/maps/make_maps.py).
+;;; maps (demo/maps/*.tmx, written by demo/maps/make_maps.py). The demos keep
+;;; no record of their frames: the test watches them through a frame hook.
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing))
 
 (load "support.scm")   ; demo-dir
@@ -16,10 +17,40 @@ demos' top-level names stay in that module."
        (load (string-append demo-dir "/" name))))
     m))
 
+(define seen (make-weak-key-hash-table)) ; demo module → (frame → its entities)
+
+(define (watch! m thunk)
+  "Call THUNK, which runs the game of demo module M, with a frame hook that
+records what each frame ended with: the hook runs at the start of a frame
+(and once more after the last), so it sees the one before ended. A frame
+played again (a rewind, a paused tick) is recorded again."
+  (let* ((game (module-ref m 'game))
+         (frames (or (hashq-ref seen m) (let ((t (make-hash-table))) (hashq-set! seen m t) t)))
+         (hook (lambda () (hashv-set! frames (- (game-frame game) 1) (scene-entities (game-scene game))))))
+    (add-frame-hook! hook)
+    (dynamic-wind (lambda () #t) thunk (lambda () (remove-frame-hook! hook)))))
+
+(define (run! m frames)
+  "Run demo module M's game up to frame FRAMES, watched."
+  (watch! m (lambda () ((module-ref m 'run!) frames))))
+
+(define (entities-at m frame)
+  "What FRAME of demo module M's game ended with, or #f when it did not run."
+  (hashv-ref (or (hashq-ref seen m) (make-hash-table)) frame #f))
+
+(define (entity-at m frame id)
+  "The entity with #:id ID as FRAME ended, or #f."
+  (let ((entities (entities-at m frame)))
+    (and entities (find (lambda (e) (eq? (entity-ref e #:id) id)) entities))))
+
+(define (player-at m frame)
+  "The first entity (the player) as FRAME ended, or #f."
+  (let ((entities (entities-at m frame))) (and entities (car entities))))
+
 (define (run-demo name . frames)
   "demo/NAME loaded and run for FRAMES frames (its own `demo-frames' if none)."
   (let ((m (load-demo name)))
-    ((module-ref m 'run!) (if (pair? frames) (car frames) (module-ref m 'demo-frames)))
+    (run! m (if (pair? frames) (car frames) (module-ref m 'demo-frames)))
     m))
 
 (define (ref m name) (module-ref m name))
@@ -127,10 +158,10 @@ demos' top-level names stay in that module."
 ;;; ================================================================ platformer
 ;;; Ground top: row 11, y 176; the player is 12×16, so standing y = 160.
 (define platformer (load-demo "platformer.scm"))
-(define (p-at k) ((ref platformer 'player-at) k))
-((ref platformer 'run!) 200)
+(define (p-at k) (player-at platformer k))
+(run! platformer 200)
 (define camera-at-200 (let ((c (scene-camera (game-scene (game-of platformer))))) (cons (camera-x c) (camera-y c))))
-((ref platformer 'run!) (ref platformer 'demo-frames))
+(run! platformer (ref platformer 'demo-frames))
 
 (test-group "platformer"
   ;; Spawned at y 100, falling: after frame k, y = 100 + (k+1)(k+2)/2.
@@ -152,9 +183,9 @@ demos' top-level names stay in that module."
   ;; The coins and the goal are sensors: entered when the frame pairs them
   ;; with the player; coin-1 (8×8 at 100, 164) meets the 12 px player at x 91.
   (test-equal "coin-1 is there until frame 41, gone at 42; coin-5, out of reach, stays"
-    '(#t #f #t) (list (and (by-id 'coin-1 ((ref platformer 'entities-at) 41)) #t)
-                      (and (by-id 'coin-1 ((ref platformer 'entities-at) 42)) #t)
-                      (and (by-id 'coin-5 ((ref platformer 'entities-at) 700)) #t)))
+    '(#t #f #t) (list (and (by-id 'coin-1 (entities-at platformer 41)) #t)
+                      (and (by-id 'coin-1 (entities-at platformer 42)) #t)
+                      (and (by-id 'coin-5 (entities-at platformer 700)) #t)))
   (test-equal "the sensors never moved the player: x 91 at frame 42, as it runs 3 px a frame from 25"
     91 (entity-ref (p-at 42) #:x))
   ;; Jump pressed at frame 50 (on the ground): the next frame's vy = -15 + 1.
@@ -209,7 +240,7 @@ demos' top-level names stay in that module."
             (map (lambda (c) (tilemap-gid level 0 c 8)) '(71 72 73))
             (map (lambda (c) (tilemap-cell-solid? now c 8)) '(71 72 73)))))
   ;; The lift: 48×8 at y 176, x 1248 to 1392 and back at 2 px a frame.
-  (define (l-x k) (entity-ref ((ref platformer 'lift-at) k) #:x))
+  (define (l-x k) (entity-ref (entity-at platformer k 'lift) #:x))
   (test-equal "the lift runs 1248 → 1392 → 1248" '(1250 1392 1390 1248 1250)
     (map l-x '(0 71 72 143 144)))
   (test-equal "stepped on as it left the near end" '((1236 1248) (1249 1254))
@@ -251,7 +282,7 @@ demos' top-level names stay in that module."
 ;;; frame 123, so the scene frame 120 started from holds 2, and a rewind to
 ;;; it gives 2 back; playing on picks coin-3 up again, at the same frame.
 (define rewound (load-demo "platformer.scm"))
-((ref rewound 'run!) 130)
+(run! rewound 130)
 (define (coins-of m) (entity-ref (scene-data (game-scene (game-of m))) #:coins))
 (test-group "platformer: the coins in the scene data"
   (test-equal "the whole demo picks up four" 4 (coins-of platformer))
@@ -259,7 +290,7 @@ demos' top-level names stay in that module."
   (test-equal "a rewind of 10 frames: frame 120, two coins, coin-3 back in the scene" '(120 2 #t)
     (list (game-rewind! (game-of rewound) 10) (coins-of rewound)
           (and (by-id 'coin-3 (entities-of rewound)) #t)))
-  ((ref rewound 'run!) 130)
+  (run! rewound 130)
   (test-equal "played on: coin-3 again at frame 123, three coins" '(3 (123 coin coin-3))
     (list (coins-of rewound) (last (filter (lambda (e) (equal? (cdr e) '(coin coin-3))) (events-of rewound))))))
 
@@ -267,12 +298,12 @@ demos' top-level names stay in that module."
 ;;; (P is pressed again in tick 9, in the paused: hook), and the game goes on
 ;;; from frame 6: it still lands at frame 10, four ticks later.
 (define paused (load-demo "platformer.scm"))
-(play (game-of paused) frames: 12 input: '((0) (5 pause) (6) (9 pause) (10)))
+(watch! paused (lambda () (play (game-of paused) frames: 12 input: '((0) (5 pause) (6) (9 pause) (10)))))
 (test-group "platformer: pause"
   (test-equal "paused after frame 5, resumed at frame 6, landed at frame 10"
     '((5 . paused) (6 . resumed) (10 . landed)) (events-of paused))
   (test-equal "the fall is that of a game never paused: frames 5 to 10"
-    '(121 128 136 145 155 160) (map (lambda (k) (entity-ref ((ref paused 'player-at) k) #:y)) (iota 6 5)))
+    '(121 128 136 145 155 160) (map (lambda (k) (entity-ref (player-at paused k) #:y)) (iota 6 5)))
   (test-equal "twelve frames in sixteen ticks, not paused" '(12 16 #f)
     (list (game-frame (game-of paused)) (length (game-input-log (game-of paused))) (game-paused? (game-of paused)))))
 
@@ -282,12 +313,12 @@ demos' top-level names stay in that module."
 (define (platformer-with-player-at x y frames)
   (let* ((m (load-demo "platformer.scm")) (g (game-of m)) (s (game-scene g)) (es (scene-entities s)))
     (game-scene-set! g (update-scene s entities: (cons (entity-set (entity-set (car es) #:x x) #:y y) (cdr es))))
-    ((ref m 'run!) frames)
+    (run! m frames)
     m))
 (test-group "platformer: the walker"
   (let* ((m (platformer-with-player-at 1316 150 14))
-         (p (lambda (k) ((ref m 'player-at) k)))
-         (walker (lambda (k) ((ref m 'entity-at) k 'walker))))
+         (p (lambda (k) (player-at m k)))
+         (walker (lambda (k) (entity-at m k 'walker))))
     (test-equal "falling on it: frame 8 the player's #:touching says its down side met it"
       '((() 1312) (((walker . down)) #f))
       (map (lambda (k) (list (entity-ref (p k) #:touching) (and (walker k) (entity-ref (walker k) #:x)))) '(7 8)))
@@ -297,12 +328,12 @@ demos' top-level names stay in that module."
   (let* ((m (platformer-with-player-at 1290 208 19)))
     (test-equal "standing in its way: it walks into the player's right side at frame 18, and the run starts again"
       '(((0 . landed) (18 . hurt)) (40 100) (1320 210))
-      (list (events-of m) (pick ((ref m 'player-at) 18) #:x #:y)
-            (pick ((ref m 'entity-at) 18 'walker) #:x #:y)))))
+      (list (events-of m) (pick (player-at m 18) #:x #:y)
+            (pick (entity-at m 18 'walker) #:x #:y)))))
 
 ;;; ================================================================ top-down
 (define topdown (run-demo "topdown.scm"))
-(define (t-at k) ((ref topdown 'player-at) k))
+(define (t-at k) (player-at topdown k))
 (define (t-xy k) (pick (t-at k) #:x #:y))
 
 (test-group "topdown"
@@ -345,7 +376,7 @@ demos' top-level names stay in that module."
 
 ;;; ================================================================ sandbox
 (define sandbox (run-demo "sandbox.scm"))
-(define (s-at k id) ((ref sandbox 'entity-at) k id))
+(define (s-at k id) (entity-at sandbox k id))
 (define sandbox-last (- (ref sandbox 'demo-frames) 1))
 
 (test-group "sandbox"
@@ -400,7 +431,7 @@ demos' top-level names stay in that module."
 
 ;;; ================================================================ shmup
 (define shmup (run-demo "shmup.scm"))
-(define (sh-at k) ((ref shmup 'entities-at) k))
+(define (sh-at k) (entities-at shmup k))
 (define (kind k entities) (filter (lambda (e) (eq? (entity-ref e #:kind) k)) entities))
 
 (test-group "shmup"
@@ -444,7 +475,7 @@ demos' top-level names stay in that module."
 
 ;;; ================================================================ tweens
 (define tweens (run-demo "tweens.scm" 120))
-(define (tw k id key) (entity-ref ((ref tweens 'entity-at) k id) key))
+(define (tw k id key) (entity-ref (entity-at tweens k id) key))
 (define (tween-value start end name elapsed duration)
   (+ start (* (- end start) (ease name (/ elapsed duration)))))
 (define (near? a b) (< (abs (- a b)) 1e-9))
