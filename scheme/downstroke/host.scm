@@ -381,7 +381,7 @@
     (hook-time-limit (@ (downstroke repl-server) call-with-hook-time-limit))
     (frame-pacing #t)
     ;; Its author ends it from the REPL: running on is what was asked for.
-    ((@@ (downstroke engine) game-served?) #t)
+    ((@ (downstroke headless) game-served?) #t)
     (remove-socket-on-signals! socket)))
 
 ;; The signals that end a served game from outside (Ctrl-C in its terminal,
@@ -597,7 +597,7 @@ templates `downstroke new' copies. Returns the exit status."
                       (cond ((eq? socket 'refused) 2)
                             (else
                              (when socket (serve-repl! socket (repl-timeout opts)))
-                             (when frames ((@@ (downstroke engine) headless-frame-limit) (string->number frames)))
+                             (when frames ((@ (downstroke headless) headless-frame-limit) (string->number frames)))
                              (let ((status (call-with-timeout
                                             (and timeout (string->number timeout)) (car rest)
                                             (lambda ()

@@ -9,7 +9,10 @@
   #:use-module (ice-9 format)
   #:use-module (downstroke engine)
   #:use-module (downstroke render)
-  #:use-module ((downstroke native) #:select (%display-compare-png))
+  #:use-module (downstroke native)
+  #:use-module ((downstroke game) #:select (game-input-script-set! game-display current-game))
+  #:use-module ((downstroke input) #:select (check-input-script))
+  #:use-module ((downstroke drawing) #:select (draw-game!))
   #:use-module (downstroke tool-files)
   #:use-module ((ice-9 textual-ports) #:select (get-string-n))
   #:re-export (record-input read-input-script)
@@ -23,8 +26,8 @@ stopped), with INPUT as its input script when given (a list, or the file
 record-input wrote), and return it."
   (when input
     (let ((script (if (string? input) (read-input-script input) input)))
-      ((@@ (downstroke engine) check-input-script) "play" script)
-      ((@@ (downstroke engine) game-input-script-set!) game script)))
+      (check-input-script "play" script)
+      (game-input-script-set! game script)))
   (parameterize ((display-mode 'headless))
     (game-run! game #:frames frames))
   game)
@@ -55,9 +58,9 @@ With DOWNSTROKE_UPDATE_GOLDEN=1 in the environment, write FILE instead."
          (scm-error 'misc-error "check-frame" "no golden picture ~S (DOWNSTROKE_UPDATE_GOLDEN=1 writes it)"
                     (list file) #f))
         (else
-         ((@@ (downstroke engine) draw-game!) game)
+         (draw-game! game)
          (let* ((actual (sibling file ".actual")) (diff (sibling file ".diff"))
-                (r (%display-compare-png ((@@ (downstroke engine) game-display) game) file actual diff)))
+                (r (%display-compare-png (game-display game) file actual diff)))
            (cond ((not r) #t)
                  ((eq? (car r) 'size)
                   (scm-error 'misc-error "check-frame" "the frame is ~Ax~A, ~S is ~Ax~A; see ~S"
@@ -160,7 +163,7 @@ and exits. Returns 0."
     (set-port-encoding! port "UTF-8")
     (sigaction SIGTERM
       (lambda (sig)
-        (let ((game ((@@ (downstroke engine) current-game))))
+        (let ((game (current-game)))
           (send port (list 'timeout (and game (game-frame game))))
           (unless (zero? (port-column out)) (newline out))
           (force-output out)
