@@ -1,15 +1,13 @@
-;;; (downstroke frame-hooks) — procedures called at the start of every frame
-;;; of every game (the host polls its REPL server from one), and whether a
-;;; headless run keeps to wall-clock time. docs/engine.org, "Frame hooks".
+;;; (downstroke frame-hooks) — procedures of no arguments called at the
+;;; start of every frame of every game, on the game's thread (the host polls
+;;; its REPL server from one), and whether a headless run keeps to
+;;; wall-clock time. docs/engine.org, "Frame hooks".
 (define-module (downstroke frame-hooks)
   #:use-module ((srfi srfi-1) #:select (delete))
   #:use-module (downstroke arity)
   #:use-module ((downstroke game) #:select (game-frame))
   #:use-module (downstroke hook-errors)
   #:export (add-frame-hook! remove-frame-hook! run-frame-hooks! frame-pacing))
-
-;;; Procedures of no arguments called once at the start of every frame on the
-;;; game's thread: the host polls its REPL server from here.
 
 (define frame-hooks '())
 (define (add-frame-hook! proc)

@@ -23,7 +23,8 @@
 
 ;; The most frames one headless game-run! runs, counted from the frame it
 ;; starts at, or #f: the host's --frames N. In a window the player ends it.
-;; This and game-served? are the host's, not a game's: not exported.
+;; This and game-served? are the host's, not a game's: (downstroke) does
+;; not export them.
 (define headless-frame-limit (make-parameter #f))
 
 ;; #t while a REPL is served into the game (the host's --repl-server and

@@ -9,7 +9,8 @@
   #:use-module (srfi srfi-9)
   #:use-module (downstroke world)
   #:use-module (downstroke game)
-  #:export (map-bindings bindings-clicks
+  #:use-module (downstroke native)
+  #:export (default-input-map map-bindings bindings-clicks
             make-input input-held-list input-previous-list
             input-held? input-pressed? input-released?
             mouse-element input-mouse mouse-world-position
@@ -187,3 +188,11 @@ picture."
 (define (input-held-actions input)
   "The list of actions held in INPUT's frame: what an input log records."
   (input-held-list input))
+
+(define (default-input-map)
+  "The keys and controller inputs bound to each action when make-game has no
+input-map:, as ((action name …) …): arrows or WASD move, Z or Space is a,
+X is b, Return is start, Backspace is select, Escape quits; a controller's
+d-pad or left stick moves and its A, B, Start and Back buttons act. In a
+build without the renderer there are no inputs: it is ()."
+  (%default-input-map))

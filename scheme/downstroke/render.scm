@@ -1,15 +1,22 @@
-;;; (downstroke render) — drawing from a game's render: procedure, sounds,
-;;; and how the host asked frames to be shown (headless, a window, captures).
+;;; (downstroke render) — drawing from a game's render: procedure, and how
+;;; the host asked frames to be shown (headless, a window, captures); it
+;;; also offers the loading of sounds ((downstroke sound)) and the default
+;;; input map ((downstroke input)). docs/render.org, "Drawing from =render:=".
 (define-module (downstroke render)
   #:use-module (downstroke native)
   #:use-module ((downstroke entity) #:select (entity-set))
+  #:use-module ((downstroke sound) #:select (load-sound load-music))
+  #:use-module ((downstroke input) #:select (default-input-map))
   #:export (renderer-available? display-mode capture-directory window-scale window-fullscreen frame-log-file
             record-file
             debug-draw-default
-            current-display default-input-map
+            current-display
             draw-rect draw-line draw-sprite draw-text draw-label text-width
-            color-rgba load-sound load-music
-            entity-animate))
+            color-rgba
+            entity-animate)
+  ;; Sounds are (downstroke sound)'s and input maps (downstroke input)'s;
+  ;; this module has offered them since before those were split out.
+  #:re-export (default-input-map load-sound load-music))
 
 (define (renderer-available?)
   "Whether this build can draw (it was built with SDL2)."
@@ -38,14 +45,6 @@
 
 ;; The display of the game being run: where draw-* queue their commands.
 (define current-display (make-parameter #f))
-
-(define (default-input-map)
-  "The keys and controller inputs bound to each action when make-game has no
-input-map:, as ((action name …) …): arrows or WASD move, Z or Space is a,
-X is b, Return is start, Backspace is select, Escape quits; a controller's
-d-pad or left stick moves and its A, B, Start and Back buttons act. In a
-build without the renderer there are no inputs: it is ()."
-  (%default-input-map))
 
 (define named-colors
   ;; The native table (src/render/color.hpp), which #:color reads too; asked
@@ -122,34 +121,3 @@ and the frame drawn, so rewinding shows it again as it was."
     (scm-error 'wrong-type-arg "entity-animate" "frame: expected an exact integer (a frame number), got ~S"
                (list frame) #f))
   (entity-set (entity-set entity #:animation animation) #:animation-start frame))
-
-;;; A file a build without the renderer can only check is there.
-(define (check-sound-file who what name file)
-  (cond ((not (symbol? name))
-         (scm-error 'wrong-type-arg who "name: expected a symbol, got ~S" (list name) #f))
-        ((not (and (string? file) (file-exists? file) (eq? 'regular (stat:type (stat file)))))
-         (scm-error 'misc-error who (string-append what " ~S: no such file") (list file) #f))))
-
-(define (load-music name file)
-  "Open FILE as the music NAME, a symbol, for play-music: Ogg Vorbis, WAV,
-FLAC, MP3, MIDI, or a MOD, XM, S3M or IT module, recognised by its bytes
-(not its name). The file is read whole, within its format's bound (64 MiB
-streamed, 32 MiB a module, 4 MiB MIDI: docs/limits.org, \"Music\"), and
-decoded from memory as it plays. Headless runs open it too (a missing,
-unreadable or oversized file, another format, or a WAV or OGG whose
-header is broken, is an error naming it at once) but play nothing."
-  (if (renderer-available?)
-      (%load-music name file)
-      (check-sound-file "load-music" "music" name file)))
-
-(define (load-sound name file)
-  "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.
-Headless runs decode it too (so a bad file is found at once) but play
-nothing. A missing, unreadable or undecodable file, or one past the
-bounds of docs/limits.org (\"Sounds\"), is an error naming it. In a build
-without the renderer it only checks that FILE is a file."
-  (cond ((renderer-available?) (%load-sound name file))
-        ((not (symbol? name))
-         (scm-error 'wrong-type-arg "load-sound" "name: expected a symbol, got ~S" (list name) #f))
-        ((not (and (string? file) (file-exists? file) (eq? 'regular (stat:type (stat file)))))
-         (scm-error 'misc-error "load-sound" "sound ~S: no such file" (list file) #f))))

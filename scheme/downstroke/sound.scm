@@ -5,9 +5,8 @@
 (define-module (downstroke sound)
   #:use-module (downstroke native)
   #:use-module (downstroke history)
-  #:use-module ((downstroke render) #:select (renderer-available?))
   #:use-module (downstroke game)
-  #:export (game-sounds play-sound game-music play-music stop-music
+  #:export (load-sound load-music game-sounds play-sound game-music play-music stop-music
             music-volume-set! sound-volume-set!))
 
 ;; A game that runs for hours must not keep every sound it ever played.
@@ -28,7 +27,7 @@ game-sounds) and, when a window is open and load-sound loaded it, heard."
       (game-sound-log-set! game (bounded-log-push (game-sound-log game)
                                                   (cons (game-frame game) name) *sounds-kept*)))
     ;; Heard only with a window open; a sound never loaded is only recorded.
-    (when (and (symbol? name) (renderer-available?)) (%play-sound name))))
+    (when (and (symbol? name) (%renderer?)) (%play-sound name))))
 
 (define (game-music game)
   "The music events lately, oldest first, as (frame . event): (play NAME
@@ -63,22 +62,53 @@ a window is open. #f when no music of that name was loaded."
     (scm-error 'wrong-type-arg "play-music" "name: expected a symbol, got ~S" (list name) #f))
   (check-fade "play-music" "fade-in" fade-in)
   (note-music! (list 'play name (and loop? #t) fade-in))
-  (and (renderer-available?) (%play-music name (and loop? #t) fade-in)))
+  (and (%renderer?) (%play-music name (and loop? #t) fade-in)))
 
 (define* (stop-music #:key (fade-out 0))
   "Stop the music, fading out over FADE-OUT ms."
   (check-fade "stop-music" "fade-out" fade-out)
   (note-music! (list 'stop fade-out))
-  (when (renderer-available?) (%stop-music fade-out)))
+  (when (%renderer?) (%stop-music fade-out)))
 
 (define (music-volume-set! v)
   "The music's volume, from 0 (silent) to 1 (as recorded, the default)."
   (check-volume "music-volume-set!" v)
   (note-music! (list 'music-volume v))
-  (when (renderer-available?) (%set-volume! 'music v)))
+  (when (%renderer?) (%set-volume! 'music v)))
 
 (define (sound-volume-set! v)
   "Every sound's volume, from 0 (silent) to 1 (as recorded, the default)."
   (check-volume "sound-volume-set!" v)
   (note-music! (list 'sound-volume v))
-  (when (renderer-available?) (%set-volume! 'sound v)))
+  (when (%renderer?) (%set-volume! 'sound v)))
+
+;;; A file a build without the renderer can only check is there.
+(define (check-sound-file who what name file)
+  (cond ((not (symbol? name))
+         (scm-error 'wrong-type-arg who "name: expected a symbol, got ~S" (list name) #f))
+        ((not (and (string? file) (file-exists? file) (eq? 'regular (stat:type (stat file)))))
+         (scm-error 'misc-error who (string-append what " ~S: no such file") (list file) #f))))
+
+(define (load-music name file)
+  "Open FILE as the music NAME, a symbol, for play-music: Ogg Vorbis, WAV,
+FLAC, MP3, MIDI, or a MOD, XM, S3M or IT module, recognised by its bytes
+(not its name). The file is read whole, within its format's bound (64 MiB
+streamed, 32 MiB a module, 4 MiB MIDI: docs/limits.org, \"Music\"), and
+decoded from memory as it plays. Headless runs open it too (a missing,
+unreadable or oversized file, another format, or a WAV or OGG whose
+header is broken, is an error naming it at once) but play nothing."
+  (if (%renderer?)
+      (%load-music name file)
+      (check-sound-file "load-music" "music" name file)))
+
+(define (load-sound name file)
+  "Decode FILE (WAV or OGG) as the sound NAME, a symbol, for play-sound.
+Headless runs decode it too (so a bad file is found at once) but play
+nothing. A missing, unreadable or undecodable file, or one past the
+bounds of docs/limits.org (\"Sounds\"), is an error naming it. In a build
+without the renderer it only checks that FILE is a file."
+  (cond ((%renderer?) (%load-sound name file))
+        ((not (symbol? name))
+         (scm-error 'wrong-type-arg "load-sound" "name: expected a symbol, got ~S" (list name) #f))
+        ((not (and (string? file) (file-exists? file) (eq? 'regular (stat:type (stat file)))))
+         (scm-error 'misc-error "load-sound" "sound ~S: no such file" (list file) #f))))

@@ -9,8 +9,8 @@
 
 ;;; Scenes are values, so keeping the past costs one pointer per frame.
 
-;;; The history and the sound log run for as long as the game does: both are
-;;; bounded logs (downstroke history).
+;;; The history runs for as long as the game does: it is a bounded log
+;;; (downstroke history).
 
 (define (remember-scene! game)
   "Record the scene as it is at the start of the coming frame."
