@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "detail/first_writes.hpp"
 #include "categories.hpp"
 #include "contact_report.hpp"
 #include "failure.hpp"

@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "cons.hpp"
+#include "detail/unwritten.hpp"
 #include "list_walk.hpp"
 #include "scm_number.hpp"
 

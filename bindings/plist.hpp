@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "body.hpp"
+#include "detail/first_writes.hpp"
 #include "failure.hpp"
 #include "key_slips.hpp"
 #include "keys.hpp"

@@ -46,7 +46,6 @@ enum Field : uint32_t {
 #include "body_fields.def"
 };
 constexpr int kFieldCount = kFieldBitCount;
-static_assert(kFieldCount <= 16, "FirstWrites::watched and Decoded::lossy hold Field bits in 16 bits");
 
 // The sides of #:blocked (semantics §10), in the order the list names them.
 enum Side : uint8_t {
@@ -57,20 +56,11 @@ enum Side : uint8_t {
     kSidesX = kSideLeft | kSideRight,
     kSidesY = kSideUp | kSideDown,
     kSidesAll = kSidesX | kSidesY,
-    // The plist holds no side list in canonical form (absent, or anything
-    // else): the next write must reach it even when it names no side.
-    kSidesUnwritten = 1u << 7,
 };
 // Body::contacts, what #:contacts? asks for (semantics §10): no report, the
 // report with #:touching a list of names, or of (name . side) pairs. Truthy
 // exactly when the body reports.
 enum ContactReport : uint8_t { kContactsOff = 0, kContactsNames = 1, kContactsSides = 2 };
-// Body::touching before push-apart has marked it (the plist lacks the key).
-constexpr uint8_t kReportUnwritten = 1;
-// Body::standing_on as decoded: the plist lacks the key, or holds a name
-// the bindings compare with the new one.
-constexpr int32_t kStandingAbsent = -1;
-constexpr int32_t kStandingUnknown = -2;
 
 // Categories (semantics §13) as bits of the table a caller builds for one
 // frame: bit 0 is 'default, the category of a body that names none. A body
@@ -165,33 +155,5 @@ uint32_t changed_fields(const Body& before, const Body& after);
 // The same, field by field, for a caller that already knows the two are not
 // bitwise equal (changed_fields tries that first).
 uint32_t differing_fields(const Body& before, const Body& after);
-
-// For a caller whose entities may lack some fields (a plist without #:vy):
-// which fields to watch, and the order in which steps first wrote them. A
-// step-by-step composition appends a missing key when a step first changes
-// it and keeps it there even if a later step restores the value; this log
-// lets a whole frame reproduce that key order. (The Scheme bindings also
-// watch fields whose plist value a double cannot hold, such as 1/3: once a
-// step wrote one, it must be written back even if the frame restored it.)
-struct FirstWrites {
-    uint16_t watched = 0;  // Field bits whose first write is still to come
-    uint8_t count = 0;
-    uint8_t order[kFieldCount] = {};  // Field bit indices, first write first
-
-    // Records the watched fields among `changed`, in bit order.
-    void note(uint32_t changed) {
-        changed &= watched;
-        for (; changed != 0; changed &= changed - 1) {
-            const int bit = __builtin_ctz(changed);
-            order[count++] = static_cast<uint8_t>(bit);
-            watched &= static_cast<uint16_t>(~(1u << bit));
-        }
-    }
-    uint32_t written() const {
-        uint32_t mask = 0;
-        for (int i = 0; i < count; ++i) mask |= 1u << order[i];
-        return mask;
-    }
-};
 
 }  // namespace ds

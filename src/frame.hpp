@@ -15,6 +15,10 @@
 
 namespace ds {
 
+// The bindings' log of first writes (detail/first_writes.hpp): a C++
+// program passes none.
+struct FirstWrites;
+
 // Property ids a tween can drive directly on a body. Ids from kFirstUserKey up
 // name properties physics does not know; their values are handed back.
 // Every Number field of body_fields.def has one, numbered as its Field bit.
@@ -114,8 +118,9 @@ public:
 
     // Everything after step-tweens, for callers that run tweens themselves.
     // `scene` is the frame-start state ground detection reads (before the
-    // tweens); empty means the bodies as they are now. With `writes` (one per
-    // body), each step's first writes to watched fields are logged in order.
+    // tweens); empty means the bodies as they are now. `writes` serves the
+    // bindings (one per body: each step's first writes to watched fields,
+    // logged in order); a C++ program leaves it empty.
     // Bodies marked in `asleep` (Settling::asleep) are left as they are: the
     // caller knows the frame cannot change them (settle.hpp).
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,

@@ -11,6 +11,7 @@
 #include "../frame.hpp"
 #include "../settle.hpp"
 #include "contact_scratch.hpp"
+#include "first_writes.hpp"
 #include "group_scratch.hpp"
 #include "stopwatch.hpp"
 #include "support_index.hpp"

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contacts.hpp"
+#include "detail/unwritten.hpp"
 #include "frame.hpp"
 #include "ground.hpp"
 #include "settle.hpp"

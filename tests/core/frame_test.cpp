@@ -5,6 +5,7 @@
 #include <new>
 #include <vector>
 
+#include "detail/first_writes.hpp"
 #include "frame.hpp"
 #include "support.hpp"
 
