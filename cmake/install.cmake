@@ -12,14 +12,14 @@ install(TARGETS downstroke-guile LIBRARY DESTINATION ${DS_GUILE_EXTENSION_DIR})
 
 install(TARGETS downstroke-core EXPORT DownstrokeTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-# The public headers are exactly those tests/public_headers.cmake checks:
-# src/*.hpp and src/tilemap/*.hpp (plus the field list they include), never
-# src/detail/, the renderer or the JSON readers' helpers.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/downstroke
-  FILES_MATCHING PATTERN "*.hpp" PATTERN "*.def"
-  PATTERN "detail" EXCLUDE PATTERN "render" EXCLUDE
-  # The JSON readers' helpers include nlohmann/json.hpp, which the installed core does not need.
-  PATTERN "json_*.hpp" EXCLUDE)
+# The public headers (cmake/public_header_list.cmake), under include/downstroke/
+# so that a program includes them as <downstroke/frame.hpp>; never src/detail/,
+# the renderer or the map readers' helpers.
+include(${PROJECT_SOURCE_DIR}/cmake/public_header_list.cmake)
+foreach(header ${DS_PUBLIC_HEADERS})
+  get_filename_component(_dir ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/downstroke/${_dir})
+endforeach()
 
 set(_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Downstroke)
 install(EXPORT DownstrokeTargets NAMESPACE Downstroke:: DESTINATION ${_cmake_dir})

@@ -5,8 +5,7 @@
 #include <exception>
 #include <string>
 
-#include "frame.hpp"
-#include "tilemap/tilemap.hpp"
+#include <downstroke/downstroke.hpp>
 
 namespace {
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "number.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -26,9 +27,9 @@ enum Skip : uint16_t {
 constexpr int kSkipCount = 11;  // the Skip bits above
 
 // Returns the bit for a skip symbol's name, or 0 for a name physics does not know.
-uint16_t skip_bit(const char* name);
+DOWNSTROKE_API uint16_t skip_bit(const char* name);
 // The symbol name of one skip bit (for messages and stats).
-const char* skip_name(uint16_t bit);
+DOWNSTROKE_API const char* skip_name(uint16_t bit);
 
 // Fields a step may write (the DS_FIELD rows of body_fields.def); a frame
 // reports the changed ones as a mask of these. The bit order is the order a
@@ -151,9 +152,9 @@ inline bool same_field(uint8_t a, uint8_t b) { return a == b; }
 inline bool same_field(int32_t a, int32_t b) { return a == b; }
 
 // Which Fields differ between two states of one body (value or exactness).
-uint32_t changed_fields(const Body& before, const Body& after);
+DOWNSTROKE_API uint32_t changed_fields(const Body& before, const Body& after);
 // The same, field by field, for a caller that already knows the two are not
 // bitwise equal (changed_fields tries that first).
-uint32_t differing_fields(const Body& before, const Body& after);
+DOWNSTROKE_API uint32_t differing_fields(const Body& before, const Body& after);
 
 }  // namespace ds

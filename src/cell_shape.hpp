@@ -4,6 +4,7 @@
 // of them and every rule reads the same numbers the reference does.
 #pragma once
 #include <cstdint>
+#include "export.hpp"
 
 namespace ds {
 
@@ -14,7 +15,7 @@ enum class Cut : int8_t {
     Ceiling = -1,  // what lies above it: a ramp to bump into from below
 };
 
-struct CellShape {
+struct DOWNSTROKE_API CellShape {
     // The box [x0, x1) × [y0, y1), 0 ≤ x0 < x1 ≤ tile width, 0 ≤ y0 < y1 ≤
     // tile height.
     int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;

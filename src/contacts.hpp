@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -22,7 +23,7 @@ inline bool aabb_overlap(const Body& a, const Body& b) {
 // Whether a pair takes part in push-apart: both solid, neither a sensor nor
 // skipping 'entity-collisions, their categories meet, and the boxes overlap
 // strictly.
-bool collision_eligible(const Body& a, const Body& b);
+DOWNSTROKE_API bool collision_eligible(const Body& a, const Body& b);
 
 // Pushes one eligible pair apart (a is the earlier in list order). With
 // resting contacts, a body that rested at the start of the (sub-)frame holds
@@ -32,13 +33,13 @@ bool collision_eligible(const Body& a, const Body& b);
 // and direction it was pushed on, or for a pair nothing moved (two
 // immovable bodies, a one-way body passed through) the axis their overlap
 // began on last (sensed_side).
-uint8_t resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
+DOWNSTROKE_API uint8_t resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
 
 // The side of a that met b when neither moves (a sensor's pair): the axis
 // their overlap began on last, judged from their relative speed (x when
 // ox·|Δvy| < oy·|Δvx|), else the narrower overlap's; facing b's centre, and
 // on a tie as if a were pushed the negative way (right along x, down along y).
-uint8_t sensed_side(const Body& a, const Body& b);
+DOWNSTROKE_API uint8_t sensed_side(const Body& a, const Body& b);
 
 // A side seen from the other body: left and right, up and down swapped.
 constexpr uint8_t opposite_side(uint8_t side) {
@@ -86,8 +87,8 @@ enum class PairMethod { Auto, AllPairs, Grid };
 // earlier pairs produced. `resting` (empty, or one flag per body) marks the
 // bodies that rested. Allocates its scratch per call and notes no pairs; a
 // Frame keeps its own scratch (detail/contact_scratch.hpp).
-void resolve_entity_collisions(std::span<Body> bodies);
-void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
+DOWNSTROKE_API void resolve_entity_collisions(std::span<Body> bodies);
+DOWNSTROKE_API void resolve_entity_collisions_by(std::span<Body> bodies, PairMethod method,
                                   std::span<const uint8_t> resting = {});
 
 }  // namespace ds

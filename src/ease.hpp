@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdint>
 #include <string_view>
+#include "export.hpp"
 
 namespace ds {
 
@@ -19,9 +20,9 @@ enum class Ease : uint8_t {
 };
 
 // 'linear, 'quad-in, 'bounce-in-out, … → Ease; false for an unknown name.
-bool ease_from_name(std::string_view name, Ease& out);
-std::string_view ease_name(Ease e);
+DOWNSTROKE_API bool ease_from_name(std::string_view name, Ease& out);
+DOWNSTROKE_API std::string_view ease_name(Ease e);
 // ease(0) = 0 and ease(1) = 1 for every curve; t outside [0,1] is clamped (semantics §6).
-double ease(Ease e, double t);
+DOWNSTROKE_API double ease(Ease e, double t);
 
 }  // namespace ds

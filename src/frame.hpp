@@ -12,6 +12,7 @@
 #include "frame_options.hpp"
 #include "tile_grid.hpp"
 #include "tween.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -39,7 +40,7 @@ enum Key : uint32_t {
 static_assert(kFieldCount <= kFirstUserKey);
 
 // The body field a physics key names, or nullptr for a user key.
-Num* body_field(Body& b, uint32_t key);
+DOWNSTROKE_API Num* body_field(Body& b, uint32_t key);
 
 struct TweenTrack {
     uint32_t body = 0;  // index into World::bodies
@@ -66,7 +67,7 @@ enum StepId : int {
     kStepTweens, kStepAcceleration, kStepGravity, kStepSpeedLimits, kStepVelocityX, kStepTileX, kStepVelocityY,
     kStepTileY, kStepOnSolid, kStepEntityCollisions, kStepGroups, kStepCount,
 };
-const char* step_name(StepId id);  // the skip symbol's spelling: "velocity-x", "groups", …
+DOWNSTROKE_API const char* step_name(StepId id);  // the skip symbol's spelling: "velocity-x", "groups", …
 
 // For one step of the last frame: bodies it applied to, bodies it left
 // alone (guarded out, skipped by #:skip-pipelines, nothing to do such as no
@@ -89,7 +90,7 @@ struct FrameReport {
 
 // Runs frames; keeps its scratch memory between them, so a warm Frame does
 // not allocate.
-class Frame {
+class DOWNSTROKE_API Frame {
 public:
     Frame();
     ~Frame();

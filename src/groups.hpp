@@ -3,6 +3,7 @@
 #include <span>
 
 #include "body.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -10,6 +11,6 @@ namespace ds {
 // other body of that group is placed at origin + (local_x, local_y).
 // Allocates its scratch per call; a Frame keeps its own
 // (detail/group_scratch.hpp).
-void sync_groups(std::span<Body> bodies);
+DOWNSTROKE_API void sync_groups(std::span<Body> bodies);
 
 }  // namespace ds

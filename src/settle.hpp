@@ -29,6 +29,7 @@
 #include "body.hpp"
 #include "frame_options.hpp"
 #include "tile_grid.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -43,7 +44,7 @@ inline bool depends_on_others(const Body& b, bool supporters_exist) {
 }
 // Whether any body collides (Body::collides): then ground detection has
 // supporters to look for.
-bool any_collider(std::span<const Body> bodies);
+DOWNSTROKE_API bool any_collider(std::span<const Body> bodies);
 // No speed, and depending on nobody: a body that can settle.
 inline bool can_settle(const Body& b, bool colliders) {
     return b.vx.v == 0 && b.vy.v == 0 && !depends_on_others(b, colliders);
@@ -64,7 +65,7 @@ struct SettleConditions {
 // begin(), then plan() for each body (or propose() for each, then confirm()
 // for each once it is known whether any body collides), step every body not
 // asleep(), then settle() for each body stepped.
-class Settling {
+class DOWNSTROKE_API Settling {
 public:
     // Starts a frame of n bodies under `now`. Returns whether the conditions
     // are the last frame's; when they are not, every settled mark is dropped
@@ -122,7 +123,7 @@ private:
 // stepping the body, so it pays only while at least half of the bodies can
 // settle: the tracker tracks while they could after the last frame, and
 // otherwise counts the bodies that can settle as the frame steps them.
-class SettleTracker {
+class DOWNSTROKE_API SettleTracker {
 public:
     // Whether this frame tracks (decided by the last end_frame).
     bool tracking() const { return tracking_; }

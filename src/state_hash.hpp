@@ -29,6 +29,7 @@
 #include <span>
 
 #include "body.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -36,7 +37,7 @@ constexpr uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ull;
 constexpr uint64_t kFnvPrime = 0x100000001b3ull;
 
 // Feeds bodies one at a time, for callers that decode them one at a time.
-class StateHash {
+class DOWNSTROKE_API StateHash {
 public:
     void add(const Body& body);
     // The scene's gravity, after the bodies: adds nothing at the default.
@@ -50,6 +51,6 @@ private:
     uint64_t h_ = kFnvOffsetBasis;
 };
 
-uint64_t state_hash(std::span<const Body> bodies);
+DOWNSTROKE_API uint64_t state_hash(std::span<const Body> bodies);
 
 }  // namespace ds

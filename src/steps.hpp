@@ -4,6 +4,7 @@
 #pragma once
 #include "body.hpp"
 #include "constants.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -27,10 +28,10 @@ struct SubStep {
 };
 
 // vy += ay, then ay = 0 (semantics §4). Needs #:gravity?; skipped by 'acceleration.
-bool apply_acceleration(Body& b);
+DOWNSTROKE_API bool apply_acceleration(Body& b);
 // vy += gravity × #:gravity-scale (·h), gravity being the scene's (the
 // seed's *gravity* by default; semantics §4, §14). Needs #:gravity?; skipped by 'gravity.
-bool apply_gravity(Body& b, SubStep s = {}, Num gravity = Num::integer(kGravity));
+DOWNSTROKE_API bool apply_gravity(Body& b, SubStep s = {}, Num gravity = Num::integer(kGravity));
 // Whether gravity pulls the body down (gravity × scale > 0): only then may
 // a resting contact (FrameOptions::resting_contacts) hold it still.
 inline bool pulled_down(const Body& b, Num gravity) {
@@ -41,13 +42,13 @@ inline bool pulled_down(const Body& b, Num gravity) {
 // #:max-vy clamp them (semantics §14). Needs one of the keys; skipped by
 // 'speed-limits. Stores both velocities every time: the write back to an
 // entity skips a value equal, in value and exactness, to the one read.
-bool apply_speed_limits(Body& b, SubStep s = {});
+DOWNSTROKE_API bool apply_speed_limits(Body& b, SubStep s = {});
 // x += vx (·h; in a sub-frame a zero velocity moves nothing; semantics §4);
 // skipped by 'velocity-x.
-bool apply_velocity_x(Body& b, SubStep s = {});
+DOWNSTROKE_API bool apply_velocity_x(Body& b, SubStep s = {});
 // y += vy (·h; semantics §4); skipped by 'velocity-y.
-bool apply_velocity_y(Body& b, SubStep s = {});
+DOWNSTROKE_API bool apply_velocity_y(Body& b, SubStep s = {});
 // The legacy step: both axes, each skippable on its own (semantics §4).
-bool apply_velocity(Body& b);
+DOWNSTROKE_API bool apply_velocity(Body& b);
 
 }  // namespace ds

@@ -15,6 +15,7 @@
 #include "constants.hpp"
 #include "number.hpp"
 #include "shared_cells.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -43,7 +44,7 @@ struct CellRange {
 // shape (semantics §12) kept in the grid's table of shapes.
 constexpr uint8_t kEmptyCell = 0, kSolidCell = 1, kOneWayCell = 2, kShapedCell = 3;
 
-class GridRevision {
+class DOWNSTROKE_API GridRevision {
 public:
     GridRevision() : n_(next()) {}
     GridRevision(const GridRevision&) : n_(next()) {}
@@ -59,7 +60,7 @@ private:
     uint64_t n_;
 };
 
-class TileGrid {
+class DOWNSTROKE_API TileGrid {
 public:
     TileGrid() = default;
     // cols × rows cells of tile_w × tile_h px; solid is row-major, cols*rows

@@ -6,6 +6,7 @@
 #include "body.hpp"
 #include "steps.hpp"
 #include "tile_grid.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -17,9 +18,9 @@ enum class CollisionMode : uint8_t {
 // Snap out of solid cells along x after apply-velocity-x. No-op without a
 // grid, when vx = 0, or when the body skips 'tile-collisions-x.
 // In a sub-frame, swept mode covers the sub-frame's move (vx·h) (semantics §4).
-bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
+DOWNSTROKE_API bool resolve_tile_collisions_x(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
 // The same along y, after apply-velocity-y ('tile-collisions-y) (semantics §4).
-bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
+DOWNSTROKE_API bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode, SubStep s = {});
 // In a grid with shaped cells (semantics §12) the x step also lifts a body
 // up a floor ramp (or down under a ceiling ramp) it walks into, and the y
 // step lands on a shape's surface and keeps a body that walks down a ramp
@@ -27,6 +28,6 @@ bool resolve_tile_collisions_y(Body& b, const TileGrid* grid, CollisionMode mode
 
 // Whether the body's box overlaps a solid part of the grid: a whole solid
 // cell, or a solid shape (one-way cells and shapes do not count).
-bool overlaps_solid(const Body& b, const TileGrid& grid);
+DOWNSTROKE_API bool overlaps_solid(const Body& b, const TileGrid& grid);
 
 }  // namespace ds

@@ -6,6 +6,7 @@
 
 #include "ease.hpp"
 #include "number.hpp"
+#include "export.hpp"
 
 namespace ds {
 
@@ -30,10 +31,10 @@ struct TweenPhase {
 };
 
 // Where a tween stands after `elapsed` ms (semantics §6).
-TweenPhase tween_phase(const TweenTiming& timing, double elapsed);
+DOWNSTROKE_API TweenPhase tween_phase(const TweenTiming& timing, double elapsed);
 
 // The value a property takes at a phase, given ease(t). Intermediate values
 // are flonums; once finished it is the final target itself, exactness and all (semantics §6).
-Num tween_value(const TweenProp& p, const TweenPhase& phase, double eased);
+DOWNSTROKE_API Num tween_value(const TweenProp& p, const TweenPhase& phase, double eased);
 
 }  // namespace ds

@@ -1,17 +1,29 @@
-# The headers a C++ program includes (src/*.hpp, src/tilemap/*.hpp) must not
-# include the core's machinery in src/detail/: that is what keeps the public
-# API the table in docs/cpp.org and lets the machinery change freely.
-file(GLOB public ${SRC}/*.hpp ${SRC}/tilemap/*.hpp)
+cmake_policy(SET CMP0057 NEW)  # if(IN_LIST)
+# The headers a C++ program includes (cmake/public_header_list.cmake, the
+# ones installed) must include only each other: nothing from src/detail/ or
+# any other private header, which an installed copy lacks. That is what
+# keeps the public API the table in docs/cpp.org and lets the machinery
+# change freely.
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/public_header_list.cmake)
 set(bad "")
-foreach(h ${public})
-  file(STRINGS ${h} lines REGEX "#include \"(\\.\\./)?detail/")
-  if(lines)
-    list(APPEND bad "${h}: ${lines}")
-  endif()
+foreach(h ${DS_PUBLIC_HEADERS})
+  get_filename_component(dir ${h} DIRECTORY)
+  file(STRINGS ${SRC}/${h} lines REGEX "^#include \"")
+  foreach(line ${lines})
+    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+    if(dir)
+      set(included "${dir}/${included}")
+    endif()
+    get_filename_component(included ${included} ABSOLUTE BASE_DIR ${SRC})
+    file(RELATIVE_PATH included ${SRC} ${included})
+    if(NOT included IN_LIST DS_PUBLIC_HEADERS)
+      list(APPEND bad "${h} includes ${included}")
+    endif()
+  endforeach()
 endforeach()
 if(bad)
   string(REPLACE ";" "\n" bad "${bad}")
-  message(FATAL_ERROR "public headers include src/detail/:\n${bad}")
+  message(FATAL_ERROR "public headers include private ones:\n${bad}")
 endif()
-list(LENGTH public n)
-message(STATUS "${n} public headers, none includes src/detail/")
+list(LENGTH DS_PUBLIC_HEADERS n)
+message(STATUS "${n} public headers, each including only public ones")

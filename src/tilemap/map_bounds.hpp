@@ -7,6 +7,7 @@
 #include <string>
 
 #include "../constants.hpp"
+#include "../export.hpp"
 
 namespace ds {
 
@@ -17,21 +18,21 @@ struct MapLimits {
 };
 
 // Whether w × h exceeds `max` (w, h ≥ 0), without overflowing.
-bool exceeds(int64_t w, int64_t h, int64_t max);
+DOWNSTROKE_API bool exceeds(int64_t w, int64_t h, int64_t max);
 
 // Each of these returns why the sizes cannot be, or "" when they can.
 // Tile sizes: positive and at most kMaxTileSize.
-std::string tile_size_problem(int64_t tile_w, int64_t tile_h);
+DOWNSTROKE_API std::string tile_size_problem(int64_t tile_w, int64_t tile_h);
 // Cells first … first+count−1 of `tile` px: every edge within ±2^53 px, the
 // range where the core's coordinates are exact.
-std::string extent_problem(int64_t first, int64_t count, int64_t tile, const char* axis);
+DOWNSTROKE_API std::string extent_problem(int64_t first, int64_t count, int64_t tile, const char* axis);
 // A finite map (or make-tilemap's): positive size, at most max_cells, tile
 // sizes as above, extents as above.
-std::string map_size_problem(int64_t cols, int64_t rows, int64_t tile_w, int64_t tile_h,
+DOWNSTROKE_API std::string map_size_problem(int64_t cols, int64_t rows, int64_t tile_w, int64_t tile_h,
                              int64_t max_cells);
 
 // The cells left for a map's tile layers.
-class CellBudget {
+class DOWNSTROKE_API CellBudget {
 public:
     explicit CellBudget(int64_t max) : max_(max), left_(max) {}
     int64_t max() const { return max_; }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include "../export.hpp"
 
 namespace ds {
 
@@ -14,6 +15,6 @@ struct MapColor {
 
 // The colour `text` names, or nullopt when it is not one of the forms above
 // (the readers turn that into an error naming the file and the value).
-std::optional<MapColor> parse_map_color(std::string_view text);
+DOWNSTROKE_API std::optional<MapColor> parse_map_color(std::string_view text);
 
 }  // namespace ds

@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <vector>
+#include "../export.hpp"
 
 namespace ds {
 
@@ -26,16 +27,16 @@ struct ObjectIndex {
 
 // The layer's objects in the order they are drawn: its file's, or by y
 // (stable) for draworder="topdown"; as indexes into layer.objects.
-std::vector<uint32_t> object_draw_order(const ObjectLayer& layer);
+DOWNSTROKE_API std::vector<uint32_t> object_draw_order(const ObjectLayer& layer);
 
 // The index of `layer` of `map`: its tile objects (hidden ones too: an
 // object's visible can change, the index need not), in its draw order
 // (file order, or by y for topdown).
-ObjectIndex index_objects(const Tilemap& map, const ObjectLayer& layer);
+DOWNSTROKE_API ObjectIndex index_objects(const Tilemap& map, const ObjectLayer& layer);
 
 // The draw ranks of the objects whose pictures may touch the view [x0, x1)
 // × [y0, y1) (map px), ascending and without repeats, into `out` (cleared).
-void objects_in_view(const ObjectIndex& index, double x0, double y0, double x1, double y1,
+DOWNSTROKE_API void objects_in_view(const ObjectIndex& index, double x0, double y0, double x1, double y1,
                      std::vector<uint32_t>& out);
 
 }  // namespace ds

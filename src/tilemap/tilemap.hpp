@@ -14,6 +14,7 @@
 #include "map_bounds.hpp"
 #include "map_color.hpp"
 #include "object_index.hpp"
+#include "../export.hpp"
 
 namespace ds {
 
@@ -40,9 +41,9 @@ struct Property {
 };
 using Properties = std::vector<Property>;
 
-const Property* find_property(const Properties& props, std::string_view name);
+DOWNSTROKE_API const Property* find_property(const Properties& props, std::string_view name);
 // "true"/"1" (any case) — Tiled writes bools as true/false.
-bool property_is_true(const Property& p);
+DOWNSTROKE_API bool property_is_true(const Property& p);
 
 // One frame of a tile's animation: show local tile `tile_id` for `duration_ms`.
 struct AnimationFrame {
@@ -107,7 +108,7 @@ struct TileInfo {  // a tileset's <tile> that carries something
     std::vector<MapObject> objects;
 };
 
-struct Tileset {
+struct DOWNSTROKE_API Tileset {
     uint32_t firstgid = 1;
     std::string name;
     std::string source;  // the .tsx path as written, or empty when embedded
@@ -157,7 +158,7 @@ enum class LayerSolidity : uint8_t {
     None,       // property false: this layer adds no solidity
 };
 
-struct TileLayer {
+struct DOWNSTROKE_API TileLayer {
     std::string name;
     int64_t origin_col = 0, origin_row = 0;  // map cell of cells[0]
     int width = 0, height = 0;
@@ -229,7 +230,7 @@ struct GidShape {
     MapObject object;
 };
 
-struct Tilemap {
+struct DOWNSTROKE_API Tilemap {
     std::string path;  // empty for maps made in memory
     int width = 0, height = 0;  // in cells (the bounding box of all chunks when infinite)
     int tile_width = 0, tile_height = 0;
@@ -295,8 +296,8 @@ struct Tilemap {
 // collection tiles') joined to the tileset's folder (image_dir), and an
 // image layer's joined to the map's folder; an absolute path, or one of a
 // map or tileset made in memory, as written.
-std::string tileset_image_path(const Tileset& ts, const std::string& image);
-std::string layer_image_path(const Tilemap& map, const std::string& image);
+DOWNSTROKE_API std::string tileset_image_path(const Tileset& ts, const std::string& image);
+DOWNSTROKE_API std::string layer_image_path(const Tilemap& map, const std::string& image);
 
 // Edits a map and its physics grid in place: cell (col, row) of tile layer
 // `layer` holds the raw gid `gid` (0 clears it), and the grid's cell becomes
@@ -305,11 +306,11 @@ std::string layer_image_path(const Tilemap& map, const std::string& image);
 // solid_grid() (or a copy edited alike). Throws, with map and grid
 // untouched: std::out_of_range for a cell outside the layer or the grid,
 // std::invalid_argument for a gid of none of the map's tilesets (gid_known).
-void set_tile(Tilemap& map, TileGrid& grid, size_t layer, int64_t col, int64_t row, uint32_t gid);
+DOWNSTROKE_API void set_tile(Tilemap& map, TileGrid& grid, size_t layer, int64_t col, int64_t row, uint32_t gid);
 
 // A malformed or unreadable map. what() names the file, and the line where
 // the XML parser gave one.
-class MapError : public std::runtime_error {
+class DOWNSTROKE_API MapError : public std::runtime_error {
 public:
     MapError(const std::string& file, int line, const std::string& message);
     const std::string& file() const { return file_; }
@@ -338,17 +339,17 @@ struct LoadOptions {
 // together, and the tile layers (chunks included) at most limits.max_cells
 // cells together, checked from the attributes before anything is decoded.
 // Throws MapError (semantics §7).
-Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {},
+DOWNSTROKE_API Tilemap load_tilemap(const std::string& path, std::vector<uint32_t> solid_gids = {},
                      const MapLimits& limits = {});
 
 // The same, with LoadOptions; the map may be TMX (XML) or JSON (.tmj),
 // told apart by its content, and so may each tileset and template it names.
-Tilemap load_tilemap(const std::string& path, const LoadOptions& options);
+DOWNSTROKE_API Tilemap load_tilemap(const std::string& path, const LoadOptions& options);
 
 // The same for a map already in memory (`text`, counted against max_bytes):
 // `path` names it in messages and is where its .tsx paths are relative to.
 // For fuzzing and for maps that do not come from a file.
-Tilemap parse_tilemap(std::string_view text, const std::string& path,
+DOWNSTROKE_API Tilemap parse_tilemap(std::string_view text, const std::string& path,
                       std::vector<uint32_t> solid_gids = {}, const MapLimits& limits = {});
 
 // A map made in memory: width × height cells of tile_w × tile_h px, gids
@@ -358,7 +359,7 @@ Tilemap parse_tilemap(std::string_view text, const std::string& path,
 // `shapes` gives gids a collision shape as a tile's collision object would
 // (semantics §12; flip bits on the cells' gids turn it); a shaped gid also in
 // one_way_gids is a one-way shape.
-Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
+DOWNSTROKE_API Tilemap make_tilemap(int width, int height, int tile_w, int tile_h, std::vector<uint32_t> gids,
                      std::vector<uint32_t> solid_gids, int64_t max_cells = kMaxMapCells,
                      std::vector<uint32_t> one_way_gids = {}, std::vector<GidShape> shapes = {});
 

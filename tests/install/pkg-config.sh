@@ -9,4 +9,11 @@ c++ -std=c++20 -DDS_DEMO_DIR="\"$demodir\"" "$demodir/fall.cpp" $flags -Wl,-rpat
 out=$(clean "$prefix/fall" "$level")
 [ "$out" = "$expected_fall" ] || fail "fall built with pkg-config printed
 $out"
-echo "install.pkg-config: fall built with: $flags"
+
+# Exactly the public headers are installed (cmake/public_header_list.cmake).
+listed=$(sed -n '/^set(DS_PUBLIC_HEADERS/,/)/p' "$(dirname "$0")/../../cmake/public_header_list.cmake" |
+  grep -oE '[a-z_/]+\.(hpp|def)' | sed 's|^|downstroke/|' | sort)
+installed=$(cd "$prefix/include" && find downstroke -type f | sort)
+[ "$installed" = "$listed" ] || fail "installed headers differ from the list:
+$(diff <(echo "$listed") <(echo "$installed"))"
+echo "install.pkg-config: fall built with: $flags; the $(wc -l <<<"$listed") public headers installed"
