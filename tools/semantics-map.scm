@@ -66,7 +66,8 @@
                                (cons (cons (qualified lines i (match:substring m 2)) sections) acc)
                                acc))))))))))
 
-(define type-line (make-regexp "^([ \t]*)(class|struct)[ \t]+([A-Za-z_][A-Za-z0-9_]*)"))
+;; A type's head; an export macro (DOWNSTROKE_API) before its name is skipped.
+(define type-line (make-regexp "^([ \t]*)(class|struct)[ \t]+(DOWNSTROKE_API[ \t]+)?([A-Za-z_][A-Za-z0-9_]*)"))
 
 (define (indent-of line) (- (string-length line) (string-length (string-trim line))))
 
@@ -81,7 +82,7 @@
               (let ((m (regexp-exec type-line (vector-ref lines j))))
                 (cond ((and m (< (string-length (match:substring m 1)) depth)
                             (not (string-suffix? ";" (string-trim-right (vector-ref lines j)))))
-                       (string-append (match:substring m 3) "::" name))
+                       (string-append (match:substring m 4) "::" name))
                       ((and (not (string-null? (string-trim (vector-ref lines j))))
                             (< (indent-of (vector-ref lines j)) depth)
                             (not (string-prefix? "//" (string-trim (vector-ref lines j))))
