@@ -109,6 +109,22 @@ void define_procedure(const char* name, const Doc& doc) {
     detail::define_gsubr(name, Req, Opt, Rest, detail::subr_of<Fn>(std::type_identity<typename Sig::Plain>{}), doc);
 }
 
+// The renderer's procedures are declared in tables (render/*.def), one row
+// each, because two builds read them: with SDL2 the file of the same name
+// registers every row; without it render_missing.cpp registers a stand-in
+// for each procedure that needs the renderer. A row is
+//
+//     DS_RENDER_NATIVE("%make-display", 2, 0, 0, make_display, "(width height): …")
+//
+// name, required, optional and rest (0 or 1) argument counts, the C++
+// function, and its docstring (a string or a WrapperDoc), as
+// define_procedure takes them. DS_RENDER_NATIVE marks a procedure that needs
+// the renderer; DS_NATIVE one that every build has (then render_missing.cpp
+// defines a C++ function of the same name: %renderer? answers #f there).
+// Registering a row is DS_DEFINE_NATIVE:
+#define DS_DEFINE_NATIVE(name, req, opt, rest, fn, ...) \
+    ::ds::guile::define_procedure<req, opt, rest, fn>(name, __VA_ARGS__);
+
 // Each file of procedures has one of these; ds_init_native (registry.cpp)
 // calls them all.
 void register_entity_procedures();
@@ -120,7 +136,7 @@ void register_gc_procedures();
 void register_query_procedures();  // spatial and tile queries
 void register_key_slip_procedures();  // misspelt entity keys (key_slips.hpp)
 void register_constants();  // the rules' numbers: %gravity, %jump-force, …
-void register_render_procedures();  // render_procs.cpp, or render_missing.cpp without SDL2
+void register_render_procedures();  // render/display.cpp, or render_missing.cpp without SDL2
 
 // The engine's collector setting (gc_procs.cpp), applied when the extension loads.
 void apply_gc_policy();

@@ -1,5 +1,6 @@
-// Stands in for render_procs.cpp in a build without SDL2: the same names,
-// each refusing with a message that says what to install.
+// Stands in for the renderer's procedures (render/) in a build without SDL2:
+// the same names, from the same tables (render/natives.def), each refusing
+// with a message that says what to install.
 #include <iterator>
 #include <utility>
 
@@ -10,15 +11,14 @@ namespace ds::guile {
 
 namespace {
 
-// render_procs.cpp's procedures; each stand-in takes any arguments.
+// The procedures that need the renderer; each stand-in takes any arguments.
 constexpr const char* kStandIns[] = {
-    "%make-display",      "%display-open-window!",    "%display-close-window!", "%display-draw!",
-    "%display-stats",     "%display-save-png",        "%display-pixel",         "%display-clear-commands!",
-    "%draw-rect!",        "%draw-line!",              "%draw-sprite!",          "%draw-text!",
-    "%display-set-input-map!", "%display-poll!",      "%open-audio!",           "%load-sound",
-    "%play-sound",        "%note-pushed-pairs!",      "%load-music",            "%play-music",
-    "%stop-music",        "%set-volume!",             "%display-set-fullscreen!", "%display-fullscreen?",
-    "%display-refresh-rate", "%display-vsync?",   "%display-compare-png",   "%named-colors"};
+#define DS_NATIVE(...)
+#define DS_RENDER_NATIVE(name, ...) name,
+#include "render/natives.def"
+#undef DS_NATIVE
+#undef DS_RENDER_NATIVE
+};
 
 // One function per name (I), as each registered function has one name.
 template <size_t I>
@@ -34,15 +34,18 @@ void define_stand_ins(std::index_sequence<I...>) {
     (define_procedure<0, 0, 1, missing<I>>(kStandIns[I], "Not in this build: it has no renderer (SDL2)."), ...);
 }
 
+// The no-renderer versions of the tables' DS_NATIVE rows.
 SCM renderer_p() { return SCM_BOOL_F; }
-SCM default_input_map() { return SCM_EOL; }
+SCM default_map() { return SCM_EOL; }
 
 }  // namespace
 
 void register_render_procedures() {
-    define_procedure<0, 0, 0, renderer_p>("%renderer?", WrapperDoc{"()", "renderer-available?", "(downstroke render)"});
-    define_procedure<0, 0, 0, default_input_map>("%default-input-map",
-        WrapperDoc{"()", "default-input-map", "(downstroke render)"});
+#define DS_NATIVE DS_DEFINE_NATIVE
+#define DS_RENDER_NATIVE(...)
+#include "render/natives.def"
+#undef DS_NATIVE
+#undef DS_RENDER_NATIVE
     define_stand_ins(std::make_index_sequence<std::size(kStandIns)>());
 }
 
