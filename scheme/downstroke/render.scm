@@ -65,31 +65,39 @@ yellow cyan magenta orange grey."
                         (list color (map car (named-colors))) #f)))
         (else color)))
 
+;; The display to draw into, or #f in a build without the renderer, where a
+;; running game has none (headless games still run there: their render:
+;; procedures draw nothing).
 (define (display-for who)
-  (or (current-display)
-      (scm-error 'misc-error who "no game is being drawn: call it from a game's render: procedure" '() #f)))
+  (cond ((current-display))
+        ((renderer-available?)
+         (scm-error 'misc-error who "no game is being drawn: call it from a game's render: procedure" '() #f))
+        (else #f)))
 
 (define* (draw-rect x y w h #:optional (color 'white) #:key (fill? #f) (space 'world))
   "Draw a W × H rectangle with its top-left corner at (X, Y): its outline, or
 filled when FILL? is true. COLOR is a name ('red) or (r g b [a]); alpha
 below 255 blends. SPACE is 'world (moves with the camera) or 'screen (a HUD)."
-  (%draw-rect! (display-for "draw-rect") x y w h (color-rgba "draw-rect" color) fill? space))
+  (let ((display (display-for "draw-rect")))
+    (when display (%draw-rect! display x y w h (color-rgba "draw-rect" color) fill? space))))
 
 (define* (draw-line x0 y0 x1 y1 #:optional (color 'white) #:key (space 'world))
   "Draw a one-pixel line from (X0, Y0) to (X1, Y1), both ends included."
-  (%draw-line! (display-for "draw-line") x0 y0 x1 y1 (color-rgba "draw-line" color) space))
+  (let ((display (display-for "draw-line")))
+    (when display (%draw-line! display x0 y0 x1 y1 (color-rgba "draw-line" color) space))))
 
 (define* (draw-sprite gid x y #:key (space 'world) (flip-x? #f))
   "Draw the tile picture GID (of the scene's map's tilesets; flip bits
 honoured) with its top-left corner at (X, Y)."
-  (%draw-sprite! (display-for "draw-sprite")
-                 (if flip-x? (logxor gid #x80000000) gid) x y space))
+  (let ((display (display-for "draw-sprite")))
+    (when display (%draw-sprite! display (if flip-x? (logxor gid #x80000000) gid) x y space))))
 
 (define* (draw-text text x y #:optional (color 'white) #:key (scale 1) (space 'world))
   "Draw TEXT in the built-in 5×7 font with its top-left corner at (X, Y);
 each font pixel is SCALE × SCALE, each letter 6 × SCALE wide, and a newline
 starts a line 9 × SCALE lower."
-  (%draw-text! (display-for "draw-text") text x y (color-rgba "draw-text" color) scale space))
+  (let ((display (display-for "draw-text")))
+    (when display (%draw-text! display text x y (color-rgba "draw-text" color) scale space))))
 
 (define* (text-width text #:key (scale 1))
   "How many pixels wide TEXT is in the built-in font at SCALE: 6 × SCALE per
