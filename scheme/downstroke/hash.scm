@@ -2,7 +2,7 @@
 ;;; checking that two runs are the same run (determinism, replays, native
 ;;; against reference) one integer per frame.
 (define-module (downstroke hash)
-  #:use-module ((downstroke native) #:select (%scene-hash-entities))
+  #:use-module (downstroke native)
   #:use-module (downstroke world)
   #:use-module ((downstroke plain-data) #:select (plain-data-hash))
   #:export (scene-hash))

@@ -2,7 +2,7 @@
 (define-module (downstroke world)
   #:use-module (srfi srfi-9)
   #:use-module (rnrs bytevectors)
-  #:use-module ((downstroke native) #:select (tilemap?))
+  #:use-module (downstroke native)
   #:export (make-scene scene? update-scene
             scene-entities scene-tilemap scene-camera scene-camera-target
             scene-contacts scene-contact-sides scene-gravity scene-data
