@@ -33,14 +33,10 @@ render::Canvas& canvas_of(Display& d) {
 
 SCM wrap_display(Display* d) { return scm_make_foreign_object_1(display_type, d); }
 
-void register_display_type() {
+void register_render_procedures() {
     display_type = scm_make_foreign_object_type(scm_from_utf8_symbol("display"),
                                                 scm_list_1(scm_from_utf8_symbol("data")), finalize_display);
     scm_permanent_object(display_type);
-}
-
-void register_render_procedures() {
-    register_display_type();
     register_render_arguments();
     register_display_procedures();
     register_draw_procedures();

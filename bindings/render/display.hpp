@@ -58,9 +58,6 @@ render::Canvas& canvas_of(Display& d);
 // A Scheme value owning `d`, which the collector deletes with it.
 SCM wrap_display(Display* d);
 
-// The display's Scheme type (display.cpp); called once, before any display is made.
-void register_display_type();
-
 // The renderer's procedures, by concern: each file registers its own table
 // (the .def file of the same name here).
 void register_display_procedures();  // display_procs.cpp: displays, windows, capture

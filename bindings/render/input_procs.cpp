@@ -17,6 +17,7 @@ namespace {
 
 using namespace ds::render;
 
+// ((action name …) …): the actions, each with the inputs that hold it.
 SCM set_input_map(SCM display, SCM map) {
     Failure f;
     Display* d = display_of(display, "make-game", f);
