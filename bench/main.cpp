@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench: how long one physics frame takes, per scene × N × path
 // (speed, the default mode); how each demo's memory behaves over many frames
 // (soak, soak/); run time against error (accuracy, accuracy/); how

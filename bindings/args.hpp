@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Argument checks shared by several native procedures (on convert.hpp).
 #pragma once
 #include <libguile.h>

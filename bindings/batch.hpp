@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A whole entity list decoded into bodies, and turned back into a list that
 // keeps every unchanged entity (and the unchanged tail of the list) as it was.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "categories.hpp"
 
 #include "keys.hpp"

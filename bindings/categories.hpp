@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Categories (semantics §13) as bits, once per native call: #:category and
 // #:collides-with name categories with symbols; the core compares bits.
 // A table lives on the stack of one call and is shared by every list the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pairs allocated from the current thread's own free lists, as the VM does:
 // scm_cons goes through the collector's general entry point every time, and
 // a frame of a falling crowd conses a few hundred thousand pairs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The core's rule constants as Scheme variables of (downstroke native), so
 // (downstroke physics) and the engine read them instead of repeating them.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The contact report's named values (semantics §10): who a contact entity
 // touched and stands on, by name, and the scene's pairs. The core marks
 // what a step wrote (Body::touching, Body::standing_on) and logs pairs by

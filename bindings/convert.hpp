@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Argument conversions for the native procedures. Each takes the value,
 // where it stands in the call (Arg) and the procedure's Failure, and either
 // sets `out` and returns true, or records

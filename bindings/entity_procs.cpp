@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-entity physics steps and the bulk steps as native procedures.
 // Each: validate and decode → run the core step → encode only what changed.
 #include <algorithm>

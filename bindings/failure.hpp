@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Errors raised at the boundary. A Guile error longjmps over C++ frames, so a
 // native procedure records what went wrong in a Failure (no destructor to
 // skip: a fixed buffer and SCM values on the stack, which the collector

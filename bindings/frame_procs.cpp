@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One whole engine pass over an entity list in one native call.
 #include <algorithm>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gc_clock.hpp"
 
 #include <gc/gc.h>

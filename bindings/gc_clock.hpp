@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the collector has cost this process: collections counted and timed
 // by the wall clock through Boehm's collection events, and the bytes
 // allocated. Read before and after a frame, the difference is that frame's

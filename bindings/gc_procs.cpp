@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How often the collector runs: Boehm's free-space divisor, and the default
 // the engine picks for it. Each collection marks every live object (a scene
 // of 10k entities is ~4 MB of plists), while a frame of such a scene

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // scene-hash's native half: the physical state of an entity list, hashed
 // by the core (state_hash.hpp) so that Scheme and C++ agree on the bytes.
 #include "args.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Misspelt entity keys: a keyword the engine does not read but that is a
 // slip away from one it does (#:sensr? for #:sensor?) silently turns a
 // behaviour off. Decoding notices each such key, and the game reports it

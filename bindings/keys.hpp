@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The keywords and symbols the bindings compare against, interned once after
 // Guile has started (never in namespace-scope statics: interning needs a
 // running Guile). Each is protected from the collector when interned, since

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Native walks over Scheme lists that cannot hang on a circular one.
 // Brent's variant of Floyd's tortoise and hare: the walk itself is the
 // hare, and the tortoise waits on a cell the hare passed, moving up to it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Entity plists ⇄ bodies. Decoding walks a plist once and picks out the
 // physics keys; encoding rewrites only what changed, in place order, and
 // shares the unchanged tail — an unchanged entity comes back as itself.

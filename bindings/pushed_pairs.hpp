@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The debug overlay's log of the pairs push-apart resolved: turned on by
 // %note-pushed-pairs!, filled by step-scene and the bulk
 // resolve-entity-collisions, read by game-draw. The core takes the log as a

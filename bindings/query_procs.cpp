@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The spatial queries of (downstroke query) and the tile queries, as native
 // procedures: decode the entities' boxes, ask the core (query.hpp), hand back
 // the very entity objects that matched, in list order.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Each native procedure is registered next to its definition, with its
 // docstring, into the module being initialised (downstroke native):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stands in for the renderer's procedures (render/) in a build without SDL2:
 // the same names, from the same tables (render/natives.def), each refusing
 // with a message that says what to install.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scheme reals ⇄ ds::Num. Fixnums and flonums take a fast path; exactness
 // survives the round trip (semantics §1).
 #pragma once

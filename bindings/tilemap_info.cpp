@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tilemap_info.hpp"
 
 #include <charconv>

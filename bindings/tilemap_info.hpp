@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a loaded map holds beyond its cells, as Scheme values: custom
 // properties, objects, the layer tree, tilesets and the loader's warnings
 // (docs/tilemaps.org lists every key). Each conversion only reads the

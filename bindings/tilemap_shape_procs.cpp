@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shape queries the pure-Scheme reference reads cells through
 // (semantics §12): a cell's solid part, and the grid's steepest ramp.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tilemap as a Scheme object: a foreign object owning a ds::Tilemap and
 // the solid grid physics reads from it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tweens as Scheme records (defined in (downstroke tween)) stepped natively.
 // Record fields, in order: props ((key start . end) …), duration, delay,
 // ease (symbol or procedure), ease-index (or #f), repeat, yoyo?,

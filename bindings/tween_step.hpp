@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Advancing an entity's #:tween: shared by step-tweens and the frame.
 #pragma once
 #include <libguile.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Where Guile looks for extensions, modules and their compiled .go files,
 # from guile-3.0.pc, made relative to Guile's own prefix so that they can be
 # re-rooted at any install prefix: installed into /usr they are exactly the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `cmake --install build [--prefix P]': the host, the core library and its
 # public headers for C++ programs (with downstroke.pc and a CMake package),
 # the Guile extension and the Scheme modules where Guile looks for them

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `cpack -G DEB' (tools/make-deb.sh): downstroke_<version>_<arch>.deb, which
 # installs into /usr, where a plain `guile' finds the modules and the
 # extension with no environment variables.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The public headers of the core, relative to src/: what docs/cpp.org
 # documents, the umbrella that includes them all, and what they include
 # (export.hpp, body_fields.def, which body.hpp expands into Body's members).

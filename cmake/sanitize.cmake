@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # DOWNSTROKE_SANITIZE: every C++ file (core, bindings, host, tests) built with
 # AddressSanitizer and UndefinedBehaviorSanitizer, for tools/sanitize.sh.
 # Made for GCC; a build directory of its own (build-asan/), never the main one.

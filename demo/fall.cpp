@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: 0BSD
 // Headless: loads a Tiled level, drops a few bodies onto it and prints where
 // they are every few frames, until all of them stand on something.
 #include <cstdio>

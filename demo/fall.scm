@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; Headless: a player and a few crates fall onto demo/maps/level1.tmx; the
 ;;; player walks right and jumps once. Prints a short trace.
 ;;; Keys (in a window): Right/Left or D/A walk, Z or Space jumps, Escape quits.

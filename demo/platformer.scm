@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; Platformer: a side-scroller on demo/maps/platformer.tmx.
 ;;;
 ;;; The player (spawned from the map's object layer) falls in, lands, runs

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; Physics sandbox on demo/maps/sandbox.tmx, with the default engine-update.
 ;;;
 ;;; - boxes (#:gravity? #t #:solid? #t) fall onto immovable platforms (solid

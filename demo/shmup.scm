@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; Shmup: who hits whom is decided by categories (physics.org, "Who
 ;;; collides with whom").
 ;;;

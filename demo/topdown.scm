@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; Top-down: four-way movement in a walled room (demo/maps/topdown.tmx).
 ;;;
 ;;; No gravity: the player has #:gravity? #f, so the default engine-update's

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; Tweens: entities driven by make-tween, stored under #:tween and advanced by
 ;;; step-tweens inside the default engine-update (dt = 16 ms a frame).
 ;;;

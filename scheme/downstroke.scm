@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke) — everything a game imports.
 ;;;
 ;;; Its public interface holds the user-facing modules' bindings themselves

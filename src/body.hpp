@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The physics view of one entity: plain data, decoded once from a plist and
 // compared field by field afterwards to find what a frame changed.
 #pragma once

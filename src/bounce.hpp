@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bounce (semantics §13): the velocity a stop leaves on its axis. Without
 // #:bounce it is 0, the seed's rule; with it, the velocity turned back and
 // scaled, so a ball rebounds from a wall and a grenade from the floor.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading a file that came from anywhere (a map, a tileset, an image, a
 // sound, music): regular files only, opened without blocking, its size
 // checked against the caller's bound before anything is read, and never more

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Platforms that carry their riders (semantics §11): a moving carrier moves
 // the bodies that stood on it when the (sub-)frame began by its own
 // displacement, and the bodies it squeezes against solid cells are crushed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The solid part of a cell that is not the whole cell (semantics §12): a
 // part-tile box, or a ramp — a box cut by one slanted line. Plain data, in
 // whole px from the cell's top-left corner, so a grid keeps one small table

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every tunable of the core in one place, each with the reason for its
 // value (as Box2D keeps its constants.h). The rules' own numbers come first:
 // they are part of the contract (docs/semantics.org), not tuning.

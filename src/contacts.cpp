@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "contacts.hpp"
 
 #include <algorithm>

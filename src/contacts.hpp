@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Entity against entity: the overlap test and the sequential push-apart pass.
 #pragma once
 #include <cstdint>

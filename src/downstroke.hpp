@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The whole public C++ API of the core in one include, as Box2D's box2d.h
 // is: #include <downstroke/downstroke.hpp>. Each header also stands alone
 // (<downstroke/frame.hpp>, <downstroke/tilemap/tilemap.hpp>) for a program

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ease.hpp"
 
 #include <algorithm>

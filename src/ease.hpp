@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Easing curves for tweens: the usual families, each in, out and in-out.
 #pragma once
 #include <cstdint>

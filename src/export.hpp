@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // DOWNSTROKE_API marks what libdownstroke-core exports. The core is built
 // with hidden visibility (src/CMakeLists.txt), so the shared library's
 // symbol table is the documented API and nothing else: the machinery and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One whole engine pass, the composition of default-engine-update (semantics §5):
 // tweens; per-entity motion and tile steps against the frame-start scene;
 // then entity push-apart; then groups.

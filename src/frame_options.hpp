@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a whole frame runs under besides the bodies and the map.
 #pragma once
 #include "constants.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ground detection (semantics §4, detect-on-solid): whether a tile or a solid
 // body holds a body up, with the tolerance *on-solid-tolerance*
 // (constants.hpp), and the resting contacts beyond the seed.

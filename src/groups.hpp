@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Rigid groups: members follow their group's origin entity.
 #pragma once
 #include <span>

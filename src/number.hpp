@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A game-sized real number with one bit of provenance: whether it is an exact
 // integer. Scheme keeps 103 and 103.0 apart, so the core must too (semantics §1):
 // a result is exact only when everything it was computed from was exact.

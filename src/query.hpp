@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Spatial queries for game logic (semantics §8): boxes overlapping a
 // rectangle or holding a point, the overlapping pairs between two sets of
 // boxes, and segments cast against boxes and solid cells. Boxes are the

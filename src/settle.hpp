@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Settling: a whole frame leaves alone the bodies it cannot change, as Box2D
 // lets bodies sleep. Both whole-frame paths use this unit — ds::Frame::step
 // (through SettleTracker) and the bindings' step-scene (through Settling) —

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A fixed-length array of cells stored in chunks that copies share: copying
 // it copies a table of chunk pointers, and writing a cell first copies its
 // chunk when another copy still holds it (copy-on-write). This is what lets

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A fingerprint of a scene's physical state, so that two runs (native and
 // reference, live and replayed, this machine and another) can be compared
 // frame by frame with one integer instead of whole entity lists.

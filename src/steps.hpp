@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-entity motion steps (semantics §4), each guarded and skippable exactly as
 // default-engine-update would apply it. They read and write one body, and
 // return whether they applied (false: guarded out or skipped).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tile_grid.hpp"
 
 #include "detail/placed_shape.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The solid-cell grid physics reads: which cells of a tile map block bodies.
 // Built from a loaded Tiled map or directly from a gid vector; knows nothing
 // of XML. Cells outside the grid are empty. A grid is known by its revision,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bodies against the solid cells of a tile grid: the per-axis snap-out
 // (semantics §4). Ground detection is in ground.hpp.
 #pragma once

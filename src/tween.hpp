@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tweens: a body's properties driven from start to end values over time.
 // The timing is pure data; the caller stores a tween next to its entity.
 #pragma once

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 cmake_policy(SET CMP0057 NEW)  # if(IN_LIST)
 # The headers a C++ program includes (cmake/public_header_list.cmake, the
 # ones installed) must include only each other: nothing from src/detail/ or

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Sets up a fresh Debian 12 machine for Downstroke and builds it: installs the
 # Debian packages the build needs (only those missing), then configures and
 # builds into build/. Run as root, or as a user with sudo. Idempotent.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Regenerates the pictures in docs/images/: each demo is run headless with
 # `downstroke --capture` (its scripted input, off-screen drawing) and the
 # frame that shows it best is kept. Nothing here is drawn by hand.

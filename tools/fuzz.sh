@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Fuzzing beyond the suite's 10-second runs (docs/limits.org, "Fuzzing and
 # sanitizers"). Uses the main build (build/, configured with clang++ and
 # libclang-rt-14-dev installed).

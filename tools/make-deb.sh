@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Builds the Debian package: downstroke_<version>_<arch>.deb in build-deb/
 # (or the directory given: a build directory of its own, configured for /usr
 # so that the library lands in Debian's multiarch libdir).

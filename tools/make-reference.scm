@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Writes docs/reference.org, the list of everything (downstroke) exports,
 ;;; from the modules themselves: each export's signature and documentation,
 ;;; grouped by the module that defines it.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the starter game's tileset and map (templates/starter/maps/, what
 `downstroke new' copies) and the tutorial game's maps (demo/tutorial/maps/).
 

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Prints the names (downstroke native) exports, one a line, sorted: the
 ;;; build without the renderer must export the same as the build with it
 ;;; (tools/without-renderer.sh compares them).

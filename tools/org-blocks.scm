@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The source blocks of an Org file, as Org reads them: loaded by the docs
 ;;; test (tests/scheme/docs-test.scm) and by tools/tangle.scm.
 ;;;

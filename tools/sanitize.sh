@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The ASan+UBSan run (docs/limits.org, "Fuzzing and sanitizers"): configures
 # build-asan/ with DOWNSTROKE_SANITIZE=ON (GCC), builds only what the checked
 # suites need, and runs them: every C++ suite, the fuzz targets' replays, and

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Ends every § of docs/semantics.org with an "Implemented in" line: the
 ;;; C++ functions and the reference procedures that cite it, read from the
 ;;; code's own citations, so that a reader goes from a rule to its code.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Every source file says its licence in an SPDX line near its top (README,
 ;;; "Licence"): MIT for the engine, 0BSD for what authors copy into their
 ;;; own games (the starter in templates/, the demos and examples in demo/).

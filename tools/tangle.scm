@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Tangles an Org file as Org's C-c C-v t does: every source block with a
 ;;; :tangle FILE (its own, or from the file's #+property: header-args) is
 ;;; written to FILE (relative to the Org file), the blocks of one FILE in

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The build without SDL2 (docs/render.org, "Without SDL2"), after
 # tools/bootstrap.sh has built build/: configures build-norender/ with
 # -DDOWNSTROKE_WITH_RENDER=OFF, builds the host and the bindings' tests,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "accuracy/accuracy.hpp"
 
 #include <cstdio>

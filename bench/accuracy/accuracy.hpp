@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench accuracy: the work-precision benchmark. For collision
 // mode × sub-frames k × resting contacts, how long a frame takes against
 // how far the physics strays from a known truth (accuracy/measures.hpp,

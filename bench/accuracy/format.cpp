@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "accuracy/format.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How the accuracy figures are spelled, shared by the stdout table and the
 // Org document so both say the same.
 #pragma once

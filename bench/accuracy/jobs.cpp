@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "accuracy/jobs.hpp"
 
 #include <algorithm>

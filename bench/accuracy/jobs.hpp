@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Runs independent jobs on a few threads: the long accuracy runs share
 // nothing but read-only scenes, and a 10^5-frame crowd is too slow to run
 // one configuration after another.

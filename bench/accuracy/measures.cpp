@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <memory>
 #include "tiles.hpp"
 #include "accuracy/measures.hpp"

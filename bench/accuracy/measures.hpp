@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The errors `downstroke-bench accuracy` measures, each against a truth
 // known without the engine: the continuous jump, the wall a projectile must
 // not cross, the solids no body may end a frame inside, the start positions

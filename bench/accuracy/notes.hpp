@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the accuracy figures say, in words derived from the figures: the
 // sentence of the Org document that changes with the results. Why each
 // cause happens is hand-written in docs/accuracy.org.

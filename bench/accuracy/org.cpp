@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Org document of `downstroke-bench accuracy` (accuracy/report.hpp): the
 // run's figures and tables between the BEGIN and END markers. How each
 // figure is measured is hand-written in docs/accuracy.org, outside them.

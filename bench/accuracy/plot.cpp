@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "accuracy/plot.hpp"
 
 #include <sys/wait.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The work-precision plot of `downstroke-bench accuracy`, drawn by gnuplot
 // when it is installed: error against milliseconds per frame, one curve per
 // collision mode, a point per k.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The figures of `downstroke-bench accuracy`: one row per Config, the goals
 // they meet or miss, the stdout table and the Org document.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Long runs of one scene under one Config, watched frame by frame: how deep
 // any body ends a frame inside a solid, how far bodies drift from where they
 // started, whether the frame-end positions fall into an exact repeat, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "accuracy/scenes.hpp"
 
 #include "speed/scenes.hpp"

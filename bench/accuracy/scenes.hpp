@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scenes of `downstroke-bench accuracy`: small worlds built for one
 // error each, so that the truth they are measured against is known.
 #pragma once

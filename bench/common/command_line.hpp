@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What every mode's command line uses: option values checked as they are
 // read, and the command line as it was typed, for the reports.
 #pragma once

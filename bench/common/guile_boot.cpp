@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "common/guile_boot.hpp"
 
 #include <libguile.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Guile booted inside the bench process as the downstroke host boots it: the
 // native procedures registered in-process, the project's and the bench's
 // Scheme directories (sources and compiled .go) on the load paths.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "common/org_file.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the bench modes share when they write their Org documents: a
 // generated block between BEGIN and END marker lines, with hand-written notes
 // around it that a new run keeps, and numbers printed the same way.

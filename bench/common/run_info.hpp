@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What every bench mode records about the run beside its figures: the
 // machine, the build, the source it was built from and the command line.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clocks, per-frame statistics, and the frame-time estimates that decide
 // how many frames to run and what to skip.
 #pragma once

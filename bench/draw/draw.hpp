@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench draw: how long the renderer takes to draw one frame of a
 // large map with many sprites (draw/scenes.hpp), in four cases: the scene,
 // every sprite in view, the same view on maps of three sizes, and the debug

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "draw/report.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The figures of `downstroke-bench draw`: one row per case, the two goals,
 // the stdout table and the "Drawing" section of docs/benchmarks.org.
 #pragma once

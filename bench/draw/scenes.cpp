@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "draw/scenes.hpp"
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What `downstroke-bench draw` draws: square maps made in memory from the
 // demo tiles, sprites spread over a map or packed into the view, and the
 // camera's path. All deterministic, so every run draws the same frames.

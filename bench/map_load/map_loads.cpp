@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench map-load: the cost of loading a map, TMX against JSON,
 // per layer encoding, on the same maps:
 // - the demo's platformer (100 × 15 cells, two tilesets, objects) as Tiled

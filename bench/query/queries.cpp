@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench query: the spatial queries game logic calls every frame.
 //
 //   downstroke-bench query [--frames F] [--org FILE]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench query: the spatial queries' cost per frame, native and
 // through Scheme, against a Scheme loop (queries.cpp says what is measured).
 #pragma once

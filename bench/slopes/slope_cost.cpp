@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench slopes: the cost of ramps (semantics §12), as the ramps
 // scene against ramps-flat (speed/scenes.cpp), natively.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench slopes: what ramps cost against the same scene on flat
 // tiles, the two worlds stepped frame by frame in turn (slope_cost.cpp says
 // why and what is measured).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "soak/soak.hpp"
 
 #include <libguile.h>

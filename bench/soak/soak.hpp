@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench soak: every demo (demo/*.scm) run headless for many
 // frames inside this process's Guile, with the memory it holds sampled
 // after a warm-up and at the end (bench/scheme/bench/soak.scm does the

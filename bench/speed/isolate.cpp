@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "speed/isolate.hpp"
 
 #include <unistd.h>

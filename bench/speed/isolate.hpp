@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Guile paths run each combination in a child process of their own
 // (this executable, mode `child`), so every measurement starts from a fresh
 // Guile heap: in one long-lived process the heap a 100000-entity run grew

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "speed/options.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The command line of downstroke-bench: the speed mode's options, which
 // the soak mode shares (mode, --frames, --warmup, --org), and the usage of
 // every mode. The other modes parse their own (common/command_line.hpp).

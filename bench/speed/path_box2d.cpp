@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The box2d path: the same scene in Box2D 2.4 as a speed comparison.
 // Units: 1 m = 32 px, so 8 px boxes are 0.25 m and a 60 px/frame bullet
 // moves 1.875 m per step, under Box2D's 2 m per-step cap (b2_maxTranslation);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The guile and reference paths: Guile booted in this process (as the
 // downstroke host does it), the scene built as keyword-plist entities, and
 // the frames stepped by (bench driver)'s run-frames: a Scheme loop that

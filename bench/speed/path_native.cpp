@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The native path: the scene as a ds::World, one ds::Frame::step per frame;
 // and the bare loop over the same body array.
 #include <vector>

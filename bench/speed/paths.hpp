@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The paths a scene is stepped through. Each builds its own world from the
 // Scene, runs `warmup` untimed frames, then up to `frames` timed frames,
 // under a FrameGuard (common/timing.hpp) built from the config.

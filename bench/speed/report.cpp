@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "speed/report.hpp"
 
 #include <algorithm>

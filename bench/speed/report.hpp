@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The figures of one speed run: the stdout table, JSON and the Org document.
 #pragma once
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "speed/runs.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One combination of scene × N × path: its repetitions, each from a fresh
 // world, under a shared time budget.
 #pragma once

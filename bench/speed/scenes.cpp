@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "speed/scenes.hpp"
 
 #include <algorithm>

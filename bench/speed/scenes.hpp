@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The benchmark scenes: plain data every path builds its own world from, so
 // each path starts from the same bodies, tiles and velocities.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench [speed], the default mode: how long one physics frame
 // takes, per scene × N × path (speed/scenes.hpp, speed/paths.hpp). Each
 // combination is repeated from fresh worlds under a time budget (speed/runs.hpp),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench tile-edit: the cost of one tile edit, on the demo's
 // platformer map (60 × 15 cells) and on a 1000 × 1000-cell map made in
 // memory, two ways:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-bench tile-edit: what one tile edit costs (tile_edits.cpp says
 // what is measured).
 #pragma once

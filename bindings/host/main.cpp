@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The downstroke host: boots Guile with the native procedures registered,
 // points the load paths at the compiled modules, and hands the command line
 // to (downstroke host), which runs a script or the REPL.

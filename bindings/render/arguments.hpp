@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The arguments the renderer's procedures share: colours, the space a draw
 // command is in, gids and symbols.
 #pragma once

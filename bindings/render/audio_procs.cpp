@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Sounds and music as Scheme sees them: one sound bank per process, and
 // what was loaded into it, so that a bank reopened on the real device has it
 // all again.

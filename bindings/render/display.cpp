@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The display's Scheme type, and registering the renderer's procedures.
 #include "display.hpp"
 

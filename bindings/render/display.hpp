@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The display the renderer's procedures share: one per game, an off-screen
 // canvas, the tile pictures, the render hook's draw list, and optionally a
 // window with its input. Built only with SDL2 (render_missing.cpp stands in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Displays as Scheme sees them: making one, its window (opening, closing,
 // fullscreen, what the screen it is on can do), its clear colour, and
 // reading back what it drew (stats, a pixel, a PNG written or compared).

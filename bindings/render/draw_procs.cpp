@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawing a frame (the map, the entities as their keys say they look, the
 // debug overlay, the step before when drawing between two) and the render
 // hook's draw commands.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A window's input as Scheme sees it: the input map that binds keys and
 // controller inputs to actions, and what the window's events say each frame.
 #include <string>

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; jump.scm — one idea: a jump is game logic, not physics.
 ;;;
 ;;; Pressed on the ground, 'a sets the body's #:ay to (- *jump-force*); the

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; pickup.scm — one idea: a sensor pickup.
 ;;;
 ;;; The coin is a sensor: it pushes nothing, and the frame reports each body

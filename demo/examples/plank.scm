@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; plank.scm — one idea: a one-way plank.
 ;;;
 ;;; The plank's tiles (row 8 of maps/platformer.tmx, x 992 to 1088) have the

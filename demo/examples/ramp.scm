@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; ramp.scm — one idea: a ramp.
 ;;;
 ;;; The hill in maps/platformer.tmx (x 704 to 832) is made of tiles with a

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; tween.scm — one idea: a tween.
 ;;;
 ;;; make-tween moves an entity's keys to targets over a time, by an easing

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: 0BSD
 """Draws the demos' pixel art and writes it under demo/maps/.
 
 The outputs are checked in; the build never runs this. Standard library only

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: 0BSD
 """Regenerates the Tiled maps of the demos (demo/*.scm) under demo/maps/
 (all but level1.tmx, which demo/fall.scm and the tests load as it is).
 

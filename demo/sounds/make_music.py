@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: 0BSD
 """Regenerates the demos' music: theme.ogg, a short chiptune loop.
 
 The output is checked in; the build never runs this. It needs `oggenc`

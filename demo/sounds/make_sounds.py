@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: 0BSD
 """Regenerates the demos' sound effects: jump.wav, goal.wav, hit.wav, coin.wav,
 and shmup's shot.wav and boom.wav.
 

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; game.scm — the tutorial's game (docs/tutorial.org): two levels drawn in
 ;;; Tiled, enemies placed as objects, one-way planks, a door to the next
 ;;; level, a HUD and sounds. Made from docs/tutorial.org: edit it there.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke arity) — refusing a hook that cannot take its arguments.
 ;;;
 ;;; A hook of the wrong shape, update: (lambda (game) …), would otherwise

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke compiled-by-content) — a script's compiled copy is used only
 ;;; while its source reads as it did when it was compiled.
 ;;;

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke contacts) — contact events from the frames' reports
 ;;; (semantics §10): which pairs began or ended touching between two frames.
 (define-module (downstroke contacts)

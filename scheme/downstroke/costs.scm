@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke costs) — what a frame cost, step by step, and how often the
 ;;; collector runs. docs/engine.org, "What a frame costs: engine-stats" and
 ;;; "Memory against time: the collector".

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke documentation) — what each export of (downstroke) is, in words.
 ;;;
 ;;; Most exports carry their own docstring. Those that cannot — variables,

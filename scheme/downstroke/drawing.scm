@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke drawing) — drawing a game's frame into its display: the
 ;;; debug overlay, captures to PNG and reading a pixel back.
 ;;; docs/render.org, "What is drawn" and "The debug overlay".

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke engine) — a game: make-game fills in the record, and
 ;;; game-run! runs it through the loop kernel on the back end the host chose
 ;;; (headless, capture or window). Each concern of a running game is a

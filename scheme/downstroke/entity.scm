@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke entity) — entities are keyword plists.
 (define-module (downstroke entity)
   #:use-module (srfi srfi-1)

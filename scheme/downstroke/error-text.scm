@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke error-text) — an error as the author reads it, wherever the
 ;;; engine prints one: a script's uncaught error, a failed check, a hook's
 ;;; error, the REPL's reply, a scene file's refusal.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke frame-hooks) — procedures of no arguments called at the
 ;;; start of every frame of every game, on the game's thread (the host polls
 ;;; its REPL server from one), and whether a headless run keeps to

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke frame) — one fixed step of a game: input, engine-update,
 ;;; update, camera, render; or, paused, a tick that steps nothing.
 ;;; docs/engine.org, "The frame".

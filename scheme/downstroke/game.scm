@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke game) — the game record: its fields, and the checks and
 ;;; setters that keep them valid. Every concern of a running game (input,
 ;;; sound, pause, time travel, recording, drawing, the loop) reads and

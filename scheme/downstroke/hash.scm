@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke hash) — a fingerprint of a scene's physical state, for
 ;;; checking that two runs are the same run (determinism, replays, native
 ;;; against reference) one integer per frame.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke headless) — the headless and capture back ends of the loop:
 ;;; input from the game's input script, one step a turn on a clock that each
 ;;; turn moves on by exactly a step (so a run is as deterministic as the

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke history) — bounded records of a running game, for looking
 ;;; back from a REPL or a test: a ring holding a value for each of the last
 ;;; N frames, and a log that keeps its newest items. Both stay in constant

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke hook-errors) — the bounds on a game's hooks (stack, and time
 ;;; when the host sets one) and, in a game served to a REPL, what an error
 ;;; in a hook does. docs/engine.org, "The frame".

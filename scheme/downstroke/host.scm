@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke host) — what the `downstroke' executable runs.
 (define-module (downstroke host)
   #:declarative? #f

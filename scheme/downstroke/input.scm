@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke input) — what a game's player holds: the input map's
 ;;; bindings, each frame's held actions and the pointer, the queries on them
 ;;; (input-held? …), and the checks of an input script. Keys, buttons and the

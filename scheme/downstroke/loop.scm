@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke loop) — the fixed-step kernel every run of a game goes
 ;;; through: read the clock, poll, take the fixed steps the time owes (at
 ;;; most a few), present, wait for the next present. It reads no clock of

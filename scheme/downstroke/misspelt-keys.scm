@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke misspelt-keys) — an entity key that is a slip of one the
 ;;; engine reads, said once per game or refused. docs/entities.org,
 ;;; "Misspelt keys".

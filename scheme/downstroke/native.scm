@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke native) — the procedures implemented in C++.
 ;;; Not for direct use: the other modules wrap and re-export them.
 (define-module (downstroke native))

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke pause) — pausing a game, and the input clock that keeps
 ;;; counting the ticks it spends paused. docs/engine.org, "Pause".
 (define-module (downstroke pause)

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke physics) — the physics steps, all native.
 (define-module (downstroke physics)
   #:use-module (downstroke native)

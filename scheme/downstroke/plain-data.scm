@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke plain-data) — the values a scene can hash and write to a
 ;;; file: numbers, symbols, keywords, strings, chars, booleans, '(), and
 ;;; pairs and vectors of them. `write' prints each so that `read' gives an

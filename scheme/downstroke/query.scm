@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke query) — what is where: entities in a box or at a point,
 ;;; overlapping pairs between two groups, rays against tiles and entities,
 ;;; and world-point tile queries. All native (src/query.*); results are the

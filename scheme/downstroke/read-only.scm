@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke read-only) — exported constants that refuse set!.
 ;;;
 ;;; A constant exported as a plain variable can be assigned by a game:

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke recording) — replaying an input script and recording the
 ;;; input played, so that a session replays frame for frame.
 ;;; docs/engine.org, "Determinism: scene-hash and replaying input".

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke reference-hash) — scene-hash in plain Scheme.
 ;;;
 ;;; The same value as (downstroke hash)'s native scene-hash, computed from

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke reference) — the physics rules of semantics §1–§6 and §9–§13 in plain Scheme.
 ;;;
 ;;; An executable specification: the same procedures as (downstroke physics),

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke render) — drawing from a game's render: procedure, and how
 ;;; the host asked frames to be shown (headless, a window, captures); it
 ;;; also offers the loading of sounds ((downstroke sound)) and the default

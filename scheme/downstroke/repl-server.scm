@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke repl-server) — the live REPL into a running game.
 ;;;
 ;;; Polled once per frame on the game's own thread, so expressions see and

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke scene-file) — a whole scene in one readable file: a saved
 ;;; game, or a bug report that carries the scene it is about.
 ;;;

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke script-arguments) — what a game script was started with:
 ;;; whether it is the program itself, and its arguments.
 ;;; docs/engine.org, "The downstroke command".

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke script-source) — what the host reads in a script's source
 ;;; itself, where Guile's compiler and expander say too little: the names
 ;;; defined by the files a script `load's (its compiler cannot know them, and

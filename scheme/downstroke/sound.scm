@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke sound) — sounds and music: what a game plays is recorded
 ;;; with its frame (game-sounds, game-music), headless as in a window, and
 ;;; heard when a window is open. docs/engine.org, "Sounds", and

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke starter) — `downstroke new DIR': a new game, written from the
 ;;; templates installed with the engine (templates/starter in the source
 ;;; tree, PREFIX/share/downstroke/templates once installed).

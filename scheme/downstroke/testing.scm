@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke testing) — testing a game like code: `downstroke test' runs
 ;;; every *-test.scm under the paths it is given, each in a script's own
 ;;; environment with SRFI-64, and says what failed, where, expected what.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke tilemap) — Tiled maps and in-memory grids.
 (define-module (downstroke tilemap)
   #:use-module ((downstroke native) #:hide (tilemap-set-tile))

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke time-travel) — the scenes of past frames, and going back
 ;;; to one. docs/engine.org, "Time travel: history and game-rewind!".
 (define-module (downstroke time-travel)

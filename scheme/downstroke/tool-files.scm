@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke tool-files) — what the author's tools (downstroke test and
 ;;; its --junit, read-input-script, record-input and --record, downstroke
 ;;; new) ask of the files they read and write. Only regular files: opening

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke tween) — properties driven from start to end over time.
 (define-module (downstroke tween)
   #:use-module (srfi srfi-1)

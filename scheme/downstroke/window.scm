@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke window) — the window back end of the loop: real time, input
 ;;; from the keyboard, controllers and mouse, each presented frame drawn
 ;;; between the last two steps; and the window's own settings.

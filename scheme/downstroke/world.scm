@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke world) — scenes (immutable) and the camera (mutable).
 (define-module (downstroke world)
   #:use-module (srfi srfi-9)

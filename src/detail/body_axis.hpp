@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One axis of a body — its position, velocity and size along x or along y —
 // so a rule written once serves both axes: push-apart's sharing of an overlap
 // (contacts.cpp) and the snap-out of solid cells (tiles.cpp).

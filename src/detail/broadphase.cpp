@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "broadphase.hpp"
 
 #include <algorithm>

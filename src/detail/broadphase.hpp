@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The entity push-apart pass for many bodies: the same sequential pass over
 // the pairs (i, j), i < j, in list order as the all-pairs loop — same pairs,
 // same order, each seeing what earlier pairs did — but finding each body's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pieces the hashed grids (push-apart, ground support) share: which cell
 // a coordinate falls in, and which bucket a cell goes to.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Push-apart with scratch the caller keeps (a Frame, the Scheme bindings):
 // the core's machinery behind resolve_entity_collisions (contacts.hpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The bindings' key-order log, passed through Frame::step_physics: not part
 // of the public API, because only a caller whose entities may lack fields
 // (the Scheme plists) needs it; a C++ program's bodies have every field.

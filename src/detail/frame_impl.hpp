@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a Frame keeps between frames and the passes that use it: the
 // frame-start scene, the supporters and their index, the census of roles,
 // push-apart's and the groups' scratch, settling. Private to the core.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ground detection against a frame's supporters (the solid bodies copied out
 // at the frame's start), optionally through an index: the core's machinery
 // behind detect_on_solid (ground.hpp).

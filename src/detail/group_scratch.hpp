@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // sync_groups with scratch the caller keeps, so a warm Frame does not
 // allocate: the origins found in the last call.
 #pragma once

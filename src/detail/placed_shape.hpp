@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A cell's shape (cell_shape.hpp) placed in the world, and the few numbers
 // every shape rule of semantics §12 reads from it: its x extent, its top and
 // bottom over a span of x, and whether a box overlaps it. Everything is

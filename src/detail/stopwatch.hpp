@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Wall time for the per-step figures of FrameStats (engine-stats).
 #pragma once
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which frame-start bodies could hold a body up: a hashed grid over the
 // supporters' top edges, so ground detection looks at the few bodies near a
 // body's feet instead of the whole scene. The answer is the same as the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What ground detection reads of a body that can hold others up: its top
 // edge, span, vertical speed, id and categories. A frame copies every solid
 // body out before any moves; at 64 bytes instead of a whole Body the copy, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the Scheme bindings store in a report member (#:blocked, #:touching,
 // #:standing-on; semantics §10) for a plist that lacks the key or holds a
 // value the bindings compare themselves. Private: a C++ body always has its

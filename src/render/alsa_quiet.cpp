@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "alsa_quiet.hpp"
 
 #ifdef DOWNSTROKE_ALSA

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // alsa-lib's own error lines, silenced. On Linux SDL opens the sound card
 // through alsa-lib, whose default error handler writes every step of a
 // failed open to stderr ("ALSA lib confmisc.c:855:(parse_card) cannot find

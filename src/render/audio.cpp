@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "audio.hpp"
 
 #include <SDL.h>

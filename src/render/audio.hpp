@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Sounds and music by name through SDL_mixer. A sound (WAV or OGG) is
 // decoded whole and played on a free channel; music (music_format.hpp) is
 // read whole when loaded and decoded from those bytes as it plays, one

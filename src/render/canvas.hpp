@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The picture a frame is drawn into: an off-screen 32-bit surface of the
 // game's own size. The window shows it scaled up, a capture writes it as it
 // is, so what a test reads back is what a player sees.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A colour with alpha, as game code names it: 0–255 per channel.
 #pragma once
 #include <cstdint>

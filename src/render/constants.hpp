@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every tunable of the renderer, each with the reason for its value.
 #pragma once
 #include <cstdint>

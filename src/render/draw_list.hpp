@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a game's render hook asked to draw this frame, as plain data: the
 // bindings fill it, the canvas draws it after the map and the entities.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The built-in 5 × 7 bitmap font (printable ASCII 32–126) behind glyph_row().
 // The table is written as pictures, one string per row with '#' for ink and
 // '.' for blank, and turned into bits at compile time, so that the source

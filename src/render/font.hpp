@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The built-in bitmap font, so text can be drawn with no font file: printable
 // ASCII (32–126), each glyph 5 px wide and 7 px tall, set in a 6 × 9 cell.
 #pragma once

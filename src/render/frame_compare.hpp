@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A drawn frame against a golden picture (a PNG written earlier): which
 // pixels differ, and pictures that show it. What (downstroke testing)'s
 // check-frame stands on.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "image_header.hpp"
 
 #include <cstring>

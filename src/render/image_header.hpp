@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What an image file says of itself before it is decoded: its format and
 // its size, read from the first bytes of PNG, JPEG, GIF and BMP files (the
 // formats Tiled's tilesets use and the renderer decodes). Pure arithmetic on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Keyboard, game controllers and the mouse → the actions a game reads (left,
 // right, …), and where the pointer is in the game's picture.
 // Actions are small numbers (a game's action names are kept by the caller,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawing between two physics steps (issue 37, "Fix Your Timestep!"): a
 // window presents more often than a game steps, or out of step with it, so
 // each entity and the camera are drawn at previous + α·(current − previous),

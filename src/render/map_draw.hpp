@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a Tiled map as Tiled draws an orthogonal map: every layer in the
 // file's order (tile layers, the tile objects of object layers, image
 // layers; groups passing on their visibility, opacity, tint, offset and

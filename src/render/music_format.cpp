@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "music_format.hpp"
 
 #include <cctype>

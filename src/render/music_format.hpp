@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which music format a file holds, told by its first bytes, and how large a
 // file of that format may be (constants.hpp says why each bound). Only the
 // formats named here are handed to SDL_mixer: it takes anything else for a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ogg_decode.hpp"
 
 #include <vorbis/vorbisfile.h>

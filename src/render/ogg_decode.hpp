@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ogg Vorbis sounds decoded here, with libvorbisfile, rather than by
 // SDL_mixer: its decoder runs to the end of the stream whatever the header
 // claimed, so a forged last page (a 30-minute file claiming one sample)

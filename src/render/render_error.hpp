@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the renderer throws: an image it cannot read, a window or audio device
 // it cannot open. what() names the file or the device and SDL's reason.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a SceneView into a canvas: the map's visible tile layers in order,
 // the entities, the render hook's commands, then the debug overlay.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One frame to draw, as plain data: the map, the camera, the entities' boxes
 // and sprites, what the game's render hook asked for, and the debug overlay's
 // facts. The bindings fill it from the scene; draw_scene draws it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a sound file says of itself before it is decoded: WAV (RIFF/WAVE, its
 // fmt and data chunks) and Ogg Vorbis (the identification header, and the
 // last page's granule position: the stream's length in samples). Pure

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tile_animation.hpp"
 
 #include <algorithm>

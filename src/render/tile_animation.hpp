@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which frame of a Tiled tile animation shows at a moment of the game's
 // clock: Tiled plays a tile's frames in order, each for its duration, and
 // starts over; every cell holding that tile shows the same frame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tile_art.hpp"
 
 #include <SDL_image.h>

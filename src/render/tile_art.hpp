@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pictures of a map's tiles, cut from its tilesets' images and turned by
 // each gid's flip bits. Images are read the first time a tile of theirs is
 // drawn (loading a map never needs them), and every cut and flip is kept, so

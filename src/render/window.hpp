@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A real window that shows a canvas scaled up by a whole factor (nearest
 // pixel, no blur), centred with black bars when the window is larger, and
 // the source of keyboard, mouse, controller and close events. It can be

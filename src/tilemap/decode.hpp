@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Turning the text of a TMX <data> or <chunk> element into gids: base64,
 // the three compressions Tiled writes, and CSV. Knows nothing of XML or of
 // file names: failures throw DecodeError and the loader adds where they came from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The named values of the attributes that say how a map is drawn, as Tiled
 // writes them in TMX and JSON alike; each parser gives nullopt for a name it
 // does not know, and the readers turn that into an error naming the value.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "image_files.hpp"
 
 #include <unordered_map>

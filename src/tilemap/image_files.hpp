@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pictures a loaded map names, checked when it loads rather than when a
 // window first draws them: a headless run, and every test without a golden
 // frame, would otherwise pass on a map that cannot be drawn. Only whether

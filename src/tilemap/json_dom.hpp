@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Parsing a JSON document into nlohmann's DOM, except that the gid arrays
 // of tile layers and chunks ("data": [1, 2, …], every element a whole
 // number up to 2^32 − 1) are kept packed, four bytes a gid, in a binary

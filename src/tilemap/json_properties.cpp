@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // json_properties.hpp: Tiled's JSON properties into the model's Property.
 #include "json_properties.hpp"
 

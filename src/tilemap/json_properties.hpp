@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiled's JSON custom properties ([{name, type, propertytype, value}]) as
 // the model's Property, shared by the map readers and the project file.
 // Every Tiled type is read: scalars keep their text (numbers as JSON writes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The JSON syntax: a .tmj map, a .tsj tileset and a .tj template (Tiled's
 // JSON map format) read with nlohmann::json into the same model pieces the
 // TMX reader makes; what follows parsing (budgets, cell checks, decoding,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // json_values.hpp: typed access with messages that name the JSON path.
 #include "json_values.hpp"
 

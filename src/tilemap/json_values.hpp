@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Strict, typed access to a parsed JSON document (nlohmann::json) for the
 // Tiled JSON readers: every value is fetched by key with the type it must
 // have, and a missing or mistyped one is a JsonError whose message names

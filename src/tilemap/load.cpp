@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The public entry points of loading a map, and the dispatch that sends each
 // file (map, tileset, template) to the reader its content calls for.
 #include "tile_shapes.hpp"

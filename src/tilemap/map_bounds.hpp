@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sizes every map keeps, loaded or made in memory: one check of tile
 // sizes, map sizes and cell extents for both paths, and the cell budget a
 // load draws each layer from. Messages name the value and the limit; the

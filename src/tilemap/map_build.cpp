@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The format-neutral half of loading a map (map_build.hpp). Every failure is
 // a MapError through Where, so it names the file, the line where the format
 // has one, and the value.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What every map reader (TMX, JSON) does once a file's syntax is parsed:
 // the load's budgets, where errors point, the cell checks made from sizes
 // before anything is decoded, decoding and pasting tile data, the gid check

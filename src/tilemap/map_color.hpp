@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A colour as a Tiled map writes it (backgroundcolor=, tintcolor=, an
 // image's trans=): "#RRGGBB" or "#AARRGGBB", the '#' optional.
 #pragma once

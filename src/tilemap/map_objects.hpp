@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a map object is and where a tile object's picture goes: one home for
 // the readers (TMX, JSON), the template merge and the renderer.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "object_index.hpp"
 
 #include <algorithm>

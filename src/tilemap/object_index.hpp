@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where an object layer's tile objects are drawn, indexed by area, so that
 // drawing a view visits only the objects that can show in it: a layer of a
 // million objects costs a frame what the ones in view cost.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // project.hpp: a Tiled project file's property types, and filling the class
 // members a map leaves at their defaults.
 #include "project.hpp"

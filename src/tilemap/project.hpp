@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A Tiled project file (.tiled-project, JSON): the custom property types
 // its "propertyTypes" define, and the post-parse step that fills in the
 // class members a map leaves at their defaults (Tiled writes only the

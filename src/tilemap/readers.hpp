@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The map readers, one per file syntax, and the dispatch between them. Each
 // reader turns one file's text into model pieces and leaves everything after
 // parsing to map_build; the dispatchers tell XML from JSON by content, so a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one place a tile's collision objects (drawn in Tiled's collision
 // editor) become the solid part of the cells that show it (semantics §12):
 // the whole cell, or one CellShape, turned as the cell's flip bits turn the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tilemap.hpp"
 
 #include "tile_shapes.hpp"

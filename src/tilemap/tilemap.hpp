@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A Tiled map in memory: tilesets, tile layers (raw gids, flip bits kept for
 // drawing), object layers, and the solidity rules of semantics §7 that turn it
 // into the TileGrid physics reads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The TMX syntax: a .tmx map, a .tsx tileset and a .tx template read with
 // tinyxml2 into model pieces; what follows parsing (budgets, cell checks,
 // decoding, gid checks, templates) is map_build's. Every failure is a

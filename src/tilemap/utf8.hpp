@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Whether text is valid UTF-8, and where it stops being: every string the
 // map model holds and every message the loader writes must be, so that the
 // Scheme side never meets a byte it cannot decode.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "xml_encoding.hpp"
 
 #include <iconv.h>

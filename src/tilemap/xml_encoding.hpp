@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An XML file's text as UTF-8, whatever encoding it declares: tinyxml2 reads
 // UTF-8 only, and passes any other byte through into the strings it returns.
 #pragma once

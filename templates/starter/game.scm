@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; game.scm — @NAME@, a Downstroke game.
 ;;;
 ;;;   downstroke game.scm            plays the input script below headless

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The native procedures' boundary: what a C++ exception escaping one
 // becomes, and what the registration refuses.
 #include <doctest/doctest.h>

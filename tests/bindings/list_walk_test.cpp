@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Tortoise and circular() of list_walk.hpp: never a false alarm on a list that ends,
 // and a circular one caught within the bound its header promises.
 #include <doctest/doctest.h>

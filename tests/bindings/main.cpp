@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The boundary's doctest suites run inside Guile: main boots it and runs
 // every test case in guile mode.
 #define DOCTEST_CONFIG_IMPLEMENT

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The grid pass must be the all-pairs pass, bit for bit: same pairs, same
 // order, same values and exactness.
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Carriers (carry.hpp, semantics §11): riders carried by a moving platform,
 // bodies crushed against solid cells, on both whole-frame paths.
 #include <vector>

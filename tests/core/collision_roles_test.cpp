@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Who collides with whom, and how (semantics §13): categories and masks,
 // sensors, bounce — in the core, where the bindings' bits arrive.
 #include <algorithm>

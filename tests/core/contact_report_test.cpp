@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The core's part of the contact report (semantics §10): the sides the tile
 // steps stopped a #:contacts? body on, the pairs a frame logs, the supporter
 // ground detection names, and that such a body never sleeps.

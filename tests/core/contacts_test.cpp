@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Entity against entity: aabb_overlap and the sequential push-apart (semantics §4).
 #include <vector>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One whole engine pass (semantics §5): tweens, per-entity steps against the
 // frame-start scene, entity push-apart, groups.
 #include <algorithm>

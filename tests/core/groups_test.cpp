@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Rigid groups: members follow the first origin of their group (semantics §4).
 #include <vector>
 

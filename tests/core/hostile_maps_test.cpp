@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Maps built to exhaust, hang or confuse the loader (issue 19): each ends in
 // a MapError naming the file, the line and the value, in bounded time and
 // memory (the suite finishing shows the bound). The maps live in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pictures a map names, checked when it loads (issue 46): a tileset's
 // image, an image-collection tile's, an image layer's. A missing or
 // unreadable one is a warning naming the tileset (or layer) and the file, or

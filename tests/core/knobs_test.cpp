@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Gravity and speed limits (semantics §14): #:gravity-scale, #:drag,
 // #:max-vx and #:max-vy, alone and in a whole frame with sub-frames.
 #include "frame.hpp"

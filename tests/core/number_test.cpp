@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ds::Num: a double plus whether it is an exact integer (semantics §1).
 #include <cmath>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Spatial queries against brute force: every grid answer equals the plain
 // loop over all boxes (or all cells), in the same order.
 #include <doctest/doctest.h>

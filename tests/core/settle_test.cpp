@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Settling (settle.hpp): the rules both whole-frame paths share, and the
 // frames step-scene runs with them — a caller that knows which bodies come
 // back as left (the same plist), plans, steps the awake ones with

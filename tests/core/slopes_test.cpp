@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shaped cells (semantics §12): ramps and part-tile boxes, walked on,
 // landed on, bumped into; every figure worked out by hand from the rule.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ds::state_hash: FNV-1a 64 over the byte layout documented in
 // state_hash.hpp. The expected values were computed independently (a few
 // lines of Python: struct.pack('<d', v) per number), so these cases pin the

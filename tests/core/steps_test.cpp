@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The motion steps, skip bits and changed_fields (semantics §1, §3, §4).
 #include <cmath>
 #include <cstring>

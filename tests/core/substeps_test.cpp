@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The frame options beyond the seed: sub-frames (FrameOptions::substeps) and
 // resting contacts (FrameOptions::resting_contacts).
 #include <vector>

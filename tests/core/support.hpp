@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Small builders and checks shared by the core test suites.
 #pragma once
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiles that change: SharedCells' copy-on-write chunks, set_tile editing a
 // map and its grid in place, and whole frames (ds::Frame::step, with the
 // settling tracker on and off) seeing every edit on the next frame.

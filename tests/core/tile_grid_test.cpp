@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cell ranges of a box and the TileGrid itself (semantics §4 "Tile cells of a box").
 #include <memory>
 #include <new>

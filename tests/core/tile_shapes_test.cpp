@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiled collision shapes read as cell shapes (semantics §12): which objects
 // make a box, a ramp or the whole cell, how flips turn them, and how the
 // loader and make_tilemap refuse or warn about bad ones.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bodies against solid tiles: per-axis snap-out (discrete and swept) and the
 // ground probe (semantics §4).
 #include <vector>

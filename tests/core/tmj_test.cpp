@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiled's JSON formats (.tmj maps, .tsj tilesets, .tj templates) and the
 // Tiled project file. The twins in tests/data/maps/json are written by
 // tests/data/make_json_maps.py from the TMX test maps; each pair must load

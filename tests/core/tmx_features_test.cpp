@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the TMX reader reads beyond tiles (issue 22): object shapes, templates,
 // class and list properties, the layer tree, tileset extras, gids beyond
 // every tileset, sparse image collections and text encodings, on the maps

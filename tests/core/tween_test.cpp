@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Easing curves, tween timing and tween values (semantics §6).
 #include <string>
 #include <string_view>

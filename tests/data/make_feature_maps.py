@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Regenerates tests/data/maps/features/, the small maps of the TMX features
 tests/core/tmx_features_test.cpp checks with exact values: object shapes,
 templates, class and list properties, the layer tree, tileset extras, gids

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the hostile maps under tests/data/maps/hostile, which the audit of
 issue 19 built to exhaust, hang or confuse the loader; tests/core/
 hostile_maps_test.cpp and tests/scheme/hostile-maps-test.scm assert that each

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Regenerates tests/data/maps/json: the JSON twins (.tmj, .tsj) of the TMX
 test maps, used by tests/core/tmj_test.cpp, which loads each pair and
 asserts the same model.

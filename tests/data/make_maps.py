@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Regenerates the Tiled maps under tests/data/maps used by tests/core/tilemap_test.cpp.
 
 The outputs are checked in; the build never runs this. Run it from anywhere:

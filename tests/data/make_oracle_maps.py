@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Regenerates tests/data/maps/render/oracle/: small maps, each exercising one
 thing Tiled draws, that render.tiled-oracle draws with the engine and with
 Tiled's tmxrasterizer and compares pixel by pixel (issue 34).

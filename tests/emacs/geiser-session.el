@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; geiser-session.el --- what tests/scheme/geiser-test.scm has Geiser do
 ;;; against a served game: attach the way a user does (geiser-connect to
 ;;; DS_GEISER_PORT, or geiser-connect-local to DS_GEISER_SOCKET), then ask

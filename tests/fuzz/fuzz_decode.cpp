@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Differential libFuzzer target (issue 45): every "refuse it before
 // decoding" check against the decoder it protects. The bytes go to the
 // image header reader and the sound header reader; when one accepts them

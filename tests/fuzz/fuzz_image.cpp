@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target for image headers (ds::render::read_image_header, issue
 // 35): whatever the bytes, it returns a size that is positive and within
 // its format's range, or false with a reason; it never reads past the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target for the TMX/TSX loader (ds::load_tilemap). Built twice:
 // as `tmx` the input is the map, which may name the fixed tileset below under
 // any of the names the seed maps use; as `tsx` (DS_FUZZ_TSX) the input is the

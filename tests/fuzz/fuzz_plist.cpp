@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target for the entity plist decoder (bindings/plist.*, batch.*)
 // and the native steps behind it. Guile starts once; each input is read as a
 // recipe for an entity list: keys from the physics key table, unknown

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes tests/fuzz/seeds/decode/: small sound and image files for the
 differential target `decode` (fuzz_decode.cpp), one of each encoding its
 checks count, so mutations start from files the decoders accept.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the plist target's seed recipes (seeds/plist/) in the byte language
 fuzz_plist.cpp reads: typical entities (a falling box, a player on the ground,
 a pushed pair, a group), so fuzzing starts from plists that reach every step;

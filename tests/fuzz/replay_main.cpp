@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Runs a fuzz target's entry point once on each file named (folders: each
 // file in them, dotfiles skipped), as the libFuzzer binary would, but built
 // with any compiler and without libFuzzer: the regression replay of the main

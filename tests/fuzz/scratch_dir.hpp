@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A private folder for the map harnesses: each input is written to a file
 // there (the loader reads paths, not bytes), next to the fixed files it may
 // name. On tmpfs when there is one, so a run's millions of writes stay in memory.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # install.cmake-package: demo/fall.cpp, as installed, built by a tiny CMake
 # project with find_package(Downstroke) and Downstroke::core against the
 # prefix, prints what the build tree's copy prints.

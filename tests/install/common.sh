@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Sourced by the install.* scripts: their arguments (tests/install/CMakeLists.txt),
 # a fresh install into $prefix, and `clean', which runs a command with only
 # the environment it is given (no variable from the caller's shell).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # install.pkg-config: demo/fall.cpp, as installed, built with only
 # `pkg-config --cflags --libs downstroke' against the prefix, prints what the
 # build tree's copy prints.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # install.prefix: a plain `guile' with only the three documented variables
 # for a non-system prefix loads (downstroke) from it (compiled, nothing
 # auto-compiled) and steps a scene; the installed host runs the installed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SoundBank on SDL's dummy audio driver: it decodes every file, plays nothing,
 // and needs no sound card. The WAVs are written here; the OGG is
 // tests/data/sounds/tone.ogg (made by make_tone.py there).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Canvas::blit copies opaque pictures and blends per-pixel-alpha ones itself
 // (canvas.cpp says why): a copy must come out as SDL_BlitSurface would have
 // put it, a blend as the exactly rounded "over" of each pixel, both clipped

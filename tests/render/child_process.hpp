@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Running a piece of a test in a child process: what would block, crash or
 // take memory the test means to measure happens there, and only its answer
 // comes back.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The built-in 5 × 7 bitmap font: glyph_row() for printable ASCII, '?' for
 // anything else, and glyphs that are blank only for space and never alike.
 #include <doctest/doctest.h>

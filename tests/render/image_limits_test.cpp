@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Images a map names, however hostile (issue 35): each file's header is read
 // before anything is decoded, a declared size past the bounds is refused
 // naming the file and the size, and nothing is allocated for it; truncated,

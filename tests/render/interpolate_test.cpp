@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawing between two steps: each view moved α of the way from its match in
 // the step before, teleports and newcomers drawn where they are.
 #include <doctest/doctest.h>

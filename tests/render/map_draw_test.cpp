@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawing what a Tiled map holds beyond tile layers (issue 34), checked
 // against positions and colours computed here from Tiled's documented
 // formulas, for what tmxrasterizer (Tiled 1.8) cannot show: parallax under a

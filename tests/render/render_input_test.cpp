@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bindings by name and what InputState makes of SDL events, fed by hand: no
 // window, no SDL_Init.
 #include <doctest/doctest.h>

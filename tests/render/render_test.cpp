@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawing, checked pixel by pixel against expectations computed here from
 // the picture's definition (not from the renderer's code): tiles at known
 // cells, every flip bit, the camera, sprites, boxes, the overlay, the draw

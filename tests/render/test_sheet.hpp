@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The test tile sheet the renderer's suites draw from: a 2 × 2 sheet of
 // 4 × 4 px tiles whose every pixel differs, written as a PNG, and a map of
 // them, so a misplaced, flipped or shifted pixel shows.

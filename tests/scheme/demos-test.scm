@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The demos (demo/*.scm), each loaded into a fresh module and run headless
 ;;; with its built-in input script, then checked with exact values; and their
 ;;; maps (demo/maps/*.tmx, written by demo/maps/make_maps.py). The demos keep

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Determinism (issue 7, part 5): scene-hash, and runs that hash the same.
 ;;;
 ;;; - scene-hash (native, (downstroke hash)) against the plain-Scheme

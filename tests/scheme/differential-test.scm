@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Differential suite: the native physics, (downstroke physics), against the
 ;;; pure-Scheme reference, (downstroke reference), on random scenes from
 ;;; scene-gen.scm.

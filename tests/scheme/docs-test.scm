@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Every Scheme example of the documentation, run.
 ;;;
 ;;; For each docs/*.org file (in name order) the `#+begin_src scheme' blocks

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Each public procedure's docstring is in one place (bindings/registry.hpp):
 ;;; the native code of a public Scheme procedure only names it, and the
 ;;; procedure it names exists and has a docstring.

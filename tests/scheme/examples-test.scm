@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The five short examples (demo/examples/*.scm), one idea each, run
 ;;; headless with their built-in input and checked with exact values. The
 ;;; test watches each run through a frame hook: the examples keep no record

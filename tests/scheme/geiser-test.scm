@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Geiser attached to a served game: Emacs in batch mode runs
 ;;; tests/emacs/geiser-session.el, which attaches with geiser-connect-local
 ;;; (--repl-server) and geiser-connect (--repl-port) as a user does, and

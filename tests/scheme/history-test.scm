@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))
 
 (load "support.scm")

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The `downstroke' executable itself: its options, its quiet compiling of
 ;;; edited scripts, and how an uncaught error in a script reads.
 (use-modules (srfi srfi-64) (ice-9 textual-ports) (ice-9 ftw) (srfi srfi-1))

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; load-tilemap and make-tilemap against maps built to exhaust, hang or
 ;;; confuse the loader (issue 19): each is an error naming the procedure, the
 ;;; file and the value, and the suite finishing shows the time is bounded.

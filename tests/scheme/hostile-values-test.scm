@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Hostile values (issue 19): circular and improper lists, and values that
 ;;; used to be accepted silently. Each must end in a Scheme error naming the
 ;;; procedure and the key or argument (or, when legal, in the right result);

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke)'s public interface holds every user-facing binding, so that
 ;;; module-map, ,apropos and an editor's completion find them.
 (use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 session) (downstroke documentation))

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Misspelt entity keys: a key a slip away from an engine key is said once
 ;;; per key per game (or refused, strict?), and the author's own keys are not.
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke) (downstroke testing))

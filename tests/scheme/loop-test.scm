@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The fixed-step kernel (downstroke loop) on a fake clock: which turns step
 ;;; how often, what each present is told, the catch-up cap after a stall,
 ;;; and no steps (and no burst after) while unfocused.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Pause (game-paused-set!): paused ticks step nothing — not the physics,
 ;;; not the frame counter, not the history — but read input, call the
 ;;; paused: hook and render:, and unpausing goes on where the game stood.

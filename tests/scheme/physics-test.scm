@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 (define-module (physics-suite) #:declarative? #f)
 (use-modules (srfi srfi-64) (srfi srfi-1)
              (downstroke entity) (downstroke world) (downstroke tween) (downstroke tilemap))

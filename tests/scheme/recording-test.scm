@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Long recordings (issue 45): a replay walks its script once, however many
 ;;; key frames it has; a recording keeps every change of input from frame 0
 ;;; on, up to its bound, and past it says so and quits where it stopped.

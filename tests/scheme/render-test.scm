@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Drawing through the game API: frames captured off-screen (no display) and
 ;;; read back pixel by pixel against colours computed here from the test
 ;;; sheet's definition (tests/data/maps/render/make_render_maps.py), the

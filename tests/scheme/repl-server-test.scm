@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The live REPL: run a game under `downstroke --repl-server PATH`, connect to
 ;;; the socket, move an entity from the REPL, and see the running game notice.
 (use-modules (srfi srfi-64) (ice-9 popen) (ice-9 rdelim) (ice-9 textual-ports) (ice-9 binary-ports)

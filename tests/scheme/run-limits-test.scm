@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; What a script can do to a running game (issue 35): re-entering game-run!,
 ;;; runaway recursion in a hook, and sizes past the bounds. Each case asserts
 ;;; the exact error text.

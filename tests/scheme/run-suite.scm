@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Runs one SRFI-64 test file under the downstroke host and exits non-zero
 ;;; when anything failed: Guile 3.0.8's SRFI-64 alone exits 0 regardless.
 ;;; Usage: downstroke tests/scheme/run-suite.scm FILE.scm

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A game's own state in its scenes (scene-data): kept by every scene-
 ;;; producing procedure, restored by a rewind, hashed by scene-hash.
 (use-modules (srfi srfi-64) (srfi srfi-1) (downstroke))

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; scene-save and scene-load: a whole scene through one readable file,
 ;;; exactly, and a clear refusal of what cannot be written or read.
 (use-modules (srfi srfi-64) (srfi srfi-1) (srfi srfi-11) (ice-9 textual-ports) (ice-9 ftw) (downstroke))

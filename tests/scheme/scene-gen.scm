@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Random scenes for the differential suite (differential-test.scm).
 ;;;
 ;;; (generate-scene SEED)       a scene: entities and (in ~3/4 of the scenes) a tilemap

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Every Scheme example of the seed document (docs: Physics System), run as
 ;;; written — postfix keywords included — followed by the numbers the SPEC
 ;;; implies.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Stress tests (issue 7, part 4): worlds far from the origin, NaN and
 ;;; infinities refused at every door, and the demos run for 10^4 frames with
 ;;; their memory sampled. Kept to a few seconds: the 10^6-frame soak is

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; Helpers shared by the SRFI-64 suites; each suite (load "support.scm").
 (use-modules (srfi srfi-1))
 

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (downstroke testing): play, check-frame against golden pictures, and a
 ;;; recorded session replayed.
 (use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 ftw) (downstroke) (downstroke testing) (downstroke hash))

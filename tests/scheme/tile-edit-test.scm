@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1)
              ((downstroke reference) #:select ((step-scene . reference-step-scene))))
 

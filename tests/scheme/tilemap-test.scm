@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 (use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
 
 (load "support.scm")

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A real window: `downstroke --window --scale 2 --repl-server S' under
 ;;; Xvfb, the Right arrow held with xdotool (the X server's own key events,
 ;;; through SDL's keyboard path and the default input map), a screenshot of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws maps whole with the engine and with Tiled's own renderer,
 // tmxrasterizer, and compares the two pictures pixel by pixel (issue 34).
 //

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """An independent reader of Tiled maps, for the corpus test.
 
 Written from Tiled's format documentation (docs/reference/tmx-map-format.rst,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // downstroke-dump-map: loads a map with ds::load_tilemap and prints the
 // corpus test's canonical dump of the model (tilemap.hpp) and its
 // solid_grid(), line for line what decode_tiled.py prints from the file.

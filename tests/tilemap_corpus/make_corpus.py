@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Rebuilds tests/tilemap_corpus/maps/ with the real Tiled editor.
 
     QT_QPA_PLATFORM=offscreen tests/tilemap_corpus/make_corpus.py

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """The tilemap corpus test: for every map in maps/MANIFEST, the dump
 downstroke-dump-map prints from ds::load_tilemap must equal the one
 decode_tiled.py prints from the file. Stops at the first mismatch with a

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (bench driver) — the Scheme side of downstroke-bench: builds a scene from
 ;;; the entity plists the C++ side made, and runs the timed frame loop.
 ;;;

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; (bench soak) — runs a demo (demo/*.scm) headless for many frames and
 ;;; samples the memory it holds: `downstroke-bench soak' (10^6 frames) and
 ;;; tests/scheme/stress-test.scm (10^4 frames) share it, so both measure the

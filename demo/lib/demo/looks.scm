@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; (demo looks) — what every demo looks and sounds like: the sprites'
 ;;; gids, the sound effects and the theme, found beside the demos wherever
 ;;; they are run from. A demo puts demo/lib on its load path and uses it:

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; The tutorial's tests (docs/tutorial.org, where they are made from).
 (use-modules (downstroke testing))
 (load "../game.scm")

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: 0BSD
 ;;; The game's tests: `downstroke test' runs every tests/*-test.scm.
 ;;; A game is a pure function of its input, so each test plays a fresh game
 ;;; headless with an input script and checks exact values.

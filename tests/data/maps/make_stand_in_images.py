@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the pictures the test maps name, so that loading them finds every
 image (a missing one is a warning, or strict?'s error, since issue 46) and
 the tests about something else see only the warnings they are about. Each

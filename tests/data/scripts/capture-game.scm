@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A tiny game for the capture tests: a box falls onto the render map's
 ;;; floor; the render hook writes the frame number in the corner.
 (define here (dirname (current-filename)))

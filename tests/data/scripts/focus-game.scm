@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The window test's focus game (tests/scheme/window-test.scm): a 64 × 48
 ;;; window with pause-when-unfocused?, saying "frame N" every 20 frames, so
 ;;; the test sees when it steps and when it does not.

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A game whose update hook fails in frame 3, for tests/scheme/repl-server-test.scm:
 ;;; without a REPL server the error ends the script (status 1).
 (define game

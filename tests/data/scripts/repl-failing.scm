@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A served game whose script fails after its game loop: for
 ;;; tests/scheme/repl-server-test.scm to see that an error that ends the
 ;;; script still removes the REPL socket.

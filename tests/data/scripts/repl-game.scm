@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A game for tests/scheme/repl-server-test.scm: a box at x 0 that nothing
 ;;; moves. It exits 0 as soon as the box has been moved to x ≥ 500 (from the
 ;;; REPL), or 3 after 1000 frames (16 s of paced frames).

@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A game for tests/scheme/repl-server-test.scm to drive from the REPL: a
 ;;; box nothing moves, paced frames. It ends when an update hook exits, or
 ;;; with status 3 after 3000 frames (48 s), so a failed test cannot leave it.

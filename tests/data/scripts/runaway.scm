@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; A game whose update: hook recurses without end, for
 ;;; tests/scheme/run-limits-test.scm. With the argument "caught" it catches
 ;;; the error and prints, one per line: the error's key, its text, the ms it

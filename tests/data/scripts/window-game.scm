@@ -1,3 +1,4 @@
+;; SPDX-License-Identifier: MIT
 ;;; The window test's game (tests/scheme/window-test.scm runs it under Xvfb
 ;;; with `downstroke --window --scale 2'): a 64 × 48 picture with a 6 × 6
 ;;; box that walks right one pixel a frame while 'right is held (the test

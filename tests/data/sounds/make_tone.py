@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Regenerates tests/data/sounds/tone.ogg, the OGG that tests/core/audio_test.cpp loads.
 
 The output is checked in; neither the build nor the tests run this. It needs

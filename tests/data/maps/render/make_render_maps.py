@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the render tests' map: sheet.png, a 2 x 2 sheet of 8 x 8 tiles in
 which every pixel of every tile has its own colour,
 
