@@ -45,7 +45,7 @@
 (use-modules (ice-9 format) (srfi srfi-1))
 ;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
 (add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
-(use-modules (demo looks))
+(use-modules (demo looks) (demo events))
 
 (define level (load-tilemap (demo-file "maps/platformer.tmx")))
 
@@ -114,15 +114,10 @@
 ;;; ------------------------------------------------------------ what happened
 (define trace? (main-script? "platformer.scm"))   ; headless as the host's script: print as it goes
 
-;;; What happened, (frame . what), newest first: printed when tracing, and
-;;; kept for a REPL looking back and for the soak bench, which checks that
-;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
-;;; The tests watch the frames themselves, through a frame hook.
-(define events (make-bounded-log))
+;;; What happened: (demo events).
+(define events (make-events trace?))
 
-(define (note-at! frame what)
-  (set! events (bounded-log-push events (cons frame what) 500))
-  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
+(define (note-at! frame what) (note-event! events frame what))
 
 (define (note! game what) (note-at! (game-frame game) what))
 

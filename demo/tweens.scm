@@ -31,7 +31,7 @@
 (use-modules (ice-9 format) (srfi srfi-1))
 ;;; The demos' shared looks and sounds: (demo looks), in demo/lib.
 (add-to-load-path (canonicalize-path (string-append (dirname (current-filename)) "/lib")))
-(use-modules (demo looks))
+(use-modules (demo looks) (demo events))
 
 ;;; ------------------------------------------------------------ looks and sounds
 (define backdrop (load-tilemap (demo-file "maps/tweens.tmx")))
@@ -48,15 +48,10 @@
 ;;; ------------------------------------------------------------ what happened
 (define trace? (main-script? "tweens.scm"))   ; headless as the host's script: print as it goes
 
-;;; What happened, (frame . what), newest first: printed when tracing, and
-;;; kept for a REPL looking back and for the soak bench, which checks that
-;;; it stays bounded (the newest 500 to 1000, see (downstroke history)).
-;;; The tests watch the frames themselves, through a frame hook.
-(define events (make-bounded-log))
+;;; What happened: (demo events).
+(define events (make-events trace?))
 
-(define (note-at! frame what)
-  (set! events (bounded-log-push events (cons frame what) 500))
-  (when trace? (format #t "frame ~3d: ~a~%" frame what)))
+(define (note-at! frame what) (note-event! events frame what))
 
 (define (note! what)
   ;; `game' is defined below; on-complete procedures run inside it.
@@ -172,7 +167,7 @@
          (get (lambda (id) (find (lambda (e) (eq? (entity-ref e #:id) id)) entities)))
          (pulse (get 'pulse))
          (fader (get 'fader))
-         (hits (count (lambda (e) (eq? (cadr e) 'hit)) (bounded-log-items events))))
+         (hits (count (lambda (e) (eq? (cadr e) 'hit)) (events-items events))))
     (draw-rect 0 212 320 2 '(98 58 42) fill?: #t)            ; the walker's floor
     (draw-rect 0 214 320 26 '(56 34 32) fill?: #t)
     (for-each (lambda (l) (draw-text (caddr l) (car l) (cadr l) label-color)) labels)

@@ -110,5 +110,5 @@ demo's event list and the game's sound log hold at the end)."
         (seconds . ,(exact->inexact (/ running internal-time-units-per-second)))
         (heap-start . ,(car start)) (heap-mid . ,(car mid)) (heap-end . ,(car end))
         (rss-start . ,(cdr start)) (rss-mid . ,(cdr mid)) (rss-end . ,(cdr end))
-        (events . ,(length (bounded-log-items (module-ref m 'events))))
+        (events . ,(length ((module-ref (resolve-interface '(demo events)) 'events-items) (module-ref m 'events))))
         (sounds . ,(length (game-sounds game)))))))
