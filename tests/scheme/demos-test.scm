@@ -8,15 +8,7 @@
 (load "support.scm")   ; demo-dir
 
 (define (load-demo name)
-  "A fresh module that uses (downstroke), with demo/NAME loaded into it. The
-demos' top-level names stay in that module."
-  (let ((m (make-fresh-user-module)))
-    (module-use! m (resolve-interface '(downstroke)))
-    (save-module-excursion
-     (lambda ()
-       (set-current-module m)
-       (load (string-append demo-dir "/" name))))
-    m))
+  (load-in-fresh-module (string-append demo-dir "/" name)))
 
 (define seen (make-weak-key-hash-table)) ; demo module → (frame → its entities)
 

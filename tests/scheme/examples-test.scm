@@ -8,15 +8,7 @@
 (load "support.scm")   ; demo-dir
 
 (define (load-example name)
-  "A fresh module that uses (downstroke), with demo/examples/NAME loaded into
-it, so that each example's names stay its own."
-  (let ((m (make-fresh-user-module)))
-    (module-use! m (resolve-interface '(downstroke)))
-    (save-module-excursion
-     (lambda ()
-       (set-current-module m)
-       (load (string-append demo-dir "/examples/" name))))
-    m))
+  (load-in-fresh-module (string-append demo-dir "/examples/" name)))
 
 (define (traced name frames)
   "(game . ends): the example NAME's fresh game played FRAMES frames, and a

@@ -26,3 +26,14 @@
     (canonicalize-path
      (or (find (lambda (d) (file-exists? (string-append d "/platformer.scm"))) candidates)
          (error "cannot find the demo directory" candidates)))))
+
+(define (load-in-fresh-module file)
+  "A fresh module that uses (downstroke), with FILE loaded into it, so that
+a demo's or an example's top-level names stay its own."
+  (let ((m (make-fresh-user-module)))
+    (module-use! m (resolve-interface '(downstroke)))
+    (save-module-excursion
+     (lambda ()
+       (set-current-module m)
+       (load file)))
+    m))
