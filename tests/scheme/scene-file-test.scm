@@ -109,45 +109,52 @@
   (write-text (in-dir "bad.scm") text)
   (error-text (lambda () (scene-load (in-dir "bad.scm")))))
 (define bad (object->string (in-dir "bad.scm")))
-(test-equal "read-eval is off"
-  (string-append "In procedure scene-load: " bad ": not a scene file: it does not read as one Scheme datum (#. read expansion found and read-eval? is #f.)\n")
-  (load-error "(downstroke-scene #.(system \"touch pwned\"))"))
-(test-equal "two datums"
-  (string-append "In procedure scene-load: " bad ": not a scene file: more than one datum\n")
-  (load-error "(downstroke-scene (version 1)) (more)"))
-(test-equal "not a scene"
-  (string-append "In procedure scene-load: " bad ": not a scene file: expected (downstroke-scene (version 1) …)\n")
-  (load-error "(hello world)"))
-(test-equal "a later version"
-  (string-append "In procedure scene-load: " bad ": version 2, expected 1 (this engine's)\n")
-  (load-error "(downstroke-scene (version 2))"))
-(test-equal "a missing part"
-  (string-append "In procedure scene-load: " bad ": not a scene file: no (camera …)\n")
-  (load-error "(downstroke-scene (version 1) (frame #f) (tilemap #f) (tile-edits) (camera-target #f) (data #f) (entities))"))
 (define (scene-text entities)
   (string-append "(downstroke-scene (version 1) (frame 3) (tilemap #f) (tile-edits) (camera 0 0) (camera-target #f) (data #f) (entities " entities "))"))
-(test-equal "an exactness prefix: a few bytes that read as a huge number"
-  (string-append "In procedure scene-load: " bad ": not a scene file: it holds an exactness prefix (#e), which scene-save never writes and which can make a number of millions of digits from a few bytes\n")
-  (load-error (scene-text "(#:x #e1e99999 #:name \"#e in a string is fine\")")))
 (test-equal "… but #e in a string, or the char #\\\", is no prefix" '((#:name "#e1e9" #:c #\"))
   (begin (write-text (in-dir "ok.scm") (scene-text "(#:name \"#e1e9\" #:c #\\\")"))
          (scene-entities (scene-load (in-dir "ok.scm")))))
-(test-equal "an entity that is not a keyword list"
-  (string-append "In procedure scene-load: " bad ": entity 1: expected a keyword list (#:key value …), got (#:x 1 #:y)\n")
-  (load-error (scene-text "(#:x 0) (#:x 1 #:y)")))
-(test-equal "a bytevector is not plain data"
-  (string-append "In procedure scene-load: " bad ": not a scene file: the file holds #vu8(1 2), which is not plain data (numbers, symbols, keywords, strings, chars, booleans, and lists and vectors of them)\n")
-  (load-error (scene-text "(#:x #vu8(1 2))")))
-(test-equal "nesting past the bound"
-  (string-append "In procedure scene-load: " bad ": not a scene file: the file: expected plain data nested at most 10000 deep (a cycle through a car or a vector?)\n")
-  (load-error (scene-text (string-append "(#:x " (make-string 20000 #\() (make-string 20000 #\)) ")"))))
-(test-equal "a camera at NaN"
-  (string-append "In procedure scene-load: " bad ": (camera x y): expected two numbers, got (+nan.0)\n")
-  (load-error "(downstroke-scene (version 1) (frame #f) (tilemap #f) (tile-edits) (camera +nan.0) (camera-target #f) (data #f) (entities))"))
-(test-equal "a tile edit outside its map"
-  (string-append "In procedure scene-load: " bad ": tile edit (0 999 0 1): expected (layer col row gid) of a cell of its map\n")
-  (load-error (string-append "(downstroke-scene (version 1) (frame #f) (tilemap (" (object->string level-file)
-                             " () #f #f #f #f)) (tile-edits (0 999 0 1)) (camera 0 0) (camera-target #f) (data #f) (entities))")))
+(for-each
+ (lambda (case)
+   (test-equal (car case)
+     (string-append "In procedure scene-load: " bad ": " (cadr case) "\n")
+     (load-error (caddr case))))
+ ;; (name, what the refusal says after the file's name, the file's text)
+ (list
+  (list "read-eval is off"
+   "not a scene file: it does not read as one Scheme datum (#. read expansion found and read-eval? is #f.)"
+   "(downstroke-scene #.(system \"touch pwned\"))")
+  (list "two datums"
+   "not a scene file: more than one datum"
+   "(downstroke-scene (version 1)) (more)")
+  (list "not a scene"
+   "not a scene file: expected (downstroke-scene (version 1) …)"
+   "(hello world)")
+  (list "a later version"
+   "version 2, expected 1 (this engine's)"
+   "(downstroke-scene (version 2))")
+  (list "a missing part"
+   "not a scene file: no (camera …)"
+   "(downstroke-scene (version 1) (frame #f) (tilemap #f) (tile-edits) (camera-target #f) (data #f) (entities))")
+  (list "an exactness prefix: a few bytes that read as a huge number"
+   "not a scene file: it holds an exactness prefix (#e), which scene-save never writes and which can make a number of millions of digits from a few bytes"
+   (scene-text "(#:x #e1e99999 #:name \"#e in a string is fine\")"))
+  (list "an entity that is not a keyword list"
+   "entity 1: expected a keyword list (#:key value …), got (#:x 1 #:y)"
+   (scene-text "(#:x 0) (#:x 1 #:y)"))
+  (list "a bytevector is not plain data"
+   "not a scene file: the file holds #vu8(1 2), which is not plain data (numbers, symbols, keywords, strings, chars, booleans, and lists and vectors of them)"
+   (scene-text "(#:x #vu8(1 2))"))
+  (list "nesting past the bound"
+   "not a scene file: the file: expected plain data nested at most 10000 deep (a cycle through a car or a vector?)"
+   (scene-text (string-append "(#:x " (make-string 20000 #\() (make-string 20000 #\)) ")")))
+  (list "a camera at NaN"
+   "(camera x y): expected two numbers, got (+nan.0)"
+   "(downstroke-scene (version 1) (frame #f) (tilemap #f) (tile-edits) (camera +nan.0) (camera-target #f) (data #f) (entities))")
+  (list "a tile edit outside its map"
+   "tile edit (0 999 0 1): expected (layer col row gid) of a cell of its map"
+   (string-append "(downstroke-scene (version 1) (frame #f) (tilemap (" (object->string level-file)
+                             " () #f #f #f #f)) (tile-edits (0 999 0 1)) (camera 0 0) (camera-target #f) (data #f) (entities))"))))
 (test-equal "a directory"
   (string-append "In procedure scene-load: " (object->string dir) ": expected a regular file, got a directory\n")
   (error-text (lambda () (scene-load dir))))
