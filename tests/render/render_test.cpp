@@ -14,6 +14,7 @@
 #include <csignal>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,16 @@ void check_tile_at(const Canvas& c, int left, int top, int t, uint32_t flips) {
 Rgba blended(Rgba src, Rgba dst, uint8_t a) {  // the usual "over", rounded
     auto m = [a](int s, int d) { return uint8_t((s * a + d * (255 - a) + 127) / 255); };
     return {m(src.r, dst.r), m(src.g, dst.g), m(src.b, dst.b), 255};
+}
+
+// Draws the entities `es` over the map `m` (none: nullptr) onto `c`, as a
+// frame's scene is drawn, with no camera, overlay or draw commands.
+DrawCounts draw_entities(Canvas& c, const Tilemap* m, std::span<const EntityView> es) {
+    TileArt art;
+    SceneView v;
+    v.map = m;
+    v.entities = es;
+    return draw_scene(c, art, v);
 }
 
 }  // namespace
@@ -193,11 +204,7 @@ TEST_CASE("a sprite stands bottom-centred in its entity's box, flip-x mirrors it
     es[0] = {.x = 2, .y = 1, .w = 6, .h = 5, .sprite = 4};  // drawn at (3, 2)
     es[1] = {.x = 10, .y = 0, .w = 4, .h = 4, .sprite = 2, .flip_x = true};
     Canvas c(16, 8);
-    TileArt art;
-    SceneView v;
-    v.map = &m;
-    v.entities = es;
-    const DrawCounts n = draw_scene(c, art, v);
+    const DrawCounts n = draw_entities(c, &m, es);
     CHECK(n.sprites == 2);
     CHECK(n.boxes == 0);
     check_tile_at(c, 3, 2, 3, 0);
@@ -237,10 +244,7 @@ TEST_CASE("an entity's colour fills its box, blended by its alpha; a sprite no m
     es[1] = {.x = 6, .y = 0, .w = 2, .h = 2, .color = Rgba{0, 100, 200, 128}};
     es[2] = {.x = 9, .y = 0, .w = 1, .h = 1, .sprite = 3, .color = Rgba{1, 2, 3, 255}};  // no map: no picture
     Canvas c(12, 4);
-    TileArt art;
-    SceneView v;
-    v.entities = es;
-    CHECK(draw_scene(c, art, v).boxes == 3);
+    CHECK(draw_entities(c, nullptr, es).boxes == 3);
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 5; ++x) CHECK(c.pixel(x, y) == (x >= 1 && x < 4 && y >= 1 && y < 3 ? Rgba{200, 40, 60, 255} : kBackground));
     CHECK(c.pixel(7, 1) == blended({0, 100, 200, 255}, kBackground, 128));
@@ -253,11 +257,7 @@ TEST_CASE("a hidden entity draws nothing, sprite or colour") {
     es[0] = {.x = 0, .y = 0, .w = 4, .h = 4, .sprite = 2, .visible = false};
     es[1] = {.x = 4, .y = 0, .w = 4, .h = 4, .visible = false, .color = Rgba{255, 0, 0, 255}};
     Canvas c(8, 4);
-    TileArt art;
-    SceneView v;
-    v.map = &m;
-    v.entities = es;
-    const DrawCounts n = draw_scene(c, art, v);
+    const DrawCounts n = draw_entities(c, &m, es);
     CHECK(n.sprites + n.boxes == 0);
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 8; ++x) CHECK(c.pixel(x, y) == kBackground);
@@ -268,11 +268,7 @@ TEST_CASE("a sprite's offset moves it by exactly (dx, dy); its body stays") {
     std::vector<EntityView> es(1);
     es[0] = {.x = 2, .y = 1, .w = 6, .h = 5, .sprite = 4, .sprite_dx = 5, .sprite_dy = -1};  // unmoved at (3, 2)
     Canvas c(16, 8);
-    TileArt art;
-    SceneView v;
-    v.map = &m;
-    v.entities = es;
-    CHECK(draw_scene(c, art, v).sprites == 1);
+    CHECK(draw_entities(c, &m, es).sprites == 1);
     check_tile_at(c, 8, 1, 3, 0);
     CHECK(c.pixel(3, 5) == kBackground);  // where it stood unmoved (below the moved one's rows)
     CHECK(c.pixel(7, 2) == kBackground);
@@ -285,11 +281,7 @@ TEST_CASE("a moved, scaled or turned sprite is culled where its picture is, not 
     es[1] = {.x = 0, .y = 0, .w = 4, .h = 4, .sprite = 3, .sprite_dx = 2000};      // body in view, picture far away
     es[2] = {.x = 1000, .y = 0, .w = 4, .h = 4, .sprite = 2, .sprite_dx = -1000};  // body far away, picture at (0, 0)
     Canvas c(8, 4);
-    TileArt art;
-    SceneView v;
-    v.map = &m;
-    v.entities = es;
-    CHECK(draw_scene(c, art, v).sprites == 2);
+    CHECK(draw_entities(c, &m, es).sprites == 2);
     check_tile_at(c, 0, 0, 1, 0);
 }
 
@@ -301,11 +293,7 @@ TEST_CASE("a sprite scaled 2 is twice its size, standing on the same bottom-cent
     // Only x doubled: 8 × 4 on the same bottom-centre (18, 4).
     es[1] = {.x = 16, .y = 0, .w = 4, .h = 4, .sprite = 3, .scale_x = 2};
     Canvas c(28, 16);
-    TileArt art;
-    SceneView v;
-    v.map = &m;
-    v.entities = es;
-    CHECK(draw_scene(c, art, v).sprites == 2);
+    CHECK(draw_entities(c, &m, es).sprites == 2);
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x) {
             CAPTURE(x);
@@ -326,11 +314,7 @@ TEST_CASE("a sprite turned 90 degrees turns clockwise about its centre") {
     std::vector<EntityView> es(1);
     es[0] = {.x = 4, .y = 4, .w = 4, .h = 4, .sprite = 2, .degrees = 90};  // unturned: (4..7, 4..7), centre (6, 6)
     Canvas c(12, 12);
-    TileArt art;
-    SceneView v;
-    v.map = &m;
-    v.entities = es;
-    draw_scene(c, art, v);
+    draw_entities(c, &m, es);
     // Clockwise on screen (y down): the offset (a, b) from the centre goes to
     // (−b, a), so pixel (u, v)'s centre (4.5 + u, 4.5 + v) lands on
     // (7.5 − v, 4.5 + u): pixel (7 − v, 4 + u). The top-left corner goes top-right.
