@@ -26,9 +26,9 @@ double overlap(Num p1, Num s1, Num p2, Num s2) {
 // pointed at the fixed body); one moving away keeps 0 too.
 Num stopped_by(Num v, bool into, Num bounce) { return into ? rebound(v, bounce) : Num::integer(0); }
 
-// Returns the side of m that met s (§10).
-uint8_t push_off_immovable(Body& m, const Body& s, double ox, double oy) {
-    const Num bounce = pair_bounce(m, s);
+// Returns the side of m that met s (§10). `bounce` is the pair's, taken in
+// list order (§13: on a tie, the earlier entity's), whichever of the two moves.
+uint8_t push_off_immovable(Body& m, const Body& s, double ox, double oy, Num bounce) {
     if (2 * m.y.v + m.h.v < 2 * s.y.v + s.h.v) {
         m.y = s.y - m.h;
         m.vy = stopped_by(m.vy, m.vy.v > 0, bounce);
@@ -149,13 +149,14 @@ uint8_t resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     if (a.immovable && b.immovable) return entry_side(a, b);
     const double ox = overlap(a.x, a.w, b.x, b.w);
     const double oy = overlap(a.y, a.h, b.y, b.h);
+    const Num bounce = pair_bounce(a, b);
     // The fixed body's side is the opposite of the one pushed off it.
-    if (a.immovable) return opposite_side(push_off_immovable(b, a, ox, oy));
-    if (b.immovable) return push_off_immovable(a, b, ox, oy);
-    if (a_rests && lands_on(b, a)) return opposite_side(push_off_immovable(b, a, ox, oy));
-    if (b_rests && lands_on(a, b)) return push_off_immovable(a, b, ox, oy);
-    if (ox < oy) return facing(true, push_apart(along_x(a), along_x(b), ox, pair_bounce(a, b)));
-    return facing(false, push_apart(along_y(a), along_y(b), oy, pair_bounce(a, b)));
+    if (a.immovable) return opposite_side(push_off_immovable(b, a, ox, oy, bounce));
+    if (b.immovable) return push_off_immovable(a, b, ox, oy, bounce);
+    if (a_rests && lands_on(b, a)) return opposite_side(push_off_immovable(b, a, ox, oy, bounce));
+    if (b_rests && lands_on(a, b)) return push_off_immovable(a, b, ox, oy, bounce);
+    if (ox < oy) return facing(true, push_apart(along_x(a), along_x(b), ox, bounce));
+    return facing(false, push_apart(along_y(a), along_y(b), oy, bounce));
 }
 
 namespace {

@@ -1396,6 +1396,16 @@
   (keys-of (car (after-frame (list (role-box 'a 0 0 #:vy 5 #:bounce 1)
                                    (role-box 'b 0 9 #:immovable? #t))))
            '(#:y #:vy)))
+(test-equal "bounces that tie take the earlier entity's, whichever moves: the immovable's exact 1 over the faller's 1.0"
+  '(-1 -5)
+  (keys-of (cadr (after-frame (list (role-box 'b 0 9 #:immovable? #t #:bounce 1)
+                                    (role-box 'a 0 0 #:vy 5 #:bounce 1.0))))
+           '(#:y #:vy)))
+(test-equal "… and the immovable's 1.0 over the faller's exact 1"
+  '(-1 -5.0)
+  (keys-of (cadr (after-frame (list (role-box 'b 0 9 #:immovable? #t #:bounce 1.0)
+                                    (role-box 'a 0 0 #:vy 5 #:bounce 1))))
+           '(#:y #:vy)))
 (test-equal "bounce 1 between equals: they swap velocities, exactly" '((1 0) (11 4))
   (map (lambda (e) (keys-of e '(#:x #:vx)))
        (after-frame (list (role-box 'a 0 0 #:vx 4 #:bounce 1) (role-box 'b 9 0)))))
