@@ -15,6 +15,7 @@
   #:use-module ((ice-9 binary-ports) #:select (get-bytevector-all put-bytevector))
   #:use-module ((rnrs bytevectors) #:select (bytevector=?))
   #:use-module ((downstroke script-source) #:select (loaded-files))
+  #:use-module ((downstroke tool-files) #:select (call-with-output-file/whole))
   #:export (forget-stale-compiled!))
 
 (define (file-bytes file)
@@ -28,13 +29,6 @@
   (let ((kept (file-bytes file)))
     (and kept (bytevector=? kept bytes))))
 
-(define (write-bytes! file bytes)
-  ;; Whole or not at all (a half-written record would only cost a compile,
-  ;; but a record must never match a source it was not taken from).
-  (let ((temp (string-append file ".new")))
-    (call-with-output-file temp (lambda (port) (put-bytevector port bytes)) #:binary #t)
-    (rename-file temp file)))
-
 (define (forget-stale-compiled-file! file)
   (let ((bytes (file-bytes file))
         (go (false-if-exception (compiled-file-name file))))
@@ -47,7 +41,10 @@
           ;; report, or to do without.
           (false-if-exception
            (begin (mkdir-p (dirname record))
-                  (write-bytes! record bytes))))))))
+                  ;; Whole or not at all, through a temporary file of its own:
+                  ;; a record must never match a source it was not taken from.
+                  (call-with-output-file/whole "downstroke" record
+                    (lambda (port) (put-bytevector port bytes))))))))))
 
 (define (mkdir-p dir)
   (unless (file-exists? dir)
