@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "carry.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "constants.hpp"
@@ -96,10 +98,16 @@ void note_in_way(std::span<const Body> bodies, std::span<const Body> start,
     }
 }
 
-void crush_in_way(std::span<Body> bodies, const TileGrid* grid, const CarryScratch& scratch) {
+void crush_in_way(std::span<Body> bodies, std::span<const size_t> carriers, const TileGrid* grid,
+                  bool walls_cut, const CarryScratch& scratch) {
     if (grid == nullptr) return;
+    auto held = [&](const Body& m) {
+        return walls_cut && std::any_of(carriers.begin(), carriers.end(), [&](size_t c) {
+                   return !bodies[c].one_way && categories_meet(m, bodies[c]) && aabb_overlap(m, bodies[c]);
+               });
+    };
     for (const size_t m : scratch.in_way)
-        if (overlaps_solid(bodies[m], *grid)) bodies[m].crushed = true;
+        if (overlaps_solid(bodies[m], *grid) || held(bodies[m])) bodies[m].crushed = true;
 }
 
 }  // namespace ds

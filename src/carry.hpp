@@ -47,7 +47,10 @@ void carry_riders(std::span<Body> bodies, std::span<const Body> start,
 void note_in_way(std::span<const Body> bodies, std::span<const Body> start,
                  std::span<const size_t> carriers, std::span<const size_t> members,
                  CarryScratch& scratch);
-// After push-apart: those of them now overlapping a solid cell are crushed.
-void crush_in_way(std::span<Body> bodies, const TileGrid* grid, const CarryScratch& scratch);
+// After push-apart: those of them now overlapping a solid cell are crushed;
+// with `walls_cut` (the default push rule, §4, where a solid cell cuts the
+// push short) so are those still overlapping a carrier (not one-way).
+void crush_in_way(std::span<Body> bodies, std::span<const size_t> carriers, const TileGrid* grid,
+                  bool walls_cut, const CarryScratch& scratch);
 
 }  // namespace ds

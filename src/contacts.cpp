@@ -9,6 +9,7 @@
 #include "detail/body_axis.hpp"
 #include "constants.hpp"
 #include "detail/contact_scratch.hpp"
+#include "detail/tile_clip.hpp"
 
 namespace ds {
 
@@ -26,21 +27,38 @@ double overlap(Num p1, Num s1, Num p2, Num s2) {
 // pointed at the fixed body); one moving away keeps 0 too.
 Num stopped_by(Num v, bool into, Num bounce) { return into ? rebound(v, bounce) : Num::integer(0); }
 
+// Puts a body's position along one axis at `target`: there under the
+// seed's rule (no walls) or when nothing stops the move, else as far as
+// clipped_push lets it go (§4, push-apart never leaves a body in a solid).
+void place(Body& b, bool x_axis, Num target, const TileGrid* walls) {
+    Num& pos = x_axis ? b.x : b.y;
+    if (walls) {
+        const Num d = target - pos;
+        const Num cut = clipped_push(b, x_axis, d, *walls);
+        if (cut.v != d.v) {
+            pos = pos + cut;
+            return;
+        }
+    }
+    pos = target;
+}
+
 // Returns the side of m that met s (§10). `bounce` is the pair's, taken in
 // list order (§13: on a tie, the earlier entity's), whichever of the two moves.
-uint8_t push_off_immovable(Body& m, const Body& s, double ox, double oy, Num bounce) {
+uint8_t push_off_immovable(Body& m, const Body& s, double ox, double oy, Num bounce,
+                           const TileGrid* walls) {
     if (2 * m.y.v + m.h.v < 2 * s.y.v + s.h.v) {
-        m.y = s.y - m.h;
+        place(m, false, s.y - m.h, walls);
         m.vy = stopped_by(m.vy, m.vy.v > 0, bounce);
         return kSideDown;
     }
     if (ox < oy) {
         const bool left = 2 * m.x.v + m.w.v < 2 * s.x.v + s.w.v;
-        m.x = left ? s.x - m.w : s.x + s.w;
+        place(m, true, left ? s.x - m.w : s.x + s.w, walls);
         m.vx = stopped_by(m.vx, left ? m.vx.v > 0 : m.vx.v < 0, bounce);
         return left ? kSideRight : kSideLeft;
     }
-    m.y = s.y + s.h;
+    place(m, false, s.y + s.h, walls);
     m.vy = stopped_by(m.vy, m.vy.v < 0, bounce);
     return kSideUp;
 }
@@ -76,14 +94,31 @@ uint8_t facing(bool along_x, bool a_negative) {
 
 // Two movable bodies share the overlap along one axis. `a` is the earlier in
 // list order: it moves negative on a tie and takes the larger integer half.
-// Returns whether a moved the negative way.
-bool push_apart(BodyAxis a, BodyAxis b, double o, Num bounce) {
+// With walls (§4, push-apart never leaves a body in a solid), a share a
+// solid cell cuts short goes to b, cut again at b's cells, and what b could
+// not take goes back to a (cut again) when a was not cut itself; the rest is
+// dropped. Returns whether a moved the negative way.
+bool push_apart(Body& a_body, Body& b_body, bool x_axis, double o, Num bounce, const TileGrid* walls) {
+    const BodyAxis a = x_axis ? along_x(a_body) : along_y(a_body);
+    const BodyAxis b = x_axis ? along_x(b_body) : along_y(b_body);
     const bool exact = a.pos.exact && a.size.exact && b.pos.exact && b.size.exact;
     const double a_share = exact ? std::ceil(o / 2) : o / 2;
     const double b_share = exact ? o - a_share : o / 2;
     const bool a_negative = negative_of(a.centre2(), b.centre2());
-    a.pos = a.pos + Num{a_negative ? -a_share : a_share, exact};
-    b.pos = b.pos + Num{a_negative ? b_share : -b_share, exact};
+    const Num da{a_negative ? -a_share : a_share, exact}, db{a_negative ? b_share : -b_share, exact};
+    if (!walls) {
+        a.pos = a.pos + da;
+        b.pos = b.pos + db;
+    } else {
+        const Num ca = clipped_push(a_body, x_axis, da, *walls);
+        a.pos = a.pos + ca;
+        const Num a_left = da - ca;  // what a could not take, signed as da
+        const Num want_b = a_left.v == 0 ? db : db - a_left;
+        const Num cb = clipped_push(b_body, x_axis, want_b, *walls);
+        b.pos = b.pos + cb;
+        const Num b_left = want_b - cb;
+        if (a_left.v == 0 && b_left.v != 0) a.pos = a.pos + clipped_push(a_body, x_axis, -b_left, *walls);
+    }
     if (a_negative) part(a.vel, b.vel, bounce);
     else part(b.vel, a.vel, bounce);
     return a_negative;
@@ -133,13 +168,13 @@ bool lands_from_above(const Body& m, const Body& o) {
 
 uint8_t sensed_side(const Body& a, const Body& b) { return entry_side(a, b); }
 
-uint8_t resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
+uint8_t resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests, const TileGrid* walls) {
     if (a.one_way || b.one_way) {  // it lands, or the two pass through each other
         if (!(a.one_way && b.one_way)) {
             Body& m = a.one_way ? b : a;
             const Body& o = a.one_way ? a : b;
             if (!m.immovable && lands_from_above(m, o)) {
-                m.y = o.y - m.h;
+                place(m, false, o.y - m.h, walls);
                 m.vy = rebound(m.vy, pair_bounce(a, b));
                 return a.one_way ? kSideUp : kSideDown;
             }
@@ -151,25 +186,25 @@ uint8_t resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests) {
     const double oy = overlap(a.y, a.h, b.y, b.h);
     const Num bounce = pair_bounce(a, b);
     // The fixed body's side is the opposite of the one pushed off it.
-    if (a.immovable) return opposite_side(push_off_immovable(b, a, ox, oy, bounce));
-    if (b.immovable) return push_off_immovable(a, b, ox, oy, bounce);
-    if (a_rests && lands_on(b, a)) return opposite_side(push_off_immovable(b, a, ox, oy, bounce));
-    if (b_rests && lands_on(a, b)) return push_off_immovable(a, b, ox, oy, bounce);
-    if (ox < oy) return facing(true, push_apart(along_x(a), along_x(b), ox, bounce));
-    return facing(false, push_apart(along_y(a), along_y(b), oy, bounce));
+    if (a.immovable) return opposite_side(push_off_immovable(b, a, ox, oy, bounce, walls));
+    if (b.immovable) return push_off_immovable(a, b, ox, oy, bounce, walls);
+    if (a_rests && lands_on(b, a)) return opposite_side(push_off_immovable(b, a, ox, oy, bounce, walls));
+    if (b_rests && lands_on(a, b)) return push_off_immovable(a, b, ox, oy, bounce, walls);
+    if (ox < oy) return facing(true, push_apart(a, b, true, ox, bounce, walls));
+    return facing(false, push_apart(a, b, false, oy, bounce, walls));
 }
 
 namespace {
 
 void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
-               std::span<const uint8_t> resting, PairLog* log, SideLog* sides) {
+               std::span<const uint8_t> resting, PairLog* log, SideLog* sides, const TileGrid* walls) {
     auto rests = [&](size_t i) { return !resting.empty() && resting[i] != 0; };
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
             if (!aabb_overlap(first, second)) continue;
-            if (const uint8_t side = meet(first, second, rests(members[a]), rests(members[b])))
+            if (const uint8_t side = meet(first, second, rests(members[a]), rests(members[b]), walls))
                 note_pushed(log, sides, members[a], members[b], side);
         }
 }
@@ -180,8 +215,8 @@ void run_pairs(ContactScratch& scratch, std::span<Body> bodies, std::span<const 
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kPairGridFrom);
-    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, scratch.sides);
-    else all_pairs(bodies, members, resting, scratch.log, scratch.sides);
+    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, scratch.sides, scratch.walls);
+    else all_pairs(bodies, members, resting, scratch.log, scratch.sides, scratch.walls);
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 
 namespace ds {
 
+class TileGrid;
+
 // Strict overlap of [x1, x1+w1) × [y1, y1+h1) and [x2, x2+w2) × [y2, y2+h2):
 // touching edges do not overlap. Inline: the grid pass asks once per candidate.
 inline bool aabb_overlap(double x1, double y1, double w1, double h1, double x2, double y2,
@@ -34,7 +36,10 @@ DOWNSTROKE_API bool collision_eligible(const Body& a, const Body& b);
 // and direction it was pushed on, or for a pair nothing moved (two
 // immovable bodies, a one-way body passed through) the axis their overlap
 // began on last (sensed_side).
-DOWNSTROKE_API uint8_t resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false);
+// `walls`: under the seed's push rule none; under the default (PushRule::
+// Clipped, §4) the map, whose solid cells cut every push short.
+DOWNSTROKE_API uint8_t resolve_pair(Body& a, Body& b, bool a_rests = false, bool b_rests = false,
+                                    const TileGrid* walls = nullptr);
 
 // The side of a that met b when neither moves (a sensor's pair): the axis
 // their overlap began on last, judged from their relative speed (x when
@@ -52,10 +57,10 @@ constexpr uint8_t opposite_side(uint8_t side) {
 // and a body it senses only meet (the pair is noted), two sensors do not;
 // otherwise resolve_pair. Returns 0 when the pair did not meet, else the
 // side of a that met b (§10, §13).
-inline uint8_t meet(Body& a, Body& b, bool a_rests, bool b_rests) {
+inline uint8_t meet(Body& a, Body& b, bool a_rests, bool b_rests, const TileGrid* walls = nullptr) {
     if (!categories_meet(a, b)) return 0;
     if (a.sensor | b.sensor) return (a.sensor & b.sensor) ? 0 : sensed_side(a, b);
-    return resolve_pair(a, b, a_rests, b_rests);
+    return resolve_pair(a, b, a_rests, b_rests, walls);
 }
 
 // The pairs push-apart resolved, as body indices (the earlier first), in the

@@ -7,6 +7,7 @@
 #include "constants.hpp"
 #include "detail/frame_impl.hpp"
 #include "detail/ground_index.hpp"
+#include "detail/tile_clip.hpp"
 #include "steps.hpp"
 #include "tiles.hpp"
 
@@ -309,13 +310,16 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         if (carrying) carry(bodies, grid, opts, writes);
         const bool reports = contact_bodies_ != 0;
         const std::span<const size_t> pass = pass_members();
-        if (pass.size() >= 2 || reports)
+        contacts_.walls = opts.push == PushRule::Clipped ? grid : nullptr;
+        const bool put_out = contacts_.walls && !members_.empty();
+        if (pass.size() >= 2 || reports || put_out)
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy | (reports ? kFieldTouching : 0u),
                         [&](std::span<Body> bs) {
                             if (pass.size() >= 2) resolve_entity_collisions_among(contacts_, bs, pass, resting_);
+                            if (put_out) put_members_out(bs, *grid);
                             if (reports) mark_touching(bs);
                         });
-        if (carrying) crush(bodies, grid, writes);
+        if (carrying) crush(bodies, grid, opts, writes);
         const auto solid = static_cast<uint64_t>(supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
         push = {push.processed + solid, push.skipped + bodies.size() - solid, push.ms + ms_since(t0)};
@@ -328,6 +332,18 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
                   groups.ms + ms_since(t0)};
     }
     end_contact_log();
+}
+
+void Frame::Impl::put_members_out(std::span<Body> bodies, const TileGrid& grid) {
+    // Push-apart's pairs are cut at solid cells, but a body can begin the
+    // frame in one (spawned there, or moved by its owner): it leaves by the
+    // shortest way here rather than be carried on by the next tile steps.
+    // Immovable bodies are placed by their owner, and a body that skips a
+    // tile step has asked the map to leave it alone.
+    for (const size_t i : members_) {
+        Body& b = bodies[i];
+        if (!b.immovable && !b.skips(kSkipTileX | kSkipTileY)) put_out_of_solids(b, grid);
+    }
 }
 
 void Frame::Impl::start_carry(std::span<const Body> start) {
@@ -344,9 +360,11 @@ void Frame::Impl::carry(std::span<Body> bodies, const TileGrid* grid, const Fram
     });
 }
 
-void Frame::Impl::crush(std::span<Body> bodies, const TileGrid* grid, std::span<FirstWrites> writes) {
-    logged_bulk(bodies, writes, kFieldCrushed,
-                [&](std::span<Body> bs) { crush_in_way(bs, grid, carry_scratch_); });
+void Frame::Impl::crush(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                        std::span<FirstWrites> writes) {
+    logged_bulk(bodies, writes, kFieldCrushed, [&](std::span<Body> bs) {
+        crush_in_way(bs, carriers_, grid, opts.push == PushRule::Clipped, carry_scratch_);
+    });
 }
 
 void Frame::Impl::plan_sleep(const World& world, const FrameOptions& opts) {

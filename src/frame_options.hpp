@@ -9,6 +9,7 @@ namespace ds {
 
 struct FrameOptions {
     CollisionMode mode = CollisionMode::Swept;
+    PushRule push = PushRule::Clipped;  // push-apart against the map (§4)
     double dt = 1000.0 / 60.0;  // ms; only tweens use it
     // Beyond the seed. substeps: the physics after the tweens runs k times,
     // each a 1/k sub-frame (SubStep), the one-shot acceleration in the first.
@@ -23,7 +24,7 @@ struct FrameOptions {
 
     // The options physics reads (all but dt, which only tweens use).
     bool same_physics(const FrameOptions& o) const {
-        return mode == o.mode && substeps == o.substeps && resting_contacts == o.resting_contacts &&
+        return mode == o.mode && push == o.push && substeps == o.substeps && resting_contacts == o.resting_contacts &&
                same(gravity, o.gravity);
     }
 };

@@ -16,6 +16,12 @@ enum class CollisionMode : uint8_t {
     Discrete,  // the seed's rule: only the cells the box overlaps after the move
 };
 
+// What push-apart does about solid cells (semantics §4).
+enum class PushRule : uint8_t {
+    Clipped,  // the default: a push stops at a solid cell, and a body in one is put out
+    Seed,     // the seed's: pushes ignore the map
+};
+
 // Snap out of solid cells along x after apply-velocity-x. No-op without a
 // grid, when vx = 0, or when the body skips 'tile-collisions-x.
 // In a sub-frame, swept mode covers the sub-frame's move (vx·h) (semantics §4).

@@ -81,7 +81,8 @@ void PairSweep::query(const CellBox& r, uint32_t after, std::span<const size_t> 
 }
 
 void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
-                    std::span<const uint8_t> resting, PairLog* log, SideLog* sides) {
+                    std::span<const uint8_t> resting, PairLog* log, SideLog* sides,
+                    const TileGrid* walls) {
     auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
     inv_cell_ = inverse_cell_size(n, sizes_, [&](size_t m) {
@@ -109,7 +110,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             Body& second = bodies[members[b]];
             if (!aabb_overlap(first, second)) continue;
             const double ax = first.x.v, ay = first.y.v, bx = second.x.v, by = second.y.v;
-            const uint8_t side = meet(first, second, rests(a), rests(b));
+            const uint8_t side = meet(first, second, rests(a), rests(b), walls);
             if (side == 0) continue;
             note_pushed(log, sides, members[a], members[b], side);
             // Re-file b only when it changed cells (sizes never change, so

@@ -15,6 +15,8 @@
 
 namespace ds {
 
+class TileGrid;
+
 class PairSweep {
 public:
     // Runs the pass over bodies[members[0]], bodies[members[1]], … (the
@@ -25,7 +27,7 @@ public:
     void run(std::span<Body> bodies, std::span<const size_t> members,
              std::span<const uint8_t> resting = {},
              std::vector<std::pair<uint32_t, uint32_t>>* log = nullptr,
-             std::vector<uint8_t>* sides = nullptr);
+             std::vector<uint8_t>* sides = nullptr, const TileGrid* walls = nullptr);
 
 private:
     CellBox cells(const Body& b) const;

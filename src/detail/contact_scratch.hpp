@@ -23,6 +23,9 @@ struct ContactScratch {
     PairSweep sweep;
     PairLog* log = nullptr;
     SideLog* sides = nullptr;
+    // The map whose solid cells cut pushes short (PushRule::Clipped, §4), or
+    // none under the seed's rule.
+    const TileGrid* walls = nullptr;
 };
 
 // One pass over the pairs (i, j), i < j, in list order; each pair sees what

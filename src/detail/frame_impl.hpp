@@ -48,7 +48,11 @@ struct Frame::Impl {
     void start_carry(std::span<const Body> start);
     void carry(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                std::span<FirstWrites> writes);
-    void crush(std::span<Body> bodies, const TileGrid* grid, std::span<FirstWrites> writes);
+    // The default push rule's last word (§4): members left inside solid cells
+    // are put out of them.
+    void put_members_out(std::span<Body> bodies, const TileGrid& grid);
+    void crush(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+               std::span<FirstWrites> writes);
     // A contact body's #:standing-on after detect-on-solid ran (semantics §10).
     void note_standing(Body& b, size_t i, bool indexed);
     // One step over a block of active_; adds to the step's processed count

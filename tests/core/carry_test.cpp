@@ -103,7 +103,8 @@ TEST_CASE("a rider lifted into a ceiling is crushed, and uncrushed when it is no
     Frame f;
     f.step(w, FrameOptions{});
     CHECK(w.bodies[1].crushed);
-    CHECK_EXACT(w.bodies[1].y, 78);  // where push-apart put it, on the carrier
+    // Push-apart's lift onto the carrier (to 78) is cut at the ceiling (§4).
+    CHECK_EXACT(w.bodies[1].y, 80);
     w.bodies[0].vy = I(0);
     w.bodies[1].y = I(84);
     w.bodies[0].y = I(100);
@@ -122,7 +123,16 @@ TEST_CASE("a body a carrier pushes into a wall is crushed") {
     w.bodies = {platform, solid_box(30, 80, 16, 16)};
     Frame f;
     f.step(w, FrameOptions{});
-    CHECK_EXACT(w.bodies[1].x, 34);  // pushed clear of the platform, into the wall
+    // The push clear of the platform (to 34) is cut at the wall (§4): it
+    // stays flush with the wall, held in the platform, and is crushed.
+    CHECK_EXACT(w.bodies[1].x, 32);
+    CHECK(w.bodies[1].crushed);
+    FrameOptions seed;
+    seed.push = ds::PushRule::Seed;
+    w.bodies = {platform, solid_box(30, 80, 16, 16)};
+    Frame f2;
+    f2.step(w, seed);
+    CHECK_EXACT(w.bodies[1].x, 34);  // the seed's rule: pushed clear of the platform, into the wall
     CHECK(w.bodies[1].crushed);
 }
 

@@ -963,10 +963,11 @@
     (rider-after (list platform box) 1))
   ;; The floor, row 6 (y ∈ [96, 112)), and the wall, column 3 (x ∈ [48, 64)).
   (let ((floor+wall (grid-map 10 10 (append (row 6 10) (map (lambda (r) (cons 3 r)) (iota 6))))))
+    ;; The push clear of the platform (to 34) is cut flush with the wall (§4).
     (test-equal "… into a wall, where it is crushed"
-      '(34 80 #t) (keys-of (rider-after (list platform box) 1 floor+wall) '(#:x #:y #:crushed?)))
+      '(32 80 #t) (keys-of (rider-after (list platform box) 1 floor+wall) '(#:x #:y #:crushed?)))
     (test-equal "… #:crushed? put in front when first written, the rest shared"
-      '(#:crushed? #t #:x 34 #:y 80 #:width 16 #:height 16 #:solid? #t)
+      '(#:crushed? #t #:x 32 #:y 80 #:width 16 #:height 16 #:solid? #t)
       (rider-after (list platform box) 1 floor+wall))
     (test-equal "… and not any more once the platform stops"
       '(30 #f)
@@ -974,8 +975,9 @@
                '(#:x #:crushed?)))))
 ;; A ceiling, row 4 (y ∈ [64, 80)).
 (let ((ceiling (grid-map 10 10 (row 4 10))))
+  ;; Push-apart's lift onto the carrier (to 78) is cut at the ceiling (§4).
   (test-equal "a rider lifted into a ceiling is crushed"
-    '(78 #t) (keys-of (rider-after (list (carrier #:x 0 #:y 100 #:vy -6) rider) 1 ceiling)
+    '(80 #t) (keys-of (rider-after (list (carrier #:x 0 #:y 100 #:vy -6) rider) 1 ceiling)
                       '(#:y #:crushed?))))
 (let* ((platform '(#:x 0 #:y 100 #:width 64 #:height 16 #:vx 2 #:solid? #t #:immovable? #t))
        (s (make-scene #:entities (list platform (append rider '(#:on-ground? #t))))))
