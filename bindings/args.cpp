@@ -14,6 +14,13 @@ bool mode_from_scm(SCM mode, CollisionMode& out, Failure& f) {
     return !f;
 }
 
+bool push_rule_from_scm(SCM rule, PushRule& out, Failure& f) {
+    if (SCM_UNBNDP(rule) || scm_is_eq(rule, keys->clipped)) out = PushRule::Clipped;
+    else if (scm_is_eq(rule, keys->seed)) out = PushRule::Seed;
+    else fail_arg(f, "push-rule", rule, "'clipped or 'seed");
+    return !f;
+}
+
 bool substeps_from_scm(SCM k, int& out, Failure& f) {
     if (SCM_UNBNDP(k)) {
         out = 1;

@@ -11,6 +11,8 @@ namespace ds::guile {
 
 // 'swept or 'discrete.
 bool mode_from_scm(SCM mode, CollisionMode& out, Failure& f);
+// 'clipped or 'seed; unbound means 'clipped, the default.
+bool push_rule_from_scm(SCM rule, PushRule& out, Failure& f);
 // Sub-frames per frame: unbound means 1; else an exact integer in
 // [1, kMaxSubsteps] (constants.hpp says why).
 bool substeps_from_scm(SCM k, int& out, Failure& f);

@@ -91,7 +91,8 @@ PairLog*& pushed_pairs() {
 
 namespace {
 
-SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM resting, SCM gravity) {
+SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM resting, SCM gravity,
+                  SCM push) {
     Failure f{"step-scene"};
     SCM result = entities;
     if (PairLog* log = pushed_pairs()) log->clear();  // the overlay shows this frame's pairs
@@ -113,6 +114,7 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                                        decltype(gc0), decltype(timer), decltype(categories)>);
         if (dt_from_scm(dt, opts.dt, f) && grid_from_scm(tilemap, grid, f) && mode_from_scm(mode, opts.mode, f) &&
             substeps_from_scm(substeps, opts.substeps, f) && gravity_from_scm(gravity, opts.gravity, f) &&
+            push_rule_from_scm(push, opts.push, f) &&
             frame_is_noop(batch, entities, grid, opts)) {
             // Every entity settled and is handed back as left: skip even the decoding.
             stats.entities = batch.last_count;
@@ -198,8 +200,8 @@ SCM frame_stats() {
 }  // namespace
 
 void register_frame_procedures() {
-    define_procedure<4, 3, 0, step_entities>("%step-entities",
-        WrapperDoc{"(entities tilemap dt mode [substeps [resting-contacts? [gravity]]])", "step-scene", "(downstroke physics)"});
+    define_procedure<4, 4, 0, step_entities>("%step-entities",
+        WrapperDoc{"(entities tilemap dt mode [substeps [resting-contacts? [gravity [push-rule]]]])", "step-scene", "(downstroke physics)"});
     define_procedure<1, 0, 0, frame_contacts>("%frame-contacts",
         WrapperDoc{"(entities) → ((name-a . name-b) …)", "step-scene", "(downstroke physics)"});
     define_procedure<0, 0, 0, frame_contact_sides>("%frame-contact-sides",

@@ -40,6 +40,8 @@ void init_keys() {
         storage.skip_symbol[bit] = keep(scm_from_utf8_symbol(skip_name(static_cast<uint16_t>(1u << bit))));
     storage.swept = keep(scm_from_utf8_symbol("swept"));
     storage.discrete = keep(scm_from_utf8_symbol("discrete"));
+    storage.clipped = keep(scm_from_utf8_symbol("clipped"));
+    storage.seed = keep(scm_from_utf8_symbol("seed"));
     constexpr const char* kSides[4] = {"left", "right", "up", "down"};
     for (int bit = 0; bit < 4; ++bit) storage.side_symbol[bit] = keep(scm_from_utf8_symbol(kSides[bit]));
     storage.default_category = keep(scm_from_utf8_symbol("default"));

@@ -29,6 +29,7 @@ struct Keys {
     SCM key[kPhysKeyCount];
     SCM skip_symbol[kSkipCount];  // by bit index of ds::Skip
     SCM swept, discrete;
+    SCM clipped, seed;  // the push rules (PushRule)
     SCM side_symbol[4];  // left right up down: by bit index of ds::Side
     SCM sides;           // #:contacts? 'sides (ds::kContactsSides)
     SCM default_category;  // 'default (semantics §13)

@@ -42,7 +42,7 @@
   #:export (make-game game-run!)
   #:re-export (game? game-title game-width game-height game-frame-delay
                game-scene game-scene-set! game-input game-frame game-sounds
-               game-collision-mode game-collision-mode-set!
+               game-collision-mode game-collision-mode-set! game-push-rule game-push-rule-set!
                game-substeps game-substeps-set! game-resting-contacts? game-resting-contacts-set!
                game-update game-update-set! game-engine-update game-engine-update-set!
                input-pressed? input-held? input-released? play-sound
@@ -73,14 +73,16 @@
 (define* (make-game #:key (title "Downstroke") (width 640) (height 480)
                     (frame-delay 16) (scene #f) (update #f) (render #f)
                     (engine-update default-engine-update)
-                    (collision-mode 'swept) (substeps 1) (resting-contacts? #f)
+                    (collision-mode 'swept) (push-rule 'clipped) (substeps 1) (resting-contacts? #f)
                     (input-script '()) (history 0) (input-map #f) (background #f)
                     (stack-limit default-stack-limit) (pause-when-unfocused? #f) (interpolate? #t)
                     (strict? (strict-games)) (paused #f))
   "A game. ENGINE-UPDATE runs before UPDATE every frame: the default steps
 physics, #f disables it, a procedure (game dt) replaces it. SUBSTEPS k splits
 each physics frame into k sub-frames; RESTING-CONTACTS? keeps stacks at
-rest (both off by default). HISTORY keeps the scenes of
+rest (both off by default). PUSH-RULE 'clipped (the default) keeps
+push-apart from leaving a body in a solid cell; 'seed is the seed's rule
+(see push-rule). HISTORY keeps the scenes of
 that many past frames for game-rewind!. WIDTH × HEIGHT is the picture in
 pixels (a window shows it scaled up). INPUT-MAP binds keys, controller and
 mouse inputs to actions in a window, as ((action name …) …) — see
@@ -118,6 +120,7 @@ RENDER go on, nothing steps."
                (list max-game-pixels width height) #f))
   (check-substeps "make-game" substeps)
   (check-collision-mode "make-game" collision-mode)
+  (check-push-rule "make-game" push-rule)
   (unless (and (exact-integer? stack-limit) (<= min-stack-limit stack-limit max-stack-limit))
     (scm-error 'wrong-type-arg "make-game"
                "stack-limit: expected an exact integer of bytes from ~a (1 MiB) to ~a (4 GiB), got ~S"
@@ -140,7 +143,7 @@ RENDER go on, nothing steps."
       (%display-set-input-map! display (or input-map (default-input-map)))
       (%display-set-background! display background))
     (let ((game (%make-game title width height frame-delay scene update render engine-update
-                            collision-mode substeps (and resting-contacts? #t)
+                            collision-mode push-rule substeps (and resting-contacts? #t)
                             (make-input '() '() bindings) input-script #f 0 (make-bounded-log) (make-bounded-log)
                             history (make-bounded-log)
                             display #f empty-input-log stack-limit (and pause-when-unfocused? #t)

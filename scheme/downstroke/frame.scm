@@ -20,10 +20,11 @@
 
 (define (default-engine-update game dt)
   "One physics pass over the game's scene (step-scene), with the game's
-collision mode, substeps and resting contacts."
+collision mode, push rule, substeps and resting contacts."
   (let ((scene (game-scene game)))
     (when scene
       (parameterize ((collision-mode (game-collision-mode game))
+                     (push-rule (game-push-rule game))
                      (resting-contacts? (game-resting-contacts? game)))
         (game-scene-set! game (step-scene scene dt #:substeps (game-substeps game)))))))
 

@@ -13,6 +13,7 @@
             game-scene %game-scene-set! game-update %game-update-set! game-render
             game-engine-update %game-engine-update-set!
             game-collision-mode %game-collision-mode-set! game-substeps %game-substeps-set!
+            game-push-rule
             game-resting-contacts? game-resting-contacts-set!
             game-input game-input-set! game-input-script game-input-script-set!
             game-script-cursor game-script-cursor-set! game-frame game-frame-set!
@@ -24,14 +25,14 @@
             game-bindings game-paused? %game-paused-set! game-paused-update
             game-paused-ticks game-paused-ticks-set! game-pause-marks game-pause-marks-set!
             check-game check-scene-or-false check-hook-or-false
-            check-collision-mode check-substeps
+            check-collision-mode check-push-rule check-substeps
             game-scene-set! game-update-set! game-engine-update-set!
-            game-collision-mode-set! game-substeps-set!
+            game-collision-mode-set! game-push-rule-set! game-substeps-set!
             current-game))
 
 (define-record-type <game>
   (%make-game title width height frame-delay scene update render engine-update
-              collision-mode substeps resting-contacts
+              collision-mode push-rule substeps resting-contacts
               input input-script script-cursor frame sounds music history-size history
               display debug-draw input-log stack-limit pause-when-unfocused interpolate
               strict slips-warned bindings paused paused-update paused-ticks pause-marks)
@@ -45,6 +46,7 @@
   (render game-render)
   (engine-update game-engine-update %game-engine-update-set!)
   (collision-mode game-collision-mode %game-collision-mode-set!)
+  (push-rule game-push-rule %game-push-rule-set!)
   (substeps game-substeps %game-substeps-set!)
   (resting-contacts game-resting-contacts? game-resting-contacts-set!)
   (input game-input game-input-set!)
@@ -127,6 +129,20 @@
   (check-game "game-collision-mode-set!" game)
   (check-collision-mode "game-collision-mode-set!" mode)
   (%game-collision-mode-set! game mode))
+
+;; As the collision mode: checked where it is given.
+(define push-rules '(clipped seed))
+
+(define (check-push-rule who rule)
+  (unless (memq rule push-rules)
+    (scm-error 'wrong-type-arg who "push-rule: expected one of ~S, got ~S"
+               (list push-rules rule) #f)))
+
+(define (game-push-rule-set! game rule)
+  "Make RULE ('clipped or 'seed) GAME's push rule from the next frame on."
+  (check-game "game-push-rule-set!" game)
+  (check-push-rule "game-push-rule-set!" rule)
+  (%game-push-rule-set! game rule))
 
 (define (check-substeps who k)
   (unless (and (exact-integer? k) (<= 1 k %max-substeps))

@@ -6,7 +6,7 @@
   #:use-module (downstroke read-only)
   #:re-export (resolve-entity-collisions sync-groups aabb-overlap?)
   #:export (*gravity* *jump-force* *on-solid-tolerance* collision-mode
-            resting-contacts?
+            push-rule resting-contacts?
             step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
             resolve-tile-collisions-y detect-on-solid carry-riders step-scene))
@@ -34,6 +34,17 @@ below the feet for ground, a fixed rule of the engine" %on-solid-tolerance))
                       (scm-error 'wrong-type-arg "collision-mode"
                                  "expected 'swept or 'discrete, got ~S" (list mode) #f))
                     mode)))
+
+(define push-rule
+  ;; Beyond the seed, and the default: push-apart never leaves a body in a
+  ;; solid cell ('clipped, docs/semantics.org §4); 'seed is the seed's rule,
+  ;; whose pushes ignore the map.
+  (make-parameter 'clipped
+                  (lambda (rule)
+                    (unless (memq rule '(clipped seed))
+                      (scm-error 'wrong-type-arg "push-rule"
+                                 "expected 'clipped or 'seed, got ~S" (list rule) #f))
+                    rule)))
 
 (define resting-contacts?
   ;; Beyond the seed, off by default: a still body resting exactly on a tile
@@ -102,7 +113,7 @@ kept in the scene (scene-contacts, scene-contact-sides)."
     (scm-error 'wrong-type-arg "step-scene" "scene: expected a scene (make-scene), got ~S" (list scene) #f))
   (let* ((entities (scene-entities scene))
          (stepped (%step-entities entities (scene-tilemap scene) dt (collision-mode)
-                                  substeps (resting-contacts?) (scene-gravity scene)))
+                                  substeps (resting-contacts?) (scene-gravity scene) (push-rule)))
          (old ((@@ (downstroke world) %scene-contacts) scene))
          (pairs (%frame-contacts stepped))
          (contacts (if (null? pairs) '() (cons pairs (%frame-contact-sides))))

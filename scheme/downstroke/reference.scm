@@ -13,11 +13,11 @@
   #:use-module (downstroke entity)
   #:use-module (downstroke world)
   #:use-module (downstroke tween)
-  #:use-module ((downstroke physics) #:select (collision-mode resting-contacts?))
+  #:use-module ((downstroke physics) #:select (collision-mode push-rule resting-contacts?))
   #:use-module ((downstroke tilemap)
                 #:select (tilemap-tile-width tilemap-tile-height
                           tilemap-cell-shape tilemap-steepest-ramp tilemap-solid-extent))
-  #:re-export (collision-mode resting-contacts?)
+  #:re-export (collision-mode push-rule resting-contacts?)
   #:export (*gravity* *jump-force* *on-solid-tolerance*
             step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x
             apply-velocity-y apply-velocity resolve-tile-collisions-x
@@ -860,6 +860,115 @@ itself: not eq?, no equal #:id) (§4)."
     (check-all 'detect-on-solid others)
     (on-solid e (scene-tiles scene) (holders others) (lambda (i o) (eq? o e)))))
 
+;;; ---------------------------------------------------------------- push-apart against the map (§4)
+;;; Under the push rule 'clipped (the default) push-apart never leaves a
+;;; body in a solid cell: each push is cut at the first solid cell it would
+;;; enter, and a body left in one is put out by the shortest way.
+
+(define %walls
+  ;; The tilemap whose solid cells cut pushes, while a frame's push-apart
+  ;; runs under 'clipped; #f (the seed's rule) otherwise.
+  (make-parameter #f))
+
+(define (stops-push? cell down?)
+  "Solid and shaped cells stop a push; a one-way cell only a move down."
+  (or (eq? cell 'solid) (vector? cell) (and down? (eq? cell 'one-way))))
+
+(define (clipped-push b x-axis? d tm)
+  "How far of the push D (along x or y) box B goes before its leading face
+meets the first solid cell it would enter in the rows (columns) it spans:
+D when nothing stops it, else the distance to that cell's near face."
+  (let* ((pos (vector-ref b (if x-axis? 0 1))) (size (vector-ref b (if x-axis? 2 3)))
+         (tw (tilemap-tile-width tm)) (th (tilemap-tile-height tm))
+         (tile (if x-axis? tw th)))
+    (apply
+     (lambda (col0 row0 cols rows)
+       (let ((across (if x-axis? (clip (cells-of (y b) (h b) th) row0 rows)
+                         (clip (cells-of (x b) (w b) tw) col0 cols))))
+         (if (or (zero? d) (not (finite? d)) (not across) (not (> size 0)))
+             d
+             (let* ((now (cells-of pos size tile))
+                    (fwd? (> d 0))
+                    (reach (if fwd? (cells-of (num+ pos size) d tile) (cells-of (num+ pos d) (- d) tile)))
+                    (entered (and reach (if fwd?
+                                            (cons (max (car reach) (+ (cdr now) 1)) (cdr reach))
+                                            (cons (car reach) (min (cdr reach) (- (car now) 1))))))
+                    (entered (and entered (<= (car entered) (cdr entered))
+                                  (if x-axis? (clip entered col0 cols) (clip entered row0 rows))))
+                    (down? (and (not x-axis?) fwd?))
+                    (exact (and (exact? pos) (exact? size))))
+               (let loop ((cs (range->list entered (if fwd? 1 -1))))
+                 (cond ((null? cs) d)
+                       ((any (lambda (k)
+                               (stops-push? (if x-axis? (tilemap-cell-shape tm (car cs) k)
+                                                (tilemap-cell-shape tm k (car cs)))
+                                            down?))
+                             (range->list across 1))
+                        (let ((face (* (if fwd? (car cs) (+ (car cs) 1)) tile)))
+                          (if exact
+                              (- face (if fwd? (+ pos size) pos))
+                              (- (fl face) (fl (if fwd? (num+ pos size) pos))))))
+                       (else (loop (cdr cs)))))))))
+     (tilemap-solid-extent tm))))
+
+(define (place-at! b x-axis? target)
+  "Box B's position along an axis to TARGET: all the way under the seed's
+rule or when nothing stops it, else as far as clipped-push lets it."
+  (let* ((slot (if x-axis? 0 1)) (pos (vector-ref b slot)) (tm (%walls)))
+    (if tm
+        (let* ((d (num- target pos)) (cut (clipped-push b x-axis? d tm)))
+          (vector-set! b slot (if (= cut d) target (num+ pos cut))))
+        (vector-set! b slot target))))
+
+(define (in-solid? tm bx by bw bh)
+  "Whether a box overlaps a whole solid cell."
+  (apply (lambda (col0 row0 cols rows)
+           (let ((cs (clip (cells-of bx bw (tilemap-tile-width tm)) col0 cols))
+                 (rs (clip (cells-of by bh (tilemap-tile-height tm)) row0 rows)))
+             (any (lambda (r) (any (lambda (c) (eq? (tilemap-cell-shape tm c r) 'solid))
+                                   (range->list cs 1)))
+                  (range->list rs 1))))
+         (tilemap-solid-extent tm)))
+
+(define (way-out tm b x-axis? fwd?)
+  "The least distance (a double for inexact boxes) box B moves along an axis,
+one way, to overlap no whole solid cell: the places with its leading face on
+a cell edge, nearest first, up to the grid's edge."
+  (let* ((pos (vector-ref b (if x-axis? 0 1))) (size (vector-ref b (if x-axis? 2 3)))
+         (tile (if x-axis? (tilemap-tile-width tm) (tilemap-tile-height tm)))
+         (extent (tilemap-solid-extent tm))
+         (origin (if x-axis? (car extent) (cadr extent)))
+         (count (if x-axis? (caddr extent) (cadddr extent)))
+         (now (cells-of pos size tile))
+         (exact (and (exact? pos) (exact? size)))
+         (stop (if fwd? (+ origin count) origin)))
+    (let loop ((e (if fwd? (+ (car now) 1) (cdr now))))
+      (let* ((edge (* e tile))
+             (to (if exact
+                     (if fwd? edge (- edge size))
+                     (if fwd? (fl edge) (- (fl edge) (fl size)))))
+             (free (not (if x-axis? (in-solid? tm to (y b) (w b) (h b)) (in-solid? tm (x b) to (w b) (h b))))))
+        (if (or free (if fwd? (>= e stop) (<= e stop)))
+            (if exact (abs (- to pos)) (abs (- (fl to) (fl pos))))
+            (loop (if fwd? (+ e 1) (- e 1))))))))
+
+(define (put-out! b tm)
+  "Box B, when it overlaps a whole solid cell, out of it by the shortest of
+the four axis moves (ties: up, left, right, down); the velocity on that
+axis becomes 0 when it pointed back in."
+  (when (and (> (w b) 0) (> (h b) 0) (in-solid? tm (x b) (y b) (w b) (h b)))
+    (let* ((exact (every exact? (list (x b) (y b) (w b) (h b))))
+           (up (way-out tm b #f #f)) (left (way-out tm b #t #f))
+           (right (way-out tm b #t #t)) (down (way-out tm b #f #t))
+           (least (min up left right down))
+           (move (lambda (slot d)
+                   (vector-set! b slot (if exact (+ (vector-ref b slot) d)
+                                           (+ (fl (vector-ref b slot)) (fl d)))))))
+      (cond ((= least up) (move 1 (- up)) (when (> (vector-ref b 5) 0) (vector-set! b 5 0)))
+            ((= least left) (move 0 (- left)) (when (> (vector-ref b 4) 0) (vector-set! b 4 0)))
+            ((= least right) (move 0 right) (when (< (vector-ref b 4) 0) (vector-set! b 4 0)))
+            (else (move 1 down) (when (< (vector-ref b 5) 0) (vector-set! b 5 0)))))))
+
 ;;; ---------------------------------------------------------------- bulk steps (§4)
 ;;; A bulk step works on every entity's numbers and then writes each
 ;;; entity's changed keys once, in the order x y vx vy: a key changed by one
@@ -896,18 +1005,18 @@ itself: not eq?, no equal #:id) (§4)."
   "Landing wins while M's centre is above S's; else the shallower axis.
 Returns the side of M that met S (§10)."
   (cond ((< (centre2 (y m) (h m)) (centre2 (y s) (h s)))
-         (vector-set! m 1 (num- (y s) (h m)))
+         (place-at! m #f (num- (y s) (h m)))
          (vector-set! m 5 (stopped-by (vector-ref m 5) (> (vector-ref m 5) 0) bounce))
          'down)
         ((< ox oy)
          (let ((left? (< (centre2 (x m) (w m)) (centre2 (x s) (w s)))))
-           (vector-set! m 0 (if left? (num- (x s) (w m)) (num+ (x s) (w s))))
+           (place-at! m #t (if left? (num- (x s) (w m)) (num+ (x s) (w s))))
            (vector-set! m 4 (stopped-by (vector-ref m 4)
                                         (if left? (> (vector-ref m 4) 0) (< (vector-ref m 4) 0))
                                         bounce))
            (if left? 'right 'left)))
         (else
-         (vector-set! m 1 (num+ (y s) (h s)))
+         (place-at! m #f (num+ (y s) (h s)))
          (vector-set! m 5 (stopped-by (vector-ref m 5) (< (vector-ref m 5) 0) bounce))
          'up)))
 
@@ -961,8 +1070,23 @@ moved the negative way."
          (b-share (if exact (- (inexact->exact o) a-share) (/ o 2)))
          (a-negative (negative-of? (vector-ref a pos) (vector-ref a size)
                                 (vector-ref b pos) (vector-ref b size))))
-    (vector-set! a pos (num+ (vector-ref a pos) (if a-negative (- a-share) a-share)))
-    (vector-set! b pos (num+ (vector-ref b pos) (if a-negative b-share (- b-share))))
+    (let ((da (if a-negative (- a-share) a-share)) (db (if a-negative b-share (- b-share)))
+          (tm (%walls)) (x-axis? (= pos 0)))
+      (if (not tm)
+          (begin
+            (vector-set! a pos (num+ (vector-ref a pos) da))
+            (vector-set! b pos (num+ (vector-ref b pos) db)))
+          ;; §4: a's cut-off share goes to b (cut again); what b could not
+          ;; take goes back to a when a was not cut; the rest is dropped.
+          (let* ((ca (clipped-push a x-axis? da tm))
+                 (_ (vector-set! a pos (num+ (vector-ref a pos) ca)))
+                 (a-left (num- da ca))
+                 (want-b (if (zero? a-left) db (num- db a-left)))
+                 (cb (clipped-push b x-axis? want-b tm))
+                 (_ (vector-set! b pos (num+ (vector-ref b pos) cb)))
+                 (b-left (num- want-b cb)))
+            (when (and (zero? a-left) (not (zero? b-left)))
+              (vector-set! a pos (num+ (vector-ref a pos) (clipped-push a x-axis? (- b-left) tm)))))))
     (let-values (((neg pos) (if a-negative
                                 (part (vector-ref a vel) (vector-ref b vel) bounce)
                                 (part (vector-ref b vel) (vector-ref a vel) bounce))))
@@ -993,7 +1117,7 @@ as it was pushed, or where nothing moved, entry-side."
                   (em (if a-one-way eb ea)) (m (if a-one-way b a)) (o (if a-one-way a b)))
              (cond ((and (not (and (flag ea #:one-way?) (flag eb #:one-way?)))
                          (not (flag em #:immovable?)) (lands-from-above? em m o))
-                    (vector-set! m 1 (num- (y o) (h m)))
+                    (place-at! m #f (num- (y o) (h m)))
                     (vector-set! m 5 (rebound (vector-ref m 5) bounce))
                     (if a-one-way 'up 'down))
                    (else (entry-side a b)))))
@@ -1042,6 +1166,14 @@ the side it was first found on."
                             (set! pairs (cons (cons* i j side) pairs))))))
                     (cdr rest)))
         (outer (cdr rest))))
+    (let ((tm (%walls)))
+      (when tm
+        (for-each (lambda (m)
+                    (let ((e (car m)))
+                      (when (and (collides? e) (not (flag e #:immovable?))
+                                 (not (skips? e 'tile-collisions-x)) (not (skips? e 'tile-collisions-y)))
+                        (put-out! (cadr m) tm))))
+                  members)))
     (let* ((pairs (reverse pairs))
            (moved (map write-box entities before after)))
       (values (same-or (write-touching moved pairs) entities) pairs))))
@@ -1183,10 +1315,16 @@ overlaps: the bodies push-apart is about to push out of its way."
                 entities (iota (length entities)))))
 
 (define (crush-in-way entities slots tm)
-  "After push-apart: the pushed SLOTS now overlapping a solid cell are crushed."
+  "After push-apart: the pushed SLOTS now overlapping a solid cell are
+crushed; under the push rule 'clipped (§4), where a wall cuts the push, so
+are those still overlapping a carrier (not one-way)."
+  (define carriers (filter (lambda (e) (and (carrier? e) (not (flag e #:one-way?)))) entities))
+  (define (held? e)
+    (and (eq? (push-rule) 'clipped)
+         (any (lambda (c) (and (meets? e c) (overlaps? (box e) (box c)))) carriers)))
   (if (or (not tm) (null? slots))
       entities
-      (same-or (map (lambda (e i) (if (and (memv i slots) (overlaps-solid? e tm)) (crush e) e))
+      (same-or (map (lambda (e i) (if (and (memv i slots) (or (overlaps-solid? e tm) (held? e))) (crush e) e))
                     entities (iota (length entities)))
                entities)))
 
@@ -1394,6 +1532,7 @@ ground detection, resting and the carriers read (its holders, by slot)."
          (moved (same-or (map car stepped) entities))
          (carrying (any carrier? moved))
          (carried (if carrying (carry-among moved supporting scene) moved)))
-    (let-values (((pushed pairs) (push-apart carried (map cdr stepped) earlier)))
+    (let-values (((pushed pairs) (parameterize ((%walls (and tm (eq? (push-rule) 'clipped) tm)))
+                                   (push-apart carried (map cdr stepped) earlier))))
       (values (sync-groups (if carrying (crush-in-way pushed (in-way carried supporting) tm) pushed))
               pairs))))

@@ -84,7 +84,7 @@
   '(step-tweens apply-acceleration apply-gravity apply-speed-limits apply-velocity-x apply-velocity-y
     apply-velocity resolve-tile-collisions-x resolve-tile-collisions-y detect-on-solid
     resolve-entity-collisions sync-groups aabb-overlap? *gravity* *jump-force*
-    *on-solid-tolerance* collision-mode resting-contacts? carry-riders step-scene))
+    *on-solid-tolerance* collision-mode push-rule resting-contacts? carry-riders step-scene))
 
 ;;; Per-entity steps, checked on every entity of the frame's input.
 (define per-entity-steps
@@ -785,14 +785,18 @@ answered #t), in how many of the ~a runs, and how many both sides refused:~%" (*
 
 ;;; ---------------------------------------------------------------- sub-frames, resting contacts
 ;;; The frame options beyond the seed: seeds 1..DS_DIFF_VARIANTS (300) again,
-;;; each with substeps 1 + seed mod 4 and resting contacts on odd seeds, in
-;;; both modes; whole frames only (the single steps do not take options).
+;;; each with substeps 1 + seed mod 4, resting contacts on odd seeds and the
+;;; seed's push rule on seeds 2, 3, 6, 7, … (the default, 'clipped, on the
+;;; others and in every run above), in both modes; whole frames only (the
+;;; single steps do not take options).
 (define variant-count (env-int "DS_DIFF_VARIANTS" 300))
+
+(define (push-rule-for seed) (if (even? (quotient seed 2)) 'clipped 'seed))
 
 (define (run-variant seed scene k rest?)
   "The first frame at which native and reference disagree, with its
 mismatch, as (frame . mismatch); #f when all FRAME-COUNT frames agree."
-  (parameterize ((resting-contacts? rest?))
+  (parameterize ((resting-contacts? rest?) (push-rule (push-rule-for seed)))
     (let loop ((frame 0) (ns scene) (rs scene))
       (and (< frame frame-count)
            (let*-values (((ns rs) (edit-scenes seed frame ns rs))
@@ -816,8 +820,8 @@ mismatch, as (frame . mismatch); #f when all FRAME-COUNT frames agree."
              (let ((d (parameterize ((collision-mode mode))
                         (run-variant seed (make-scene #:entities entities #:tilemap tilemap #:gravity (scene-gravity-for seed)) k rest?))))
                (when d
-                 (err "DIFF variant seed ~a ~a substeps ~a resting ~a: frame ~a, entity ~a, ~a: native ~s, reference ~s~%"
-                      seed mode k rest? (car d) (mismatch-index (cdr d)) (mismatch-key (cdr d))
+                 (err "DIFF variant seed ~a ~a substeps ~a resting ~a push-rule ~a: frame ~a, entity ~a, ~a: native ~s, reference ~s~%"
+                      seed mode k rest? (push-rule-for seed) (car d) (mismatch-index (cdr d)) (mismatch-key (cdr d))
                       (mismatch-nval (cdr d)) (mismatch-rval (cdr d))))
                (test-equal (format #f "seed ~a ~a substeps ~a resting ~a" seed mode k rest?) "agree"
                  (if d (format #f "frame ~a, entity ~a, ~a" (car d) (mismatch-index (cdr d))

@@ -397,6 +397,17 @@
   (refusal (lambda () (game-collision-mode-set! (make-game) 'teleport))))
 (test-equal "game-collision-mode-set! takes a valid mode" 'discrete
   (let ((g (make-game))) (game-collision-mode-set! g 'discrete) (game-collision-mode g)))
+(test-equal "make-game refuses an unknown push-rule at once, listing the rules"
+  '(wrong-type-arg . "In procedure make-game: push-rule: expected one of (clipped seed), got shove\n")
+  (refusal (lambda () (make-game push-rule: 'shove))))
+(test-equal "game-push-rule-set! refuses it too"
+  '(wrong-type-arg . "In procedure game-push-rule-set!: push-rule: expected one of (clipped seed), got shove\n")
+  (refusal (lambda () (game-push-rule-set! (make-game) 'shove))))
+(test-equal "a game's push rule is 'clipped unless it says 'seed" '(clipped seed)
+  (let ((g (make-game))) (list (game-push-rule g) (begin (game-push-rule-set! g 'seed) (game-push-rule g)))))
+(test-equal "the push-rule parameter refuses an unknown rule"
+  '(wrong-type-arg . "In procedure push-rule: expected 'clipped or 'seed, got shove\n")
+  (refusal (lambda () (push-rule 'shove))))
 (for-each
  (lambda (k)
    (test-equal (format #f "game-rewind! refuses k ~s itself, not through Guile's -" k)

@@ -973,6 +973,39 @@
       '(30 #f)
       (keys-of (rider-after (list (entity-set platform #:vx 0) (entity-set box #:crushed? #t)) 1 floor+wall)
                '(#:x #:crushed?)))))
+;;; Push-apart never leaves a body in a solid (semantics §4): the default
+;;; push rule, 'clipped, against the seed's.
+;; The floor, rows 6 and 7 (y ∈ [96, 128)), four columns wide.
+(let ((floor (grid-map 4 8 (append (row 6 4) (row 7 4))))
+      (sunk '(#:x 16 #:y 100 #:width 16 #:height 16 #:solid? #t)))
+  (test-equal "a box spawned inside a floor is put on top of it"
+    '(16 80) (keys-of (car (scene-entities (frames-of (make-scene #:entities (list sunk) #:tilemap floor) 1)))
+                      '(#:x #:y)))
+  (test-equal "… where the seed's push rule leaves it"
+    '(16 100) (parameterize ((push-rule 'seed))
+                (keys-of (car (scene-entities (frames-of (make-scene #:entities (list sunk) #:tilemap floor) 1)))
+                         '(#:x #:y))))
+  (let ((column (map (lambda (k) `(#:x 16 #:y ,(+ 16 (* 12 k)) #:width 16 #:height 16 #:solid? #t #:gravity? #t))
+                     (iota 5))))
+    (define (deepest-over frames)
+      ;; The deepest any box reaches below the floor's top at any frame's end.
+      (let loop ((i 0) (s (make-scene #:entities column #:tilemap floor)) (worst 0))
+        (if (= i frames)
+            worst
+            (let ((s (step-scene s 16)))
+              (loop (+ i 1) s
+                    (apply max worst (map (lambda (e) (- (+ (entity-ref e #:y) 16) 96)) (scene-entities s))))))))
+    (test-equal "a column of boxes landing on a floor ends with none inside it" 0 (deepest-over 120))
+    (test-assert "… where the seed's push rule shoves the lowest in"
+      (> (parameterize ((push-rule 'seed)) (deepest-over 120)) 1))))
+(let ((wall (grid-map 4 3 (map (lambda (r) (cons 3 r)) (iota 3)))))
+  (test-equal "a box pushed sideways into a wall stops flush, the other taking the rest"
+    '(32 16)
+    (map (lambda (e) (entity-ref e #:x))
+         (scene-entities (frames-of (make-scene #:entities '((#:x 30 #:y 8 #:width 16 #:height 16 #:solid? #t)
+                                                             (#:x 20 #:y 8 #:width 16 #:height 16 #:solid? #t))
+                                                #:tilemap wall)
+                                    1)))))
 ;; A ceiling, row 4 (y ∈ [64, 80)).
 (let ((ceiling (grid-map 10 10 (row 4 10))))
   ;; Push-apart's lift onto the carrier (to 78) is cut at the ceiling (§4).

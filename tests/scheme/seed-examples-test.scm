@@ -19,7 +19,17 @@
             (lambda (k) (list-ref (reverse frames) k)))))
 (define (pick e . keys) (map (lambda (k) (entity-ref e k)) keys))
 
+;;; The examples run under the seed's own push rule (semantics §4): the
+;;; parameter for step-scene, and every game the examples make.
+(push-rule 'seed)
+(define (make-game . args)
+  (let ((game (apply (@ (downstroke engine) make-game) args)))
+    (game-push-rule-set! game 'seed)
+    game))
+
 (test-begin "seed-examples")
+(test-equal "the examples run under the seed's push rule" '(seed seed)
+  (list (push-rule) (game-push-rule (make-game))))
 
 ;;; ================================================================ Platformer
 ;;; A 40×10 map, floor at row 8 (top y = 128). The player stands on it.
