@@ -24,7 +24,7 @@ std::vector<std::string> split(const std::string& s) {
 
 const std::vector<std::string>& path_names() {
     static const std::vector<std::string> names = {"guile", "native", "bare", "reference", "box2d",
-                                                   "box2d-discrete"};
+                                                   "box2d-discrete", "box2d3", "box2d3-2"};
     return names;
 }
 
@@ -46,7 +46,7 @@ std::string usage() {
            "                   shots-author-first shots-author-first-quiet knobs\n"
            "                   knobs-off (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"
-           "  --path P[,P…]    guile native bare reference box2d box2d-discrete\n"
+           "  --path P[,P…]    guile native bare reference box2d box2d-discrete box2d3 box2d3-2\n"
            "                   (default: all; native also runs bare)\n"
            "  --frames F       timed frames per repetition (30)\n"
            "  --warmup W       untimed frames before them (10)\n"

@@ -69,4 +69,11 @@ PathResult run_box2d(const Scene& scene, const RunConfig& cfg, bool discrete);
 std::string box2d_version();
 #endif
 
+#if DS_BENCH_HAVE_BOX2D3
+// Box2D v3 with its defaults (path_box2d3.cpp), on `workers` threads
+// (1: no task system, the caller's thread).
+PathResult run_box2d3(const Scene& scene, const RunConfig& cfg, int workers);
+std::string box2d3_version();
+#endif
+
 }  // namespace bench

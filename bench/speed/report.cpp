@@ -97,6 +97,7 @@ std::string org_results(const RunInfo& info, const std::vector<Row>& rows) {
     o << "| source      | " << org_cell(info.source) << " |\n";
     o << "| Guile       | " << info.guile_version << " |\n";
     o << "| Box2D       | " << (info.box2d_version.empty() ? "not built" : info.box2d_version) << " |\n";
+    o << "| Box2D v3    | " << (info.box2d3_version.empty() ? "not built" : info.box2d3_version) << " |\n";
     o << "| command     | =" << org_cell(info.command) << "= |\n";
     o << "| whole run   | " << sig3(info.total_s) << " s |\n\n";
     o << "Milliseconds per frame after the warm-up (median and 95th percentile of the\n"
@@ -278,6 +279,12 @@ number of frames.
   problem (impulses, friction, stacking); this is a speed comparison only.
 - box2d-discrete :: the same with =SetContinuousPhysics(false)=: no
   time-of-impact pass, so fast bodies may tunnel (bullets do).
+- box2d3 :: the same scene in Box2D v3 (built only with
+  =-DDOWNSTROKE_BENCH_BOX2D3_ROOT= pointing at an installed v3), mapped as
+  box2d maps it, with v3's defaults: =b2World_Step(world, 1/60, 4)= (4
+  substeps), sleeping on, continuous collision on, one worker (no task
+  system: the caller's thread does all).
+- box2d3-2 :: the same on two workers, through v3's own scheduler.
 )";
 
 }  // namespace
@@ -333,6 +340,7 @@ void write_json(const std::string& file, const RunInfo& info, const std::vector<
       << "  \"source\": " << json_string(info.source) << ",\n"
       << "  \"guile\": " << json_string(info.guile_version) << ",\n"
       << "  \"box2d\": " << (info.box2d_version.empty() ? "null" : json_string(info.box2d_version)) << ",\n"
+      << "  \"box2d3\": " << (info.box2d3_version.empty() ? "null" : json_string(info.box2d3_version)) << ",\n"
       << "  \"command\": " << json_string(info.command) << ",\n"
       << "  \"total_s\": " << json_number(info.total_s) << ",\n  \"results\": [";
     for (size_t i = 0; i < rows.size(); ++i) {

@@ -17,6 +17,10 @@ PathResult run_path(const std::string& path, const Scene& scene, const RunConfig
     if (path == "box2d") return run_box2d(scene, cfg, false);
     if (path == "box2d-discrete") return run_box2d(scene, cfg, true);
 #endif
+#if DS_BENCH_HAVE_BOX2D3
+    if (path == "box2d3") return run_box2d3(scene, cfg, 1);
+    if (path == "box2d3-2") return run_box2d3(scene, cfg, 2);
+#endif
     throw std::logic_error("no path " + path);
 }
 

@@ -13,7 +13,7 @@ struct Repeated {
     int reps = 0;       // repetitions run
 };
 
-// One repetition on `path` (guile, native, bare, reference, box2d, box2d-discrete).
+// One repetition on `path` (guile, native, bare, reference, box2d, box2d-discrete, box2d3, box2d3-2).
 PathResult run_path(const std::string& path, const Scene& scene, const RunConfig& cfg);
 
 // Up to `reps` repetitions; stops repeating once cfg.budget_ms is spent, and

@@ -41,7 +41,10 @@ struct Runner {
     // Why a combination is not run, or "" to run it.
     std::string skip_reason(const std::string& scene, int n, const std::string& path) {
 #if !DS_BENCH_HAVE_BOX2D
-        if (path.rfind("box2d", 0) == 0) return "built without Box2D";
+        if (path == "box2d" || path == "box2d-discrete") return "built without Box2D";
+#endif
+#if !DS_BENCH_HAVE_BOX2D3
+        if (path.rfind("box2d3", 0) == 0) return "built without Box2D v3 (DOWNSTROKE_BENCH_BOX2D3_ROOT)";
 #endif
         if (path.rfind("box2d", 0) == 0 && scene == "ramps")
             return "the Box2D path builds its tiles as boxes, without ramps";
@@ -150,6 +153,9 @@ int speed(const Options& opts) {
     info.guile_version = uses_guile(opts) ? guile_version() : "not used";  // boots Guile; not used for timing
 #if DS_BENCH_HAVE_BOX2D
     info.box2d_version = box2d_version();
+#endif
+#if DS_BENCH_HAVE_BOX2D3
+    info.box2d3_version = box2d3_version();
 #endif
     std::vector<Row> rows;
     Runner runner(opts);
