@@ -13,17 +13,22 @@ namespace ds {
 // x) or columns (along y) it spans: d itself when nothing stops it, else the
 // distance to that cell's near face (0 when flush). Cells the body already
 // overlaps do not stop it; a one-way cell stops only a move down (a cell
-// newly entered downwards has its top at or below the feet, §9); a shaped
-// cell stops it as a whole cell would (its shape is not consulted yet).
+// newly entered downwards has its top at or below the feet, §9). A shaped
+// cell stops it by its solid (§12) where the tile steps would: the feet on
+// its surface, the head on its underside, the leading face on its near
+// side, or the box's corner on a slant that faces the move.
 Num clipped_push(const Body& b, bool along_x, Num d, const TileGrid& grid);
 
-// Puts a body that overlaps whole solid cells out of them by the shortest
-// of the four axis moves to a place that overlaps none (each direction tries
-// the places with the body's leading face on a cell edge, nearest first; the
-// grid's edge ends the search, beyond it nothing is solid); ties go up,
-// left, right, down in that order. The velocity along that axis is
-// zeroed when it pointed back into the cells. One-way and shaped cells are
-// not counted (a body stands in a ramp's cell). Returns whether it moved.
+// Puts a body that overlaps a whole solid cell or a solid shape (not a
+// one-way one) out by the shortest of the four axis moves to a place that
+// overlaps none: each direction goes from place to place, each the nearest
+// where the body has left every solid it overlapped at the last (a cell by
+// its far edge; a shape by its surface moving up, its underside moving down,
+// its box's side along x); beyond the grid nothing is solid. The four are
+// searched side by side, nearest first, so the cost is the shortest way's
+// cells times the body's, whatever the map's size. Ties go up, left, right,
+// down in that order. The velocity along that axis is zeroed when it
+// pointed back into the solids. Returns whether it moved.
 bool put_out_of_solids(Body& b, const TileGrid& grid);
 
 }  // namespace ds
