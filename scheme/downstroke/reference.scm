@@ -871,8 +871,58 @@ itself: not eq?, no equal #:id) (§4)."
   (make-parameter #f))
 
 (define (stops-push? cell down?)
-  "Solid and shaped cells stop a push; a one-way cell only a move down."
-  (or (eq? cell 'solid) (vector? cell) (and down? (eq? cell 'one-way))))
+  "A solid cell stops a push as a whole cell; a one-way cell only a move
+down. A shaped cell stops it by its shape (shape-stop)."
+  (or (eq? cell 'solid) (and down? (eq? cell 'one-way))))
+
+(define (line-x p y)
+  "Where shape P's slant is at height Y: ((y·dx − (oy + ay)·dx) / dy + ax) + ox."
+  (let* ((ox (vector-ref p 1)) (oy (vector-ref p 2))
+         (ax (p-ref p 5)) (ay (p-ref p 6))
+         (dx (fl (- (p-ref p 7) ax))) (dy (fl (- (p-ref p 8) ay))))
+    (+ (+ (/ (- (* y dx) (* (+ oy ay) dx)) dy) ax) ox)))
+
+(define (shape-stop b p x-axis? d)
+  "How far (signed as D, a flonum) box B moves along an axis before it meets
+the solid of placed shape P, or #f: along y the feet onto its surface (down)
+or the head onto its underside (up); along x the leading face onto its near
+side where the box spans solid there, else the box's corner onto a slant
+facing the move (the feet for a floor ramp, the head for a ceiling one). A
+one-way shape stops only a move down."
+  (let* ((fwd? (> d 0)) (d (fl d))
+         (head (fl (y b))) (feet (fl (num+ (y b) (h b))))
+         (lo (fl (x b))) (hi (fl (num+ (x b) (w b)))))
+    (cond
+     ((and (one-way-shape? (vector-ref p 0)) (or x-axis? (not fwd?))) #f)
+     ((not x-axis?)
+      (let ((ab (p-over p lo hi)))
+        (and ab (p-solid-over? p ab)
+             (let ((top (p-surface p ab)) (under (p-underside p ab)))
+               (cond ((and fwd? (<= feet top) (< top (+ feet d))) (- top feet))
+                     ((and (not fwd?) (>= head under) (> under (+ head d))) (- under head))
+                     (else #f))))))
+     (else
+      (let* ((lead (if fwd? hi lo)) (reach (+ lead d))
+             (side (if fwd? (p-left p) (p-right p)))
+             (crossed (if fwd? (and (<= lead side) (< side reach)) (and (< reach side) (<= side lead)))))
+        (cond
+         ((and crossed (< head (p-bottom p side)) (> feet (p-top p side))) (- side lead))
+         ((not (and (< head (p-box-bottom p)) (> feet (p-box-top p)))) #f)
+         (else
+          (let* ((rising (if fwd? (< (p-rise p) 0) (> (p-rise p) 0)))
+                 (level (cond ((and (eq? (p-cut p) 'floor) rising) feet)
+                              ((and (eq? (p-cut p) 'ceiling) (not rising)) head)
+                              (else #f))))
+            (and level
+                 (let* ((lx (line-x p level))
+                        (at (if fwd?
+                                (if (< lx (p-left p)) (p-left p) lx)
+                                (if (< (p-right p) lx) (p-right p) lx))))
+                   (and (if fwd?
+                            (and (<= lead at) (< at reach) (< at (p-right p)))
+                            (and (< reach at) (<= at lead) (> at (p-left p))))
+                        (- at lead))))))))))))
+
 
 (define (clipped-push b x-axis? d tm)
   "How far of the push D (along x or y) box B goes before its leading face
@@ -897,19 +947,41 @@ D when nothing stops it, else the distance to that cell's near face."
                                   (if x-axis? (clip entered col0 cols) (clip entered row0 rows))))
                     (down? (and (not x-axis?) fwd?))
                     (exact (and (exact? pos) (exact? size))))
-               (let loop ((cs (range->list entered (if fwd? 1 -1))))
-                 (cond ((null? cs) d)
-                       ((any (lambda (k)
-                               (stops-push? (if x-axis? (tilemap-cell-shape tm (car cs) k)
-                                                (tilemap-cell-shape tm k (car cs)))
-                                            down?))
-                             (range->list across 1))
-                        (let ((face (* (if fwd? (car cs) (+ (car cs) 1)) tile)))
-                          (if exact
-                              (- face (if fwd? (+ pos size) pos))
-                              (- (fl face) (fl (if fwd? (num+ pos size) pos))))))
-                       (else (loop (cdr cs)))))))))
+               (shaped-cut
+                b x-axis? tm across
+                (if x-axis? (clip (cells-between now reach) col0 cols) (clip (cells-between now reach) row0 rows))
+                (let loop ((cs (range->list entered (if fwd? 1 -1))))
+                  (cond ((null? cs) d)
+                        ((any (lambda (k)
+                                (stops-push? (if x-axis? (tilemap-cell-shape tm (car cs) k)
+                                                 (tilemap-cell-shape tm k (car cs)))
+                                             down?))
+                              (range->list across 1))
+                         (let ((face (* (if fwd? (car cs) (+ (car cs) 1)) tile)))
+                           (if exact
+                               (- face (if fwd? (+ pos size) pos))
+                               (- (fl face) (fl (if fwd? (num+ pos size) pos))))))
+                        (else (loop (cdr cs))))))))))
      (tilemap-solid-extent tm))))
+
+(define (cells-between a b)
+  "The cells of ranges A and B and every one between."
+  (cons (min (car a) (car b)) (max (cdr a) (cdr b))))
+
+(define (shaped-cut b x-axis? tm across swept cut)
+  "CUT, or a shorter stop at a shape in the cells SWEPT (along the axis) ×
+ACROSS: the nearest, exact when B's box is and it is an integer."
+  (let ((exact (box-exact-b? b)))
+    (fold (lambda (c cut)
+            (fold (lambda (k cut)
+                    (let* ((col (if x-axis? c k)) (row (if x-axis? k c))
+                           (cell (tilemap-cell-shape tm col row))
+                           (stop (and (vector? cell) (shape-stop b (place cell col row tm) x-axis? cut))))
+                      (if (and stop (< (abs stop) (abs (fl cut)))) (exact-if exact stop) cut)))
+                  cut (range->list across 1)))
+          cut (range->list swept 1))))
+
+(define (box-exact-b? b) (every exact? (list (x b) (y b) (w b) (h b))))
 
 (define (place-at! b x-axis? target)
   "Box B's position along an axis to TARGET: all the way under the seed's
@@ -920,54 +992,79 @@ rule or when nothing stops it, else as far as clipped-push lets it."
           (vector-set! b slot (if (= cut d) target (num+ pos cut))))
         (vector-set! b slot target))))
 
-(define (in-solid? tm bx by bw bh)
-  "Whether a box overlaps a whole solid cell."
+(define (solid-shape-at tm col row)
+  "The placed shape of a cell when it is a solid (not one-way) one, or #f."
+  (let ((cell (tilemap-cell-shape tm col row)))
+    (and (vector? cell) (not (one-way-shape? cell)) (place cell col row tm))))
+
+(define (each-inside tm bx by bw bh proc)
+  "(PROC col row p) for each cell a box overlaps that is a whole solid cell
+(P #f) or a solid shape whose solid it overlaps (P the placed shape)."
   (apply (lambda (col0 row0 cols rows)
            (let ((cs (clip (cells-of bx bw (tilemap-tile-width tm)) col0 cols))
-                 (rs (clip (cells-of by bh (tilemap-tile-height tm)) row0 rows)))
-             (any (lambda (r) (any (lambda (c) (eq? (tilemap-cell-shape tm c r) 'solid))
-                                   (range->list cs 1)))
-                  (range->list rs 1))))
+                 (rs (clip (cells-of by bh (tilemap-tile-height tm)) row0 rows))
+                 (lo (fl bx)) (hi (fl (num+ bx bw))) (top (fl by)) (bottom (fl (num+ by bh))))
+             (for-each
+              (lambda (r)
+                (for-each
+                 (lambda (c)
+                   (if (eq? (tilemap-cell-shape tm c r) 'solid)
+                       (proc c r #f)
+                       (let ((p (solid-shape-at tm c r)))
+                         (when (and p (p-overlaps? p lo hi top bottom)) (proc c r p)))))
+                 (range->list cs 1)))
+              (range->list rs 1))))
          (tilemap-solid-extent tm)))
 
-(define (way-out tm b x-axis? fwd?)
-  "The least distance (a double for inexact boxes) box B moves along an axis,
-one way, to overlap no whole solid cell: the places with its leading face on
-a cell edge, nearest first, up to the grid's edge."
-  (let* ((pos (vector-ref b (if x-axis? 0 1))) (size (vector-ref b (if x-axis? 2 3)))
+(define (in-solid? tm bx by bw bh)
+  "Whether a box overlaps a whole solid cell or the solid of a shape (not a
+one-way one): what put-out counts as inside."
+  (call/cc (lambda (k) (each-inside tm bx by bw bh (lambda (c r p) (k #t))) #f)))
+
+(define (next-place tm b x-axis? fwd? at exact)
+  "Box B's nearest position along an axis beyond AT that could be free: past
+every solid it overlaps there — a whole cell by its far edge, a shape by
+its surface (up), its underside (down), its box's side (along x)."
+  (let* ((bx (if x-axis? at (x b))) (by (if x-axis? (y b) at))
+         (size (if x-axis? (w b) (h b)))
          (tile (if x-axis? (tilemap-tile-width tm) (tilemap-tile-height tm)))
-         (extent (tilemap-solid-extent tm))
-         (origin (if x-axis? (car extent) (cadr extent)))
-         (count (if x-axis? (caddr extent) (cadddr extent)))
-         (now (cells-of pos size tile))
-         (exact (and (exact? pos) (exact? size)))
-         (stop (if fwd? (+ origin count) origin)))
-    (let loop ((e (if fwd? (+ (car now) 1) (cdr now))))
-      (let* ((edge (* e tile))
-             (to (if exact
-                     (if fwd? edge (- edge size))
-                     (if fwd? (fl edge) (- (fl edge) (fl size)))))
-             (free (not (if x-axis? (in-solid? tm to (y b) (w b) (h b)) (in-solid? tm (x b) to (w b) (h b))))))
-        (if (or free (if fwd? (>= e stop) (<= e stop)))
-            (if exact (abs (- to pos)) (abs (- (fl to) (fl pos))))
-            (loop (if fwd? (+ e 1) (- e 1))))))))
+         (face #f)
+         (ask! (lambda (f) (set! face (if (not face) f (if fwd? (if (< face f) f face) (if (< f face) f face)))))))
+    (each-inside tm bx by (w b) (h b)
+                 (lambda (c r p)
+                   (if p
+                       (let ((ab (p-over p (fl bx) (fl (num+ bx (w b))))))
+                         (ask! (if x-axis?
+                                   (if fwd? (p-right p) (p-left p))
+                                   (if fwd? (p-underside p ab) (p-surface p ab)))))
+                       (let ((along (if x-axis? c r)))
+                         (ask! (fl (* (if fwd? (+ along 1) along) tile)))))))
+    (exact-if exact (if fwd? face (- face (fl size))))))
+
+(define (way-out tm b x-axis? fwd?)
+  "Box B's position along an axis at the nearest place, one way, where it
+overlaps no solid: from place to place (next-place); beyond the grid
+nothing is solid."
+  (let ((exact (box-exact-b? b)))
+    (let loop ((at (if x-axis? (x b) (y b))))
+      (if (if x-axis? (in-solid? tm at (y b) (w b) (h b)) (in-solid? tm (x b) at (w b) (h b)))
+          (loop (next-place tm b x-axis? fwd? at exact))
+          at))))
 
 (define (put-out! b tm)
-  "Box B, when it overlaps a whole solid cell, out of it by the shortest of
-the four axis moves (ties: up, left, right, down); the velocity on that
-axis becomes 0 when it pointed back in."
-  (when (and (> (w b) 0) (> (h b) 0) (in-solid? tm (x b) (y b) (w b) (h b)))
-    (let* ((exact (every exact? (list (x b) (y b) (w b) (h b))))
-           (up (way-out tm b #f #f)) (left (way-out tm b #t #f))
+  "Box B, when it overlaps a whole solid cell or a solid shape, out of it by
+the shortest of the four axis moves (ties: up, left, right, down); the
+velocity on that axis becomes 0 when it pointed back in."
+  (when (and (every (lambda (v) (finite? (fl v))) (list (x b) (y b) (w b) (h b)))
+             (> (w b) 0) (> (h b) 0) (in-solid? tm (x b) (y b) (w b) (h b)))
+    (let* ((up (way-out tm b #f #f)) (left (way-out tm b #t #f))
            (right (way-out tm b #t #t)) (down (way-out tm b #f #t))
-           (least (min up left right down))
-           (move (lambda (slot d)
-                   (vector-set! b slot (if exact (+ (vector-ref b slot) d)
-                                           (+ (fl (vector-ref b slot)) (fl d)))))))
-      (cond ((= least up) (move 1 (- up)) (when (> (vector-ref b 5) 0) (vector-set! b 5 0)))
-            ((= least left) (move 0 (- left)) (when (> (vector-ref b 4) 0) (vector-set! b 4 0)))
-            ((= least right) (move 0 right) (when (< (vector-ref b 4) 0) (vector-set! b 4 0)))
-            (else (move 1 down) (when (< (vector-ref b 5) 0) (vector-set! b 5 0)))))))
+           (far (lambda (to from) (abs (- (fl to) (fl from)))))
+           (least (min (far up (y b)) (far left (x b)) (far right (x b)) (far down (y b)))))
+      (cond ((= least (far up (y b))) (vector-set! b 1 up) (when (> (vector-ref b 5) 0) (vector-set! b 5 0)))
+            ((= least (far left (x b))) (vector-set! b 0 left) (when (> (vector-ref b 4) 0) (vector-set! b 4 0)))
+            ((= least (far right (x b))) (vector-set! b 0 right) (when (< (vector-ref b 4) 0) (vector-set! b 4 0)))
+            (else (vector-set! b 1 down) (when (< (vector-ref b 5) 0) (vector-set! b 5 0)))))))
 
 ;;; ---------------------------------------------------------------- bulk steps (§4)
 ;;; A bulk step works on every entity's numbers and then writes each

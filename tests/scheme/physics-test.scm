@@ -1006,6 +1006,32 @@
                                                              (#:x 20 #:y 8 #:width 16 #:height 16 #:solid? #t))
                                                 #:tilemap wall)
                                     1)))))
+;; A 45° floor ramp up to the right in cell (2, 1): x ∈ [32, 48), y ∈ [16,
+;; 32), its slant y = 64 − x. A push is cut where the box meets the slope.
+(let ((ramp (make-tilemap 4 3 16 16 (list->vector (map (lambda (i) (if (= i 6) 3 0)) (iota 12)))
+                          '(1) '() '((3 . (polygon (0 . 16) (16 . 16) (16 . 0))))))
+      (x-of (lambda (s) (map (lambda (e) (list (entity-ref e #:x) (entity-ref e #:y))) (scene-entities s)))))
+  (define (after entities) (x-of (frames-of (make-scene #:entities entities #:tilemap ramp) 1)))
+  ;; Pushed right off an immovable body towards x 30: the feet (28) meet
+  ;; the slant at x 36, where the box's right side stops.
+  (let ((pusher '(#:x 10 #:y 12 #:width 20 #:height 16 #:solid? #t #:immovable? #t))
+        (box '(#:x 20 #:y 16 #:width 8 #:height 12 #:solid? #t)))
+    (test-equal "a box pushed sideways up against a 45° ramp stops where its corner meets the slope"
+      '((10 12) (28 16)) (after (list pusher box)))
+    (test-equal "… where the seed's push rule pushes it into the ramp"
+      '((10 12) (30 16)) (parameterize ((push-rule 'seed)) (after (list pusher box)))))
+  ;; Pushed down off an immovable body towards y 16: over [36, 44) the slope
+  ;; is highest at 44, y 20, where the feet stop.
+  (let ((pusher '(#:x 34 #:y -20 #:width 12 #:height 36 #:solid? #t #:immovable? #t))
+        (box '(#:x 36 #:y 4 #:width 8 #:height 8 #:solid? #t)))
+    (test-equal "a box pushed down onto a ramp stops on the slope"
+      '((34 -20) (36 12)) (after (list pusher box)))
+    (test-equal "… where the seed's push rule pushes it into the ramp"
+      '((34 -20) (36 16)) (parameterize ((push-rule 'seed)) (after (list pusher box)))))
+  ;; Sunk into the slope (feet 22, the surface over [40, 48) is 16): up 6 is
+  ;; the shortest way (left 16, right 8, down 18).
+  (test-equal "a box sunk into a ramp is put out onto its slope"
+    '((40 8)) (after '((#:x 40 #:y 14 #:width 8 #:height 8 #:solid? #t)))))
 ;; A ceiling, row 4 (y ∈ [64, 80)).
 (let ((ceiling (grid-map 10 10 (row 4 10))))
   ;; Push-apart's lift onto the carrier (to 78) is cut at the ceiling (§4).
