@@ -62,6 +62,7 @@ Plan plan_for(const Args& a) {
     if (a.quick) {
         p.scene_frames = 100;
         p.drift_frames = 1000;
+        p.sinking_frames = 100;
     }
     p.shortcut = !a.every_frame;
     p.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -91,7 +92,7 @@ void measure_timed(std::vector<Row>& rows, const Plan& p) {
 }
 
 // The long runs, in parallel, the slowest (most sub-frames) first.
-void measure_untimed(std::vector<Row>& rows, const Plan& p) {
+void measure_untimed(std::vector<Row>& rows, std::vector<Sinking>& sinking, const Plan& p) {
     const Setup drop_scene = drop(), stack_scene = stack(p.stack_n), crowd_scene = resting_crowd(p.crowd_n);
     std::vector<std::function<void()>> jobs;
     auto add = [&](Run& out, const Setup& s, long frames, const Config& c) {
@@ -109,17 +110,29 @@ void measure_untimed(std::vector<Row>& rows, const Plan& p) {
                 add(r.stack, stack_scene, p.drift_frames, r.cfg);
                 add(r.drop, drop_scene, p.scene_frames, r.cfg);
             }
+    // The check, under each push rule, the largest first.
+    for (const std::string& scene : sinking_scenes())
+        for (int n : sinking_ns(p.quick))
+            for (ds::PushRule rule : {ds::PushRule::Clipped, ds::PushRule::Seed}) sinking.push_back({scene, n, rule});
+    for (size_t i = sinking.size(); i-- > 0;)
+        jobs.push_back([&out = sinking[i], &p] {
+            const int64_t t0 = now_ns();
+            out = measure_sinking(out.scene, out.n, out.rule, p.sinking_frames);
+            std::fprintf(stderr, "accuracy: sinking %s %d %s: %ld of %ld bodies sunk, %.1f s\n", out.scene.c_str(),
+                         out.n, out.rule == ds::PushRule::Seed ? "seed" : "clipped", out.sunk, out.movers,
+                         static_cast<double>(now_ns() - t0) / 1e9);
+        });
     run_jobs(jobs, p.jobs);
 }
 
-std::vector<Row> measure_all(const Plan& p) {
+std::vector<Row> measure_all(const Plan& p, std::vector<Sinking>& sinking) {
     std::vector<Row> rows;
     for (const Config& c : configs()) {
         rows.emplace_back();
         rows.back().cfg = c;
     }
     measure_timed(rows, p);
-    measure_untimed(rows, p);
+    measure_untimed(rows, sinking, p);
     for (size_t i = 1; i < rows.size(); ++i)
         if (rows[i].cfg.k > 1) rows[i].ratio = rows[i - 1].traj.max_error / rows[i].traj.max_error;
     print_header(stdout);
@@ -149,8 +162,8 @@ int accuracy_main(int argc, char** argv) {
     const int64_t t0 = now_ns();
     Document doc;
     doc.plan = plan_for(args);
-    doc.rows = measure_all(doc.plan);
-    doc.goals = judge(doc.rows);
+    doc.rows = measure_all(doc.plan, doc.sinking);
+    doc.goals = judge(doc.rows, doc.sinking);
     print_goals(stdout, doc.goals);
     const PlotResult plot = write_plot(args.png, doc.rows);
     std::printf("plot: %s\n", plot.note.c_str());

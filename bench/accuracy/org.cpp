@@ -99,6 +99,27 @@ std::string scene_table(const std::vector<Row>& rows, Cell cellf) {
     return s + "\n";
 }
 
+// Issue 50's check: per scene and N, the default push rule beside the seed's.
+std::string sinking_table(const std::vector<Sinking>& all, long frames) {
+    auto of = [](const Sinking& s) {
+        return std::vector<std::string>{std::to_string(s.sunk), std::to_string(s.sunk_at_end),
+                                        s.deepest == 0 ? "0" : px(s.deepest)};
+    };
+    std::string t = org_row({"scene", "N", "clipped: sunk", "at end", "deepest px", "seed: sunk", "at end",
+                             "deepest px"}) + "|-\n";
+    for (size_t i = 0; i + 1 < all.size(); i += 2) {
+        const Sinking& c = all[i].rule == ds::PushRule::Clipped ? all[i] : all[i + 1];
+        const Sinking& seed = all[i].rule == ds::PushRule::Clipped ? all[i + 1] : all[i];
+        std::vector<std::string> cs{c.scene, std::to_string(c.n)};
+        for (const auto& v : of(c)) cs.push_back(v);
+        for (const auto& v : of(seed)) cs.push_back(v);
+        t += org_row(cs);
+    }
+    return t + "\nsunk: the bodies that ended a frame " + px(kSunkDepth) + " px or more inside a solid tile, at any of " +
+           std::to_string(frames) + " frames (the speed benchmark's scenes and stepping: swept, k = 1, no resting " +
+           "contacts); at end: at the last frame's end; deepest: the smaller axis overlap with one cell.\n\n";
+}
+
 std::string goals(const std::vector<Goal>& gs) {
     std::string s;
     for (const Goal& g : gs) s += "- " + std::string(g.met ? "met" : "*MISSED*") + " :: " + g.name + " (" + g.detail + ")\n";
@@ -116,6 +137,7 @@ std::string results(const Document& d) {
     if (d.plan.quick) o << "This is a =--quick= run: fewer frames than the full benchmark.\n\n";
     o << main_table(d.rows) << "** Goals\n\n" << goals(d.goals) << "** Plot\n\n" << plot(d)
       << "** Penetration by scene\n\n" << scene_table(d.rows, depth) << penetration_summary(d.rows)
+      << "** Sinking at every N\n\n" << sinking_table(d.sinking, d.plan.sinking_frames)
       << "** Drift sideways\n\n" << scene_table(d.rows, [](const Run& r) { return px(r.max_dx); })
       << "** Time per frame by scene\n\n" << scene_table(d.rows, [](const Run& r) { return sig3(r.median_ms); });
     return o.str();

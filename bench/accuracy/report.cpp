@@ -41,7 +41,7 @@ const Run& Row::deepest() const {
     return *best;
 }
 
-std::vector<Goal> judge(const std::vector<Row>& rows) {
+std::vector<Goal> judge(const std::vector<Row>& rows, const std::vector<Sinking>& sinking) {
     const auto swept = [](const Row& r) { return r.cfg.mode == ds::CollisionMode::Swept; };
     std::vector<Goal> goals;
     goals.push_back(goal("swept lets nothing through",
@@ -63,6 +63,12 @@ std::vector<Goal> judge(const std::vector<Row>& rows) {
     goals.push_back(goal("trajectory error falls as 1/k (each ratio within 10% of 2)",
                          failing(rows, [](const Row& r) { return r.cfg.k > 1 && std::fabs(r.ratio - 2) > 0.2; }),
                          "every ratio"));
+    std::string sunk;
+    for (const Sinking& s : sinking)
+        if (s.rule == ds::PushRule::Clipped && s.sunk != 0)
+            sunk += (sunk.empty() ? "" : ", ") + s.scene + " " + std::to_string(s.n);
+    goals.push_back({"default push rule: no body ends a frame 1 px or more inside a solid tile (issue 50)",
+                     sunk.empty(), sunk.empty() ? "crowd, rain, bullets, platformer at every N" : "not in: " + sunk});
     return goals;
 }
 

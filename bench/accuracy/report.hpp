@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "accuracy/runs.hpp"
+#include "accuracy/sinking.hpp"
 #include "common/run_info.hpp"
 
 namespace bench::accuracy {
@@ -23,6 +24,7 @@ struct Plan {
     int crowd_n = 256;  // 32 stacks and a pillar; larger and the full run passes 2 min on 2 cores
     bool shortcut = true;  // stop a run early once its whole state cycles (run_scene)
     int jobs = 2;          // threads for the runs after the timed ones
+    long sinking_frames = 300;  // the issue's check (Sinking), as the issue counted it
 };
 
 struct Row {
@@ -42,7 +44,7 @@ struct Goal {
     bool met = false;
     std::string detail;
 };
-std::vector<Goal> judge(const std::vector<Row>& rows);
+std::vector<Goal> judge(const std::vector<Row>& rows, const std::vector<Sinking>& sinking);
 
 void print_header(std::FILE* out);
 void print_row(std::FILE* out, const Row& row);
@@ -52,6 +54,7 @@ struct Document {
     RunInfo info;
     Plan plan;
     std::vector<Row> rows;
+    std::vector<Sinking> sinking;  // per scene and N, the default rule then the seed's
     std::vector<Goal> goals;
     std::string png_link;  // the plot, relative to the document ("" when skipped)
     std::string plot_note;  // what became of the plot

@@ -57,8 +57,6 @@ std::vector<ds::Body> to_bodies(const Scene& s) {
     return out;
 }
 
-namespace {
-
 // The untimed bounce update, as (bench driver) does it on plists: an axis
 // whose velocity a collision zeroed turns round.
 void bounce(std::vector<ds::Body>& bodies, std::vector<int64_t>& rvx, std::vector<int64_t>& rvy) {
@@ -74,8 +72,6 @@ void bounce(std::vector<ds::Body>& bodies, std::vector<int64_t>& rvx, std::vecto
         }
     }
 }
-
-}  // namespace
 
 // The scene's shaped cells, read as the map loader reads a collision polygon.
 void add_shapes(ds::TileGrid& grid, const Scene& scene) {

@@ -53,6 +53,9 @@ struct PathResult {
 // its shaped cells added to a grid made from its solid mask.
 std::vector<ds::Body> to_bodies(const Scene& scene);
 void add_shapes(ds::TileGrid& grid, const Scene& scene);
+// The scenes' bounce update after a frame (Scene::bounce): an axis whose
+// velocity a collision zeroed turns round to rvx / rvy, whose signs it flips.
+void bounce(std::vector<ds::Body>& bodies, std::vector<int64_t>& rvx, std::vector<int64_t>& rvy);
 
 // ds::World + ds::Frame::step, one call per frame.
 PathResult run_native(const Scene& scene, const RunConfig& cfg);
