@@ -53,6 +53,9 @@
 ;;;   4 px ledge, a small triangle, a one-way ramp), each with random flip bits
 ;;;   (horizontal, vertical: a ceiling ramp, diagonal); tile edits on such maps
 ;;;   may put ramps too.
+;;; - Push-apart against the map (semantics §4), in about 1 map in 3 (its own
+;;;   stream, map-pushers): boxes spawned inside solid and shaped cells, a
+;;;   squeezed stack landing on a floor, two boxes pushed into a wall.
 ;;; - Categories, sensors and bounce (semantics §13) in about 2 scenes in 3
 ;;;   (collision-roles: its own stream).
 ;;; - Gravity and speed limits (semantics §14), each from a stream of its own:
@@ -500,6 +503,58 @@
   (let ((r (make-rng seed 130399)))
     (if (chance r 2 3) 1 (pick r '(1/2 2 0 -1 0.5 1.0 1/6 3)))))
 
+;;; ---------------------------------------------------------------- push-apart against the map (§4)
+;;; In about 1 map in 3, bodies that make push-apart meet the map (the
+;;; 'clipped push rule): 1–3 boxes spawned overlapping a solid or shaped
+;;; cell, to be put out; a stack of 3–5 boxes squeezed together on a floor
+;;; cell, the upper ones falling, so that landing pushes the lowest into it;
+;;; and two boxes overlapping beside a wall, the outer one moving towards
+;;; it. Appended after the scene's own entities, from a stream of their own:
+;;; every other draw of the scene stays as it was.
+(define (map-pushers seed spec)
+  (let ((r (make-rng seed 104729)))
+    (if (not (and spec (chance r 1 3)))
+        '()
+        (apply
+         (lambda (cols rows tw th cells)
+           (define (gid c row) (if (and (< -1 c cols) (< -1 row rows)) (vector-ref cells (+ c (* row cols))) 0))
+           (define (blocks? g) (or (eqv? g 1) (>= (logand g #x1FFFFFFF) 3)))
+           (define (box x y w h . more)
+             (append (list #:x x #:y y #:width w #:height h #:solid? #t) more))
+           (let* ((cells-where (lambda (ok?) (filter (lambda (i) (ok? (modulo i cols) (quotient i cols)))
+                                                     (iota (* cols rows)))))
+                  (blocked (cells-where (lambda (c row) (blocks? (gid c row)))))
+                  (floors (cells-where (lambda (c row) (and (eqv? (gid c row) 1) (eqv? (gid c (- row 1)) 0)))))
+                  (walls (cells-where (lambda (c row) (and (eqv? (gid c row) 1) (eqv? (gid (- c 1) row) 0)))))
+                  (at (lambda (i) (values (* tw (modulo i cols)) (* th (quotient i cols)))))
+                  (spawned
+                   (if (null? blocked)
+                       '()
+                       (map (lambda (k)
+                              (let-values (((x y) (at (pick r blocked))))
+                                (box (+ x (rr r -6 (- tw 2))) (+ y (rr r -6 (- th 2)))
+                                     (pick r '(4 8 12 16)) (pick r '(4 8 12 16))
+                                     #:gravity? (chance r 1 2) #:vx (rr r -3 3))))
+                            (iota (rr r 1 3)))))
+                  (stack
+                   (if (null? floors)
+                       '()
+                       (let-values (((x top) (at (pick r floors))))
+                         (let ((size (pick r '(8 16))) (squeeze (rr r 1 6)) (dx (rr r -4 4)))
+                           (map (lambda (k)
+                                  (box (+ x dx) (- top size (* k (- size squeeze))) size size
+                                       #:gravity? #t #:vy (if (= k 0) 0 (rr r 0 12))))
+                                (iota (rr r 3 5)))))))
+                  (pair
+                   (if (null? walls)
+                       '()
+                       (let-values (((x y) (at (pick r walls))))
+                         (let ((size (pick r '(8 16))) (squeeze (rr r 1 6)))
+                           (list (box (- x size (rr r -2 2)) y size size)
+                                 (box (- x size size (- squeeze)) y size size #:vx (rr r 2 12))))))))
+             (append spawned stack pair)))
+         spec))))
+
 (define (generate-scene-parts seed)
   (let* ((r (make-rng seed 0))
          (spec (and (chance r 3 4) (make-tilemap-spec r)))
@@ -516,12 +571,14 @@
                                (speed-knobs seed
                                             (collision-roles seed (map (compose carrier-platform one-way-ledge) (reverse acc))))
                                (iota (length acc)))))
-            (values (if (and scene-gen-invalid? (chance r 1 30))
-                        (let* ((i (ri r (length entities))) (p (invalid-pair r)))
-                          (append (take entities i)
-                                  (list (entity-set (list-ref entities i) (car p) (cdr p)))
-                                  (drop entities (+ i 1))))
-                        entities)
+            (values (append
+                     (if (and scene-gen-invalid? (chance r 1 30))
+                         (let* ((i (ri r (length entities))) (p (invalid-pair r)))
+                           (append (take entities i)
+                                   (list (entity-set (list-ref entities i) (car p) (cdr p)))
+                                   (drop entities (+ i 1))))
+                         entities)
+                     (map-pushers seed spec))
                     spec))
           (let* ((role (wpick r '((40 . body) (15 . crate) (12 . platform) (8 . projectile)
                                   (8 . decoration) (17 . chaos))))
