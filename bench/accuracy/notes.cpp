@@ -43,9 +43,14 @@ std::string penetration_summary(const std::vector<Row>& rows) {
     o << "Bodies ended frames inside a solid in " << t.inside << " of " << t.runs
       << " scene runs; the deepest, " << px(t.deepest->worst.depth) << " px, in " << t.deepest->scene << " ("
       << config_name(*t.deepest_cfg) << ", frame " << t.deepest->worst.frame << ")"
-      << (t.deepest->worst.depth >= 8 ? ", is an 8×8 box wholly inside a tile" : "") << ". "
-      << (t.immovable ? std::to_string(t.immovable) + " of those deepest cases are inside an immovable body, the rest in tiles."
-                      : "Every one of those deepest cases is inside a tile, none inside an immovable body.")
+      << (t.deepest->worst.depth >= 8
+              ? std::string(", is an 8×8 box wholly inside ") + (t.deepest->worst.in_tile ? "a tile" : "an immovable body")
+              : "")
+      << ". "
+      << (t.immovable == 0            ? "Every one of those deepest cases is inside a tile, none inside an immovable body."
+          : t.immovable == t.inside ? "Every one of those deepest cases is inside an immovable body, none inside a tile."
+                                      : std::to_string(t.immovable) +
+                                            " of those deepest cases are inside an immovable body, the rest in tiles.")
       << " By the cause of each run's deepest case:";
     for (const auto& [cause, n] : t.causes) o << " " << cause << " " << n << ";";
     o.seekp(-1, std::ios_base::cur);
