@@ -42,7 +42,7 @@ std::string usage() {
            "       downstroke-bench slopes [--n N[,N…]] [--rounds R] [--frames F] [--org FILE]   ramps against flat tiles, in turn\n"
            "speed options:\n"
            "  --scene S[,S…]   rain crowd rest bullets platformer ramps ramps-flat\n"
-           "                   crowd-categories crowd-sensors shots shots-quiet\n"
+           "                   crowd-categories crowd-sensors crowd-resting shots shots-quiet\n"
            "                   shots-author-first shots-author-first-quiet knobs\n"
            "                   knobs-off (default: all)\n"
            "  --n N[,N…]       entity counts (default: 100,1000,10000,100000)\n"

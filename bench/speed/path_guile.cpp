@@ -109,7 +109,14 @@ SCM run_job(void* data) {
                           scm_from_int64(static_cast<int64_t>(job.cfg.max_frame_ms * 1e6)),
                           scm_from_int64(static_cast<int64_t>(budget_ns)), scm_from_bool(!job.reference),
                           SCM_UNDEFINED);
-    SCM result = scm_apply_0(scm_c_public_ref("bench driver", "run-frames"), args);
+    // A scene with resting contacts runs under (parameterize ((resting-contacts? #t)) …).
+    SCM run_frames = scm_c_public_ref("bench driver", "run-frames");
+    if (s.resting_contacts)
+        run_frames = scm_call_1(scm_c_eval_string("(lambda (run) (lambda args (parameterize "
+                                                  "(((@ (downstroke physics) resting-contacts?) #t)) "
+                                                  "(apply run args))))"),
+                                run_frames);
+    SCM result = scm_apply_0(run_frames, args);
     SCM times = scm_car(result);
     const double bytes = scm_to_double(scm_cadr(result));
     const double overhead = scm_to_double(scm_caddr(result));

@@ -96,7 +96,8 @@ PathResult run_native(const Scene& scene, const RunConfig& cfg) {
     std::vector<int64_t> rvx, rvy;
     for (const SceneBody& b : scene.bodies) rvx.push_back(b.rvx), rvy.push_back(b.rvy);
     ds::Frame frame;
-    const ds::FrameOptions opts;  // swept, dt = 1000/60 ms
+    ds::FrameOptions opts;  // swept, dt = 1000/60 ms
+    opts.resting_contacts = scene.resting_contacts;
     r.setup_ms = static_cast<double>(now_ns() - t_setup) / 1e6;
     FrameGuard guard(cfg.max_frame_ms, cfg.budget_ms);
     r.frame_ms.reserve(static_cast<size_t>(cfg.frames));

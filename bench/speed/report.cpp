@@ -207,6 +207,12 @@ each body goes through the same motion whatever N is.
   each frame the sensors' pairs are found and, on the Scheme paths, named
   in scene-contacts. crowd-sensors ÷ crowd is what the sensors cost.
   (Box2D: static sensor fixtures.)
+- crowd-resting :: crowd stepped with resting contacts on (the native
+  path's FrameOptions, the Scheme paths' =resting-contacts?=), under which
+  a stack of touching boxes stays put, as Box2D's stacks come to rest on
+  their own: the crowd a resting group can sleep in (settle.hpp), so
+  crowd-resting against box2d3 is the sleeping crowd against v3's. (Box2D:
+  mapped exactly as crowd.)
 - shots :: a shooter's busy frame: N 4×4 shots (sensors in the category
   shot, colliding with enemy; =#:bounce 1=; no gravity; 2–4 px/frame in
   every direction) in an open walled arena, 2 tiles apart at the start,

@@ -182,6 +182,16 @@ Scene crowd_sensors(int n) {
     return s;
 }
 
+// crowd-resting: crowd stepped with resting contacts on, under which a
+// stack of touching boxes stays put, as Box2D's stacks come to rest: the
+// scene where resting groups of colliders can sleep (settle.hpp).
+// crowd-resting ÷ crowd is what sleeping saves once the stacks rest.
+Scene crowd_resting(int n) {
+    Scene s = crowd(n);
+    s.resting_contacts = true;
+    return s;
+}
+
 // rest: 8×8 gravity boxes (not solid) standing exactly on shelves of tiles,
 // on-ground, vy 0: a frame changes nothing.
 Scene rest(int n) {
@@ -358,7 +368,7 @@ void check_at_rest(const Scene& s) {
 
 const std::vector<std::string>& scene_names() {
     static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
-                                                   "ramps-flat", "crowd-categories", "crowd-sensors",
+                                                   "ramps-flat", "crowd-categories", "crowd-sensors", "crowd-resting",
                                                    "shots", "shots-quiet", "shots-author-first",
                                                    "shots-author-first-quiet", "knobs",
                                                    "knobs-off"};
@@ -382,6 +392,7 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "ramps-flat") s = ramps(n, true);
     else if (name == "crowd-categories") s = crowd_categories(n);
     else if (name == "crowd-sensors") s = crowd_sensors(n);
+    else if (name == "crowd-resting") s = crowd_resting(n);
     else if (name == "shots") s = shots(n, true, false);
     else if (name == "shots-quiet") s = shots(n, false, false);
     else if (name == "shots-author-first") s = shots(n, true, true);

@@ -53,6 +53,9 @@ struct Scene {
     bool bounce = false;            // run the bounce update after every frame
     bool bullets = false;           // Box2D: make movers bullet bodies
     bool settle_box2d = false;      // Box2D: step until asleep before warm-up
+    // Step with resting contacts on (FrameOptions::resting_contacts, Scheme
+    // resting-contacts?); Box2D paths ignore it (their stacks rest anyway).
+    bool resting_contacts = false;
 };
 
 const std::vector<std::string>& scene_names();
