@@ -139,7 +139,8 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
     SubStep sub = SubStep::of_frame(opts.substeps);
     sub.gather = round > 0;
     const auto t0 = Clock::now();
-    const bool indexed = supporters_.size() >= kSupportIndexFrom;
+    // (With every body asleep nobody looks for a supporter.)
+    const bool indexed = supporters_.size() >= kSupportIndexFrom && !active_.empty();
     if (indexed) support_index_.build(supporters_);
     stats_.step[kStepOnSolid].ms += ms_since(t0);
     resting_.assign(opts.resting_contacts ? bodies.size() : 0, 0);
@@ -283,10 +284,11 @@ void Frame::Impl::step_physics(std::span<Body> bodies, const TileGrid* grid, con
                          std::span<const Body> scene, std::span<FirstWrites> writes,
                          std::span<const uint8_t> asleep) {
     census(bodies, asleep, false);
+    groups_asleep_ = false;
     run_physics(bodies, grid, opts, scene, writes);
 }
 
-void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         std::span<const Body> scene, std::span<FirstWrites> writes) {
     for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
         stats_.step[id] = {};
@@ -308,19 +310,25 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         step_bodies(bodies, grid, opts, round, writes);
         auto t0 = Clock::now();
         if (carrying) carry(bodies, grid, opts, writes);
+        if (groups_asleep_ && reaches_asleep(bodies, round)) {
+            end_contact_log();
+            return true;
+        }
         const bool reports = contact_bodies_ != 0;
-        const std::span<const size_t> pass = pass_members();
+        // Asleep members meet nobody in push-apart (none reaches them) and
+        // are out of every solid already: the pass and the put-out leave them out.
+        const std::span<const size_t> pass = groups_asleep_ ? std::span<const size_t>(awake_members_) : pass_members();
         contacts_.walls = opts.push == PushRule::Clipped ? grid : nullptr;
         const bool put_out = contacts_.walls && !members_.empty();
         if (pass.size() >= 2 || reports || put_out)
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy | (reports ? kFieldTouching : 0u),
                         [&](std::span<Body> bs) {
                             if (pass.size() >= 2) resolve_entity_collisions_among(contacts_, bs, pass, resting_);
-                            if (put_out) put_members_out(bs, *grid);
+                            if (put_out) put_members_out(bs, *grid, pass);
                             if (reports) mark_touching(bs);
                         });
         if (carrying) crush(bodies, grid, opts, writes);
-        const auto solid = static_cast<uint64_t>(supporters_.size());
+        const auto solid = static_cast<uint64_t>(groups_asleep_ ? pass.size() : supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
         push = {push.processed + solid, push.skipped + bodies.size() - solid, push.ms + ms_since(t0)};
         t0 = Clock::now();
@@ -332,15 +340,28 @@ void Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
                   groups.ms + ms_since(t0)};
     }
     end_contact_log();
+    return false;
 }
 
-void Frame::Impl::put_members_out(std::span<Body> bodies, const TileGrid& grid) {
+bool Frame::Impl::reaches_asleep(std::span<const Body> bodies, int round) {
+    if (awake_members_.empty()) return false;
+    RestingGroups& groups = settling_.groups();
+    if (round == 0) groups.file_asleep(bodies, members_);
+    bool any = false;
+    for (const size_t i : awake_members_) {
+        groups.extend(i, bodies[i]);
+        any |= groups.reached(i);
+    }
+    return any;
+}
+
+void Frame::Impl::put_members_out(std::span<Body> bodies, const TileGrid& grid, std::span<const size_t> members) {
     // Push-apart's pairs are cut at solid cells, but a body can begin the
     // frame in one (spawned there, or moved by its owner): it leaves by the
     // shortest way here rather than be carried on by the next tile steps.
     // Immovable bodies are placed by their owner, and a body that skips a
     // tile step has asked the map to leave it alone.
-    for (const size_t i : members_) {
+    for (const size_t i : members) {
         Body& b = bodies[i];
         if (!b.immovable && !b.skips(kSkipTileX | kSkipTileY)) put_out_of_solids(b, grid);
     }
@@ -379,15 +400,59 @@ void Frame::Impl::plan_sleep(const World& world, const FrameOptions& opts) {
         settling_.propose(i, world.bodies[i]);
     }
     end_census();
+    // Resting groups sleep only in frames whose every read of another body
+    // the extents bound (settle.hpp's RestingGroups).
+    groups_allowed_ = carriers_.empty() && !crushed_ && grouped_ == 0 && contact_bodies_ == 0 &&
+                      overlay_log_ == nullptr;
+    settling_.allow_groups(groups_allowed_);
     active_.clear();
+    RestingGroups& groups = settling_.groups();
     for (size_t i = 0; i < n; ++i)
-        if (!settling_.confirm(i, colliders_)) active_.push_back(static_cast<uint32_t>(i));
+        if (!settling_.confirm(i, colliders_)) {
+            active_.push_back(static_cast<uint32_t>(i));
+            if (world.bodies[i].collides()) groups.start(i, world.bodies[i]);
+        }
+    groups_asleep_ = groups.any_asleep();
+    if (groups_asleep_) note_awake_members();
+}
+
+void Frame::Impl::note_awake_members() {
+    const RestingGroups& groups = settling_.groups();
+    awake_members_.clear();
+    for (const size_t i : members_)
+        if (!groups.asleep(i)) awake_members_.push_back(i);
+}
+
+void Frame::Impl::wake_reached(World& world) {
+    // Back to the frame's start (after the tweens) for every body stepped,
+    // and the reached groups awake.
+    for (size_t k = 0; k < active_.size(); ++k) world.bodies[active_[k]] = rerun_from_[k];
+    RestingGroups& groups = settling_.groups();
+    groups.wake_marked();
+    const size_t n = world.bodies.size();
+    std::vector<uint32_t>& was = rerun_active_;
+    was.swap(active_);
+    active_.clear();
+    size_t k = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const bool stepped = k < was.size() && was[k] == i;
+        k += stepped;
+        if (stepped || (!groups.asleep(i) && !settling_.asleep_alone(i))) {
+            active_.push_back(static_cast<uint32_t>(i));
+            if (!stepped && world.bodies[i].collides()) groups.start(i, world.bodies[i]);
+        }
+    }
+    groups_asleep_ = groups.any_asleep();
+    note_awake_members();
 }
 
 void Frame::Impl::note_settled(const World& world) {
     // Asleep bodies stay settled and as they were: only the stepped ones can
     // change their standing.
     for (const uint32_t i : active_) settling_.settle(i, world.bodies[i], colliders_);
+    // When nothing was stepped the groups stand as they were.
+    if (!groups_allowed_) settling_.groups().forget();
+    else if (!active_.empty()) settling_.form_groups(world.bodies, members_);
 }
 
 const FrameReport& Frame::Impl::step(World& world, const FrameOptions& opts) {
@@ -402,17 +467,28 @@ const FrameReport& Frame::Impl::step(World& world, const FrameOptions& opts) {
         plan_sleep(world, opts);  // and the census
     } else {
         settling_.skip();  // step_bodies counts the bodies that can settle, all being awake
+        groups_asleep_ = false;
         census(world.bodies, {}, true);  // the bodies are the frame-start scene
     }
     // Every per-entity step sees the scene as it was before the tweens ran
     // (without tweens, that is the bodies as they are: no copy needed).
+    std::span<const Body> scene;
     if (world.tweens.empty()) {
         stats_.step[kStepTweens] = {0, world.bodies.size(), 0};
-        run_physics(world.bodies, world.grid, opts, {}, {});
     } else {
         start_.assign(world.bodies.begin(), world.bodies.end());
         step_tweens(world, opts.dt);
-        run_physics(world.bodies, world.grid, opts, start_, {});
+        scene = start_;
+    }
+    // A frame with asleep groups runs again, with the groups an awake
+    // collider reached woken, until none is reached (settle.hpp).
+    for (;;) {
+        if (groups_asleep_) {
+            rerun_from_.clear();
+            for (const uint32_t i : active_) rerun_from_.push_back(world.bodies[i]);
+        }
+        if (!run_physics(world.bodies, world.grid, opts, scene, {})) break;
+        wake_reached(world);
     }
     if (track) note_settled(world);
     settling_.end_frame(world.bodies.size());

@@ -18,6 +18,120 @@ bool Settling::begin(size_t n, const SettleConditions& now) {
     return same_;
 }
 
+void RestingGroups::begin(size_t n, bool keep) {
+    if (!keep || group_.size() != n) {
+        group_.assign(n, -1);
+        groups_ = 0;
+    }
+    asleep_.assign(groups_, 1);
+    wake_.assign(groups_, 0);
+    any_wake_ = false;
+    if (extent_.size() != n) extent_.resize(n);
+}
+
+void RestingGroups::allow(bool allowed) {
+    if (!allowed) asleep_.assign(groups_, 0);
+    any_asleep_ = std::find(asleep_.begin(), asleep_.end(), 1) != asleep_.end();
+}
+
+void RestingGroups::forget() {
+    group_.assign(group_.size(), -1);
+    groups_ = 0;
+    asleep_.clear();
+    wake_.clear();
+    any_asleep_ = any_wake_ = false;
+}
+
+void RestingGroups::file_asleep(std::span<const Body> bodies, std::span<const size_t> members) {
+    filed_.clear();
+    widest_ = 0;
+    for (const size_t i : members)
+        if (asleep(i)) {
+            filed_.push_back({Extent::of(bodies[i]), group_[i]});
+            widest_ = std::max(widest_, bodies[i].w.v);
+        }
+    std::sort(filed_.begin(), filed_.end(), [](const Filed& a, const Filed& b) { return a.box.x0 < b.box.x0; });
+}
+
+bool RestingGroups::reached(size_t i) {
+    // The filed boxes that can reach extent e start no further left than
+    // the widest box and the reach before it, and no further right than
+    // the reach after it.
+    const Extent& e = extent_[i];
+    auto it = std::lower_bound(filed_.begin(), filed_.end(), e.x0 - Extent::kReach - widest_,
+                               [](const Filed& f, double x) { return f.box.x0 < x; });
+    bool any = false;
+    for (; it != filed_.end() && it->box.x0 <= e.x1 + Extent::kReach; ++it)
+        if (e.reaches(it->box)) {
+            wake_[static_cast<size_t>(it->group)] = 1;
+            any = true;
+        }
+    any_wake_ |= any;
+    return any;
+}
+
+bool RestingGroups::wake_marked() {
+    if (!any_wake_) return false;
+    for (size_t g = 0; g < groups_; ++g)
+        if (wake_[g]) asleep_[g] = 0, wake_[g] = 0;
+    any_wake_ = false;
+    any_asleep_ = std::find(asleep_.begin(), asleep_.end(), 1) != asleep_.end();
+    return true;
+}
+
+size_t RestingGroups::find(size_t m) {
+    while (parent_[m] != m) {
+        parent_[m] = parent_[parent_[m]];
+        m = parent_[m];
+    }
+    return m;
+}
+
+void RestingGroups::form(std::span<const Body> bodies, std::span<const size_t> members,
+                         std::span<const uint8_t> unchanged) {
+    const size_t m = members.size();
+    ext_.resize(m);
+    fit_.resize(m);
+    parent_.resize(m);
+    order_.resize(m);
+    for (size_t k = 0; k < m; ++k) {
+        const size_t i = members[k];
+        const Body& b = bodies[i];
+        const bool slept = asleep(i);
+        if (slept) ext_[k] = Extent::of(b);
+        else {
+            ext_[k] = extent_[i];
+            ext_[k].add(b);
+        }
+        fit_[k] = (slept || unchanged[i]) && may_rest(b);
+        parent_[k] = static_cast<uint32_t>(k);
+        order_[k] = static_cast<uint32_t>(k);
+    }
+    std::sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) { return ext_[a].x0 < ext_[b].x0; });
+    // Sweep by x0: every member that starts before one's right edge (and
+    // its reach) is tested against it.
+    for (size_t a = 0; a < m; ++a) {
+        const Extent& e = ext_[order_[a]];
+        for (size_t b = a + 1; b < m && ext_[order_[b]].x0 <= e.x1 + Extent::kReach; ++b)
+            if (e.reaches(ext_[order_[b]])) {
+                const size_t ra = find(order_[a]), rb = find(order_[b]);
+                if (ra != rb) parent_[std::max(ra, rb)] = static_cast<uint32_t>(std::min(ra, rb));
+            }
+    }
+    // A component is a group when every member of it may rest.
+    root_fit_.assign(m, 1);
+    for (size_t k = 0; k < m; ++k) root_fit_[find(k)] &= fit_[k];
+    root_group_.assign(m, -1);
+    groups_ = 0;
+    group_.assign(bodies.size(), -1);
+    for (size_t k = 0; k < m; ++k) {
+        const size_t r = find(k);
+        if (!root_fit_[r]) continue;
+        if (root_group_[r] < 0) root_group_[r] = static_cast<int32_t>(groups_++);
+        group_[members[k]] = root_group_[r];
+    }
+}
+
 bool SettleTracker::begin(size_t n, const SettleConditions& now) {
     const bool same_scene = left_.size() == n;
     if (!same_scene) {  // a new scene (or the first frame tracked again): every body is stepped
@@ -28,8 +142,10 @@ bool SettleTracker::begin(size_t n, const SettleConditions& now) {
     }
     as_left_.assign(n, 0);
     has_tween_.assign(n, 0);
+    unchanged_.assign(n, 0);
     counting_ = false;
     same_ = marks_.begin(n, now) && same_scene;
+    groups_.begin(n, same_);
     return same_;
 }
 
@@ -37,9 +153,13 @@ void SettleTracker::settle(size_t i, const Body& b, bool colliders) {
     // Settled: it entered this frame as the last one left it, and leaves it
     // the same, depending on nobody.
     const bool same_bits = std::memcmp(&left_[i], &b, sizeof(Body)) == 0;
-    marks_.settle(i, as_left_[i] && (same_bits || differing_fields(left_[i], b) == 0), has_tween_[i], b, colliders);
+    const bool unchanged = as_left_[i] && (same_bits || differing_fields(left_[i], b) == 0);
+    marks_.settle(i, unchanged, has_tween_[i], b, colliders);
+    // A group sleeps only on bit-for-bit rest: its members' frames are
+    // skipped, not replayed, so even a sign of zero must not differ.
+    unchanged_[i] = as_left_[i] && same_bits && !has_tween_[i];
     if (!same_bits) left_[i] = b;
-    const uint8_t can = can_settle(b, colliders);
+    const uint8_t can = can_sleep(b, colliders);
     can_settle_count_ += can;
     can_settle_count_ -= can_settle_[i];
     can_settle_[i] = can;
@@ -47,6 +167,7 @@ void SettleTracker::settle(size_t i, const Body& b, bool colliders) {
 
 void SettleTracker::skip() {
     left_.clear();  // no longer known: nothing is settled
+    groups_.forget();
     counting_ = true;
     counted_ = 0;
 }

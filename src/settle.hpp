@@ -21,6 +21,7 @@
 // own fields, its tween, the map and the options: when none changed, the
 // frame does what it did last time, which was nothing.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -28,6 +29,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "constants.hpp"
 #include "frame_options.hpp"
 #include "tile_grid.hpp"
 #include "export.hpp"
@@ -43,12 +45,24 @@ inline bool depends_on_others(const Body& b, bool supporters_exist) {
     return b.collides() || b.group != 0 || b.contacts || b.sensor ||
            (supporters_exist && b.gravity && !b.skips(kSkipOnSolid));
 }
+// Whether a collider may belong to a resting group (see RestingGroups): it
+// reports no contacts (its report names other bodies), follows no group,
+// and neither carries nor is crushed (the carriers' steps read riders by
+// their own rules, which the reach test below does not cover).
+inline bool may_rest(const Body& b) {
+    return b.collides() && !b.contacts && b.group == 0 && !b.carries && !b.crushed;
+}
 // Whether any body collides (Body::collides): then ground detection has
 // supporters to look for.
 DOWNSTROKE_API bool any_collider(std::span<const Body> bodies);
 // No speed, and depending on nobody: a body that can settle.
 inline bool can_settle(const Body& b, bool colliders) {
     return b.vx.v == 0 && b.vy.v == 0 && !depends_on_others(b, colliders);
+}
+// No speed, and either depending on nobody or a collider that may rest in
+// a group: a body that may come to sleep (what tracking is for).
+inline bool can_sleep(const Body& b, bool colliders) {
+    return b.vx.v == 0 && b.vy.v == 0 && (!depends_on_others(b, colliders) || may_rest(b));
 }
 
 // What every settled body assumes.
@@ -118,6 +132,116 @@ private:
     std::vector<uint8_t> asleep_;   // by body, this frame (between propose and confirm: two bits)
 };
 
+// The room a body took up over a frame: the hull of its boxes at the
+// frame's start, before each push-apart, and at its end.
+struct Extent {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    static Extent of(const Body& b) { return {b.x.v, b.y.v, b.x.v + b.w.v, b.y.v + b.h.v}; }
+    void add(const Body& b) {
+        x0 = std::min(x0, b.x.v), y0 = std::min(y0, b.y.v);
+        x1 = std::max(x1, b.x.v + b.w.v), y1 = std::max(y1, b.y.v + b.h.v);
+    }
+    // Whether two bodies this far apart may read each other in a frame:
+    // ground detection reads a supporter up to kOnSolidTolerance below a
+    // body's feet, push-apart and the resting check read only bodies that
+    // overlap or touch. One pixel more keeps the test clear of rounding.
+    static constexpr double kReach = kOnSolidTolerance + 1;
+    bool reaches(const Extent& o) const {
+        return x0 - kReach <= o.x1 && o.x0 <= x1 + kReach && y0 - kReach <= o.y1 && o.y0 <= y1 + kReach;
+    }
+};
+
+// Resting groups of colliders (the World path's sleeping for bodies that
+// push each other). A frame's resting group is a set of colliders that
+// may_rest, that the frame left exactly as they entered, and whose extents
+// (Extent) reach no collider outside the set: the components, under
+// Extent::reaches, of every collider, kept when every body of one is such
+// a body. A group is asleep in the next frame when every member enters as
+// left with no tween, under the same conditions, in a frame with no
+// carriers, crushed bodies, group followers, contact reports or sensors
+// (whose steps read bodies by rules the extents do not bound). Asleep
+// members stay supporters for the awake bodies; the push-apart pass and
+// the put-out leave them out. Before each push-apart the frame tests every
+// awake collider's extent so far against the asleep members: one that
+// reaches a member wakes its group, and the frame runs again from its
+// start with that group awake.
+//
+// Why that is exact. In a frame without those roles, a collider's frame
+// reads: its own fields, the map and the options; the frame-start
+// supporters its ground detection and resting check find (within
+// kOnSolidTolerance of its feet, touching); in push-apart, the colliders
+// its box overlaps as the pass goes, each as earlier pairs left it; and
+// the put-out reads only itself and the map. Every one of those bodies is
+// within Extent::kReach of it at some point of the frame. When group G
+// formed, no collider outside G reached it, so G's frame read only G's own
+// bodies, the map and the options, and it left G as it was. In the next
+// frame G's members enter as left, the map and the options are the same,
+// and — tested before each push-apart, with the frame run again otherwise —
+// nothing outside G reaches G: G's frame would read the same and so leave
+// G as it was again, which is what not stepping it does. The awake bodies
+// read of G only its members as supporters (frame-start values, which
+// asleep members keep) and never meet it in push-apart, so they step as
+// they would beside a stepped G. Non-colliders neither push nor hold up.
+class DOWNSTROKE_API RestingGroups {
+public:
+    // A frame of n bodies: the last frame's groups may sleep (`keep`), or
+    // none is a group any more.
+    void begin(size_t n, bool keep);
+    // Planning: member i enters as left with no tween (`fit`), or its group
+    // stays awake.
+    void propose(size_t i, bool fit) {
+        const int32_t g = group_[i];
+        if (g >= 0 && !fit) asleep_[static_cast<size_t>(g)] = 0;
+    }
+    // Whether this frame may let groups sleep at all (see above); call
+    // after every propose().
+    void allow(bool allowed);
+    bool asleep(size_t i) const {
+        const int32_t g = group_[i];
+        return g >= 0 && asleep_[static_cast<size_t>(g)];
+    }
+    bool any_asleep() const { return any_asleep_; }
+
+    // Stepping: an awake collider's extent starts at its frame-start box
+    // and grows with each box it takes before a push-apart.
+    void start(size_t i, const Body& b) { extent_[i] = Extent::of(b); }
+    void extend(size_t i, const Body& b) { extent_[i].add(b); }
+    // Files the asleep members' boxes for reached() (once a frame run).
+    void file_asleep(std::span<const Body> bodies, std::span<const size_t> members);
+    // Marks to wake each asleep group collider i's extent reaches; returns
+    // whether it reached any.
+    bool reached(size_t i);
+    // Wakes the marked groups (the frame runs again). Returns whether any.
+    bool wake_marked();
+
+    // After the frame: forms the next frame's groups from every collider
+    // (`members`, list order) and, by body, whether the frame left it as
+    // it entered with no tween (`unchanged`, for the bodies stepped).
+    void form(std::span<const Body> bodies, std::span<const size_t> members, std::span<const uint8_t> unchanged);
+    void forget();  // no group
+
+private:
+    size_t find(size_t m);
+    struct Filed {
+        Extent box;
+        int32_t group;
+    };
+    std::vector<int32_t> group_;   // by body: its resting group, -1 for none
+    std::vector<uint8_t> asleep_;  // by group, this frame
+    std::vector<uint8_t> wake_;    // by group: reached this frame run
+    bool any_asleep_ = false, any_wake_ = false;
+    std::vector<Extent> extent_;   // by body (awake colliders)
+    std::vector<Filed> filed_;     // asleep members, by x0
+    double widest_ = 0;            // of filed_
+    // form()'s scratch: by member (position in `members`), its extent, its
+    // union–find parent, and whether it may rest; members by x0.
+    std::vector<Extent> ext_;
+    std::vector<uint32_t> parent_, order_;
+    std::vector<uint8_t> fit_, root_fit_;
+    std::vector<int32_t> root_group_;
+    size_t groups_ = 0;
+};
+
 // Settling for a caller that holds only bodies (ds::Frame::step over a
 // World): it tells a body enters a frame as left by comparing it byte for
 // byte with a copy of what the last frame left. That costs about half of
@@ -141,22 +265,35 @@ public:
         if (!same_) return;
         as_left_[i] = std::memcmp(&b, &left_[i], sizeof(Body)) == 0;
         marks_.propose(i, as_left_[i], has_tween_[i], b);
+        groups_.propose(i, as_left_[i] && !has_tween_[i]);
     }
-    bool confirm(size_t i, bool colliders) { return marks_.confirm(i, colliders); }
+    // After every propose(): whether resting groups may sleep this frame.
+    void allow_groups(bool allowed) { groups_.allow(allowed); }
+    bool confirm(size_t i, bool colliders) { return marks_.confirm(i, colliders) | groups_.asleep(i); }
     void settle(size_t i, const Body& b, bool colliders);
+    // After every settle(): the next frame's resting groups.
+    void form_groups(std::span<const Body> bodies, std::span<const size_t> members) {
+        groups_.form(bodies, members, unchanged_);
+    }
+    RestingGroups& groups() { return groups_; }
+    // Whether body i sleeps this frame as a settled body of its own.
+    bool asleep_alone(size_t i) const { return marks_.asleep()[i]; }
 
     // Not tracking: forgets every copy (nothing is settled), and counts.
     void skip();
     bool counting() const { return counting_; }
-    void count(const Body& b, bool colliders) { counted_ += can_settle(b, colliders); }
+    void count(const Body& b, bool colliders) { counted_ += can_sleep(b, colliders); }
 
     // Every frame, at its end: whether the next one tracks.
     void end_frame(size_t n);
 
 private:
     Settling marks_;
+    RestingGroups groups_;
     std::vector<Body> left_;  // by body: as the last frame left it
-    std::vector<uint8_t> as_left_, has_tween_;  // by body, this frame
+    // By body, this frame: entered as left, has a tween, and (for the
+    // bodies stepped) left as entered with no tween.
+    std::vector<uint8_t> as_left_, has_tween_, unchanged_;
     std::vector<uint8_t> can_settle_;           // by body, after the last frame
     size_t can_settle_count_ = 0;
     size_t counted_ = 0;  // this frame, when not tracking

@@ -39,8 +39,16 @@ struct Frame::Impl {
     void end_census();
     void clear_supporters(size_t n);
     void add_supporter(const Body& b, size_t i);
-    void run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+    // Returns whether it stopped short because an awake collider reached an
+    // asleep resting group (marked to wake: the frame must run again).
+    bool run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      std::span<const Body> scene, std::span<FirstWrites> writes);
+    // Resting groups (settle.hpp): the awake colliders' extents so far
+    // against the asleep members, before a push-apart; the awake members;
+    // and the frame put back to its start with the reached groups awake.
+    bool reaches_asleep(std::span<const Body> bodies, int round);
+    void note_awake_members();
+    void wake_reached(World& world);
     void take_supporters(std::span<const Body> scene);
     bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
     // The carriers' steps around push-apart (semantics §11), in frames that
@@ -50,7 +58,7 @@ struct Frame::Impl {
                std::span<FirstWrites> writes);
     // The default push rule's last word (§4): members left inside solid cells
     // are put out of them.
-    void put_members_out(std::span<Body> bodies, const TileGrid& grid);
+    void put_members_out(std::span<Body> bodies, const TileGrid& grid, std::span<const size_t> members);
     void crush(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                std::span<FirstWrites> writes);
     // A contact body's #:standing-on after detect-on-solid ran (semantics §10).
@@ -103,6 +111,14 @@ struct Frame::Impl {
     FrameStats stats_;
     SettleTracker settling_;  // which bodies step() may leave asleep (World path)
     bool colliders_ = false;  // this frame: any body that collides (flags do not change in a frame)
+    // This frame: whether resting groups may sleep (no role whose reads
+    // the extents do not bound), and whether some do; then the members
+    // that are awake, and the stepped bodies as the run started (for
+    // running the frame again) with the list they were stepped in.
+    bool groups_allowed_ = false, groups_asleep_ = false;
+    std::vector<size_t> awake_members_;
+    std::vector<Body> rerun_from_;
+    std::vector<uint32_t> rerun_active_;
     // The contact report (semantics §10): this frame's bodies with
     // #:contacts? or sensors (whose pairs the scene keeps, §13), and where push-apart logs its pairs meanwhile (the
     // overlay's log when it has one, else the frame's own) from which offset.

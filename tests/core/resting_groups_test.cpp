@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: MIT
+// Resting groups (settle.hpp): colliders at rest that push each other sleep
+// as a group on the World path, and a run with them asleep equals, body for
+// body and frame for frame, the same run with every body stepped.
+#include <cstring>
+#include <vector>
+
+#include "frame.hpp"
+#include "support.hpp"
+
+using namespace dst;
+using ds::FrameOptions;
+using ds::World;
+
+namespace {
+
+// 20 × 8 cells of 16 px, walled, the floor's top at y = 112.
+ds::TileGrid arena() {
+    return grid({"####################",
+                 "#..................#",
+                 "#..................#",
+                 "#..................#",
+                 "#..................#",
+                 "#..................#",
+                 "#..................#",
+                 "####################"});
+}
+
+constexpr double kFloor = 112;
+
+// A stack of eight 8×8 solid gravity boxes standing on the floor at x.
+void stack(std::vector<Body>& bodies, double x) {
+    for (int k = 0; k < 8; ++k) {
+        Body b = solid_box(x, kFloor - 8 * (k + 1), 8, 8);
+        b.gravity = true;
+        bodies.push_back(b);
+    }
+}
+
+FrameOptions resting() {
+    FrameOptions o;
+    o.resting_contacts = true;
+    return o;
+}
+
+bool same_bits(const std::vector<Body>& a, const std::vector<Body>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Body)) == 0;
+}
+
+// The same scene stepped twice: `world` through Frame::step (which lets
+// bodies sleep) and `plain` through Frame::step_physics with nobody asleep.
+struct Twin {
+    ds::TileGrid map = arena();
+    World world;
+    std::vector<Body> plain;
+    ds::Frame sleeping, stepping;
+    FrameOptions opts = resting();
+
+    explicit Twin(std::vector<Body> bodies) {
+        world.grid = &map;
+        world.bodies = bodies;
+        plain = std::move(bodies);
+    }
+    // One frame each; returns whether both left every body the same.
+    bool step() {
+        sleeping.step(world, opts);
+        stepping.step_physics(plain, &map, opts);
+        return same_bits(world.bodies, plain);
+    }
+    // Bodies the per-entity steps visited: velocity-x applies to every one
+    // it visits (gravity does not count a body resting on another).
+    uint64_t stepped() const { return sleeping.stats().step[ds::kStepVelocityX].processed; }
+
+    uint64_t pushed() const { return sleeping.stats().step[ds::kStepEntityCollisions].processed; }
+};
+
+}  // namespace
+
+TEST_SUITE("resting groups") {
+
+TEST_CASE("a resting stack of eight is asleep from its third frame and costs no step") {
+    std::vector<Body> bodies;
+    stack(bodies, 32);
+    Twin t(bodies);
+    // Frame 1 steps the stack and leaves it as it was; frame 2, tracked,
+    // finds it unchanged and forms the group; frame 3 on, it sleeps.
+    for (int frame = 1; frame <= 2; ++frame) {
+        REQUIRE(t.step());
+        CHECK(t.stepped() == 8);
+    }
+    for (int frame = 3; frame <= 60; ++frame) {
+        REQUIRE(t.step());
+        CHECK(t.stepped() == 0);
+        CHECK(t.pushed() == 0);
+    }
+    CHECK(t.world.bodies[7].y.v == kFloor - 64);
+}
+
+TEST_CASE("a box dropped on one of two stacks wakes only that stack, and the run equals stepping every body") {
+    std::vector<Body> bodies;
+    stack(bodies, 32);
+    stack(bodies, 200);
+    Body drop = solid_box(32, 0 + 16, 8, 8);  // falls from just under the ceiling onto the first stack
+    drop.gravity = true;
+    bodies.push_back(drop);
+    Twin t(bodies);
+    for (int frame = 1; frame <= 120; ++frame) {
+        INFO("frame " << frame);
+        REQUIRE(t.step());
+        // Frames 1-2 step all 17; the stacks then sleep while the box falls
+        // alone; from frame 6 its extent reaches the first stack, which
+        // wakes (8 + 1), the far one staying asleep; from frame 10 the box
+        // and its stack have rested a frame and sleep as one group.
+        const uint64_t expected = frame <= 2 ? 17 : frame <= 5 ? 1 : frame <= 9 ? 9 : 0;
+        CHECK(t.stepped() == expected);
+    }
+    CHECK(t.world.bodies[16].y.v == kFloor - 72);
+}
+
+TEST_CASE("an edit to the map wakes every group") {
+    std::vector<Body> bodies;
+    stack(bodies, 32);
+    stack(bodies, 200);
+    Twin t(bodies);
+    for (int frame = 1; frame <= 5; ++frame) REQUIRE(t.step());
+    CHECK(t.stepped() == 0);
+    t.map.set_solid(10, 1, true);  // far from both stacks
+    REQUIRE(t.step());
+    CHECK(t.stepped() == 16);
+    REQUIRE(t.step());
+    CHECK(t.stepped() == 16);  // unchanged once: grouped again
+    REQUIRE(t.step());
+    CHECK(t.stepped() == 0);
+}
+
+TEST_CASE("a body edited between frames wakes its own group only") {
+    std::vector<Body> bodies;
+    stack(bodies, 32);
+    stack(bodies, 200);
+    Twin t(bodies);
+    for (int frame = 1; frame <= 5; ++frame) REQUIRE(t.step());
+    CHECK(t.stepped() == 0);
+    // The far stack's top box is nudged sideways by its owner.
+    t.world.bodies[15].vx = I(1);
+    t.plain[15].vx = I(1);
+    REQUIRE(t.step());
+    CHECK(t.stepped() == 8);
+    for (int frame = 0; frame < 30; ++frame) REQUIRE(t.step());
+}
+
+TEST_CASE("a frame with a body that reports contacts lets no group sleep") {
+    std::vector<Body> bodies;
+    stack(bodies, 32);
+    Body watcher = box(200, kFloor - 8, 8, 8);
+    watcher.contacts = true;
+    bodies.push_back(watcher);
+    Twin t(bodies);
+    for (int frame = 1; frame <= 10; ++frame) {
+        REQUIRE(t.step());
+        CHECK(t.stepped() >= 8);
+    }
+}
+
+}
