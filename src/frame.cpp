@@ -126,7 +126,7 @@ void Frame::Impl::begin_contact_log() {
 }
 
 void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                        int round, std::span<FirstWrites> writes) {
+                        int round, std::span<FirstWrites> writes, std::span<const uint32_t> active, bool more) {
     // Step by step over a block of bodies, block after block: the same
     // result as step by step over all of them (each per-entity step reads
     // only its own body and the frame-start supporters), each step's cost
@@ -139,12 +139,16 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
     SubStep sub = SubStep::of_frame(opts.substeps);
     sub.gather = round > 0;
     const auto t0 = Clock::now();
-    // (With every body asleep nobody looks for a supporter.)
-    const bool indexed = supporters_.size() >= kSupportIndexFrom && !active_.empty();
-    if (indexed) support_index_.build(supporters_);
+    // (With every body asleep nobody looks for a supporter: the index is
+    // built when the first body is stepped.)
+    const bool indexed = supporters_.size() >= kSupportIndexFrom;
+    if (!more) index_built_ = false;
+    if (indexed && !index_built_ && !active.empty()) {
+        support_index_.build(supporters_);
+        index_built_ = true;
+    }
     stats_.step[kStepOnSolid].ms += ms_since(t0);
-    resting_.assign(opts.resting_contacts ? bodies.size() : 0, 0);
-    const std::span<const uint32_t> active(active_);
+    if (!more) resting_.assign(opts.resting_contacts ? bodies.size() : 0, 0);
     uint64_t before[kStepCount];
     for (int id = 0; id < kStepCount; ++id) before[id] = stats_.step[id].processed;
     for (size_t lo = 0; lo < active.size(); lo += kStepBlock) {
@@ -195,10 +199,12 @@ void Frame::Impl::step_bodies(std::span<Body> bodies, const TileGrid* grid, cons
         if (settling_.counting() && round + 1 == std::max(1, opts.substeps))
             for (const uint32_t i : block) settling_.count(bodies[i], colliders_);
     }
-    // A step leaves alone every body it did not apply to, asleep ones included.
+    // A step leaves alone every body it did not apply to, asleep ones
+    // included (and `more` steps bodies the first call counted as left alone).
     for (int id = kStepAcceleration; id <= kStepOnSolid; ++id) {
         if (id == kStepAcceleration && round != 0) continue;
-        stats_.step[id].skipped += bodies.size() - (stats_.step[id].processed - before[id]);
+        const uint64_t applied = stats_.step[id].processed - before[id];
+        stats_.step[id].skipped += more ? 0 - applied : bodies.size() - applied;
     }
 }
 
@@ -307,10 +313,10 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         // crushes it again (the key is present: no first write to log).
         if (round == 0 && crushed_) clear_crushed(bodies, members_);
         if (carrying) start_carry(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
-        step_bodies(bodies, grid, opts, round, writes);
+        step_bodies(bodies, grid, opts, round, writes, active_, false);
         auto t0 = Clock::now();
         if (carrying) carry(bodies, grid, opts, writes);
-        if (groups_asleep_ && reaches_asleep(bodies, round)) {
+        if (groups_asleep_ && reaches_asleep(bodies, grid, opts, round)) {
             end_contact_log();
             return true;
         }
@@ -324,7 +330,8 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy | (reports ? kFieldTouching : 0u),
                         [&](std::span<Body> bs) {
                             if (pass.size() >= 2) resolve_entity_collisions_among(contacts_, bs, pass, resting_);
-                            if (put_out) put_members_out(bs, *grid, pass);
+                            if (put_out)
+                                put_members_out(bs, *grid, groups_asleep_ ? pass : std::span<const size_t>(members_));
                             if (reports) mark_touching(bs);
                         });
         if (carrying) crush(bodies, grid, opts, writes);
@@ -343,7 +350,8 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
     return false;
 }
 
-bool Frame::Impl::reaches_asleep(std::span<const Body> bodies, int round) {
+bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                                  int round) {
     if (awake_members_.empty()) return false;
     RestingGroups& groups = settling_.groups();
     if (round == 0) groups.file_asleep(bodies, members_);
@@ -352,7 +360,43 @@ bool Frame::Impl::reaches_asleep(std::span<const Body> bodies, int round) {
         groups.extend(i, bodies[i]);
         any |= groups.reached(i);
     }
+    // In the first sub-frame a reached group is woken on the spot: its
+    // per-entity steps read only its own bodies and the frame-start
+    // supporters, so stepping it now is stepping it with the others. Its
+    // new boxes may reach more groups in turn. A later sub-frame would
+    // need the earlier ones again: the frame runs again instead.
+    while (any && round == 0) {
+        woken_.clear();
+        for (const size_t i : members_)
+            if (groups.asleep(i) && groups.marked(i)) woken_.push_back(static_cast<uint32_t>(i));
+        groups.wake_marked();
+        for (const uint32_t i : woken_) groups.start(i, bodies[i]);
+        if (opts.substeps > 1) save_for_rerun(bodies, woken_);
+        step_bodies(bodies, grid, opts, round, {}, woken_, true);
+        any = false;
+        for (const uint32_t i : woken_) {
+            groups.extend(i, bodies[i]);
+            any |= groups.reached(i);
+        }
+        // Both lists stay in list order: the woken members join them.
+        merge_into(active_, woken_);
+        groups_asleep_ = groups.any_asleep();
+        note_awake_members();
+    }
     return any;
+}
+
+void Frame::Impl::save_for_rerun(std::span<const Body> bodies, std::span<const uint32_t> which) {
+    for (const uint32_t i : which) {
+        rerun_index_.push_back(i);
+        rerun_from_.push_back(bodies[i]);
+    }
+}
+
+void Frame::Impl::merge_into(std::vector<uint32_t>& list, std::span<const uint32_t> more) {
+    merged_.clear();
+    std::merge(list.begin(), list.end(), more.begin(), more.end(), std::back_inserter(merged_));
+    list.swap(merged_);
 }
 
 void Frame::Impl::put_members_out(std::span<Body> bodies, const TileGrid& grid, std::span<const size_t> members) {
@@ -426,22 +470,14 @@ void Frame::Impl::note_awake_members() {
 void Frame::Impl::wake_reached(World& world) {
     // Back to the frame's start (after the tweens) for every body stepped,
     // and the reached groups awake.
-    for (size_t k = 0; k < active_.size(); ++k) world.bodies[active_[k]] = rerun_from_[k];
+    for (size_t k = 0; k < rerun_index_.size(); ++k) world.bodies[rerun_index_[k]] = rerun_from_[k];
     RestingGroups& groups = settling_.groups();
+    for (const size_t i : members_)
+        if (groups.asleep(i) && groups.marked(i)) groups.start(i, world.bodies[i]);
     groups.wake_marked();
-    const size_t n = world.bodies.size();
-    std::vector<uint32_t>& was = rerun_active_;
-    was.swap(active_);
     active_.clear();
-    size_t k = 0;
-    for (size_t i = 0; i < n; ++i) {
-        const bool stepped = k < was.size() && was[k] == i;
-        k += stepped;
-        if (stepped || (!groups.asleep(i) && !settling_.asleep_alone(i))) {
-            active_.push_back(static_cast<uint32_t>(i));
-            if (!stepped && world.bodies[i].collides()) groups.start(i, world.bodies[i]);
-        }
-    }
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+        if (!groups.asleep(i) && !settling_.asleep_alone(i)) active_.push_back(static_cast<uint32_t>(i));
     groups_asleep_ = groups.any_asleep();
     note_awake_members();
 }
@@ -483,10 +519,9 @@ const FrameReport& Frame::Impl::step(World& world, const FrameOptions& opts) {
     // A frame with asleep groups runs again, with the groups an awake
     // collider reached woken, until none is reached (settle.hpp).
     for (;;) {
-        if (groups_asleep_) {
-            rerun_from_.clear();
-            for (const uint32_t i : active_) rerun_from_.push_back(world.bodies[i]);
-        }
+        rerun_index_.clear();
+        rerun_from_.clear();
+        if (groups_asleep_ && opts.substeps > 1) save_for_rerun(world.bodies, active_);
         if (!run_physics(world.bodies, world.grid, opts, scene, {})) break;
         wake_reached(world);
     }

@@ -62,8 +62,8 @@ bool RestingGroups::reached(size_t i) {
                                [](const Filed& f, double x) { return f.box.x0 < x; });
     bool any = false;
     for (; it != filed_.end() && it->box.x0 <= e.x1 + Extent::kReach; ++it)
-        if (e.reaches(it->box)) {
-            wake_[static_cast<size_t>(it->group)] = 1;
+        if (const auto g = static_cast<size_t>(it->group); asleep_[g] && !wake_[g] && e.reaches(it->box)) {
+            wake_[g] = 1;
             any = true;
         }
     any_wake_ |= any;

@@ -20,6 +20,9 @@
 // The rules hold because a body that depends on nobody is moved only by its
 // own fields, its tween, the map and the options: when none changed, the
 // frame does what it did last time, which was nothing.
+//
+// Colliders, which do depend on others, sleep in *resting groups* on the
+// World path (RestingGroups below, with why that is exact).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -163,8 +166,11 @@ struct Extent {
 // members stay supporters for the awake bodies; the push-apart pass and
 // the put-out leave them out. Before each push-apart the frame tests every
 // awake collider's extent so far against the asleep members: one that
-// reaches a member wakes its group, and the frame runs again from its
-// start with that group awake.
+// reaches a member wakes its group. In the first sub-frame the woken group
+// is stepped on the spot (a per-entity step reads only its own body and
+// the frame-start supporters, so that is stepping it with the rest) and
+// tested in turn; in a later one the frame runs again from its start with
+// the group awake.
 //
 // Why that is exact. In a frame without those roles, a collider's frame
 // reads: its own fields, the map and the options; the frame-start
@@ -209,9 +215,14 @@ public:
     // Files the asleep members' boxes for reached() (once a frame run).
     void file_asleep(std::span<const Body> bodies, std::span<const size_t> members);
     // Marks to wake each asleep group collider i's extent reaches; returns
-    // whether it reached any.
+    // whether it reached any not marked yet.
     bool reached(size_t i);
-    // Wakes the marked groups (the frame runs again). Returns whether any.
+    // Whether member i's group is marked to wake.
+    bool marked(size_t i) const {
+        const int32_t g = group_[i];
+        return g >= 0 && wake_[static_cast<size_t>(g)];
+    }
+    // Wakes the marked groups. Returns whether any.
     bool wake_marked();
 
     // After the frame: forms the next frame's groups from every collider

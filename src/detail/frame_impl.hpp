@@ -28,8 +28,10 @@ struct Frame::Impl {
     void step_tweens(World& world, double dt);
     void plan_sleep(const World& world, const FrameOptions& opts);
     void note_settled(const World& world);
+    // The per-entity steps over `active` (list order); `more`: over bodies
+    // woken after the call that stepped the others in this sub-frame.
     void step_bodies(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                     int round, std::span<FirstWrites> writes);
+                     int round, std::span<FirstWrites> writes, std::span<const uint32_t> active, bool more);
     // The census finds each body's roles; with `take`, in the same sweep it
     // copies out the supporters, which the bodies then must be the
     // frame-start scene for (a large scene is read once instead of twice).
@@ -45,8 +47,11 @@ struct Frame::Impl {
                      std::span<const Body> scene, std::span<FirstWrites> writes);
     // Resting groups (settle.hpp): the awake colliders' extents so far
     // against the asleep members, before a push-apart; the awake members;
-    // and the frame put back to its start with the reached groups awake.
-    bool reaches_asleep(std::span<const Body> bodies, int round);
+    // and the frame put back to its start with the reached groups awake
+    // (after a later sub-frame reached them).
+    bool reaches_asleep(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts, int round);
+    void merge_into(std::vector<uint32_t>& list, std::span<const uint32_t> more);
+    void save_for_rerun(std::span<const Body> bodies, std::span<const uint32_t> which);
     void note_awake_members();
     void wake_reached(World& world);
     void take_supporters(std::span<const Body> scene);
@@ -117,8 +122,10 @@ struct Frame::Impl {
     // running the frame again) with the list they were stepped in.
     bool groups_allowed_ = false, groups_asleep_ = false;
     std::vector<size_t> awake_members_;
+    std::vector<uint32_t> rerun_index_;  // with sub-frames (only a later one runs the frame again)
     std::vector<Body> rerun_from_;
-    std::vector<uint32_t> rerun_active_;
+    std::vector<uint32_t> woken_, merged_;  // members woken in the first sub-frame
+    bool index_built_ = false;              // support_index_, this sub-frame
     // The contact report (semantics §10): this frame's bodies with
     // #:contacts? or sensors (whose pairs the scene keeps, §13), and where push-apart logs its pairs meanwhile (the
     // overlay's log when it has one, else the frame's own) from which offset.
