@@ -306,7 +306,7 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         // body moves: the caller's frame-start scene (before the tweens) for
         // the first sub-frame, else the bodies as this sub-frame finds them.
         // The census may have taken the frame-start supporters already.
-        if (round > 0 || !supporters_taken_)
+        if (round > 0 || (!supporters_taken_ && !active_.empty()))
             take_supporters(round == 0 && !scene.empty() ? scene : std::span<const Body>(bodies));
         const bool carrying = !carriers_.empty();
         // A body crushed last frame is not crushed any more unless this frame
@@ -438,7 +438,9 @@ void Frame::Impl::plan_sleep(const World& world, const FrameOptions& opts) {
     for (const TweenTrack& t : world.tweens) settling_.mark_tween(t.body);
     // One sweep over the bodies does the census and proposes each body's
     // sleep; whether any body collides, known after it, settles the plan.
-    begin_census(n, true);
+    // While groups sleep the supporters are copied out only if a body is
+    // awake to read them (run_physics), not in the census.
+    begin_census(n, !settling_.groups().any_group());
     for (size_t i = 0; i < n; ++i) {
         enlist(world.bodies[i], i);
         settling_.propose(i, world.bodies[i]);

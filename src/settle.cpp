@@ -90,6 +90,7 @@ size_t RestingGroups::find(size_t m) {
 void RestingGroups::form(std::span<const Body> bodies, std::span<const size_t> members,
                          std::span<const uint8_t> unchanged) {
     const size_t m = members.size();
+    size_t fits = 0;
     ext_.resize(m);
     fit_.resize(m);
     parent_.resize(m);
@@ -104,9 +105,16 @@ void RestingGroups::form(std::span<const Body> bodies, std::span<const size_t> m
             ext_[k].add(b);
         }
         fit_[k] = (slept || unchanged[i]) && may_rest(b);
+        fits += fit_[k];
         parent_[k] = static_cast<uint32_t>(k);
         order_[k] = static_cast<uint32_t>(k);
     }
+    // Where most colliders moved (a crowd that jitters), the groups the
+    // rest could form would mostly be reached: finding them is not worth
+    // its sort. Fewer groups only means more bodies stepped.
+    group_.assign(bodies.size(), -1);
+    groups_ = 0;
+    if (fits * kFitShare < m) return;
     std::sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) { return ext_[a].x0 < ext_[b].x0; });
     // Sweep by x0: every member that starts before one's right edge (and
     // its reach) is tested against it.
@@ -122,8 +130,6 @@ void RestingGroups::form(std::span<const Body> bodies, std::span<const size_t> m
     root_fit_.assign(m, 1);
     for (size_t k = 0; k < m; ++k) root_fit_[find(k)] &= fit_[k];
     root_group_.assign(m, -1);
-    groups_ = 0;
-    group_.assign(bodies.size(), -1);
     for (size_t k = 0; k < m; ++k) {
         const size_t r = find(k);
         if (!root_fit_[r]) continue;

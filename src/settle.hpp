@@ -207,6 +207,7 @@ public:
         return g >= 0 && asleep_[static_cast<size_t>(g)];
     }
     bool any_asleep() const { return any_asleep_; }
+    bool any_group() const { return groups_ != 0; }
 
     // Stepping: an awake collider's extent starts at its frame-start box
     // and grows with each box it takes before a push-apart.
@@ -233,6 +234,9 @@ public:
 
 private:
     size_t find(size_t m);
+    // Groups are looked for only when at least 1 in kFitShare colliders may
+    // rest (see form()).
+    static constexpr size_t kFitShare = 2;
     struct Filed {
         Extent box;
         int32_t group;
