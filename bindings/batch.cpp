@@ -74,9 +74,9 @@ SCM printable_id(SCM plist) {
 void name_failed_entity(Failure& f, size_t index, SCM entity) {
     const SCM id = printable_id(entity);
     const char* suffix = scm_is_true(id) ? " (entity ~S of the list, #:id ~S)" : " (entity ~S of the list)";
-    const size_t used = std::strlen(f.message);
-    if (used + std::strlen(suffix) >= sizeof f.message) return;  // the message alone still says what
-    std::snprintf(f.message + used, sizeof f.message - used, "%s", suffix);
+    const char* said = f.message;
+    f.failed = false;  // rewritten in place, with the same key
+    fail(f, f.key, f.irritants, "%s%s", said, suffix);
     const SCM more = scm_is_true(id) ? scm_list_2(scm_from_size_t(index), id) : scm_list_1(scm_from_size_t(index));
     f.irritants = scm_append(scm_list_2(f.irritants, more));
 }

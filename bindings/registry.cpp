@@ -2,6 +2,7 @@
 #include "registry.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 
@@ -13,23 +14,26 @@ namespace {
 
 // Filled in a trampoline's catch handler, raised just after it: nothing runs
 // in between, so one per thread is enough (a nested native call, from a
-// Scheme callback, has either raised already or not begun).
-thread_local Failure escaped;
+// Scheme callback, has either raised already or not begun). Plain malloc'd
+// text, as the collector need not scan thread-local storage.
+thread_local const char* escaped_proc = nullptr;
+thread_local char* escaped_reason = nullptr;
 
 }  // namespace
 
 void detail::note_escaped(const char* proc) noexcept {
-    escaped = Failure{proc};
-    try {
-        throw;
-    } catch (const std::exception& e) {
-        fail_text(escaped, "misc-error", nullptr, e.what());
-    } catch (...) {
-        fail_text(escaped, "misc-error", nullptr, "unknown C++ failure");
-    }
+    escaped_proc = proc;
+    escaped_reason = copy_of_handled_reason();
 }
 
-void detail::raise_escaped() { raise(escaped); }
+void detail::raise_escaped() {
+    Failure f{escaped_proc};
+    char* reason = escaped_reason;
+    escaped_reason = nullptr;
+    fail_text(f, "misc-error", nullptr, reason ? reason : "unknown C++ failure (no memory to copy its text)");
+    std::free(reason);
+    raise(f);
+}
 
 void detail::check_one_name(const char*& registered, const char* name) {
     if (registered != nullptr && std::strcmp(registered, name) != 0)

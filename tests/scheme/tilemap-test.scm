@@ -1,5 +1,6 @@
 ;; SPDX-License-Identifier: MIT
-(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1))
+(use-modules (srfi srfi-64) (downstroke) (srfi srfi-1) (rnrs bytevectors)
+             ((downstroke reference) #:select ((step-scene . reference-step-scene))))
 
 (load "support.scm")
 
@@ -389,6 +390,14 @@
 ;;; ---------------------------------------------------------------- errors
 (test-assert "missing file: the message names the file"
   (mentions? (error-text (lambda () (load-tilemap (map-file "no-such-map.tmx")))) "load-tilemap" "no-such-map.tmx"))
+;; Issue 51: a native message arrives whole, however long, and a
+;; character of several bytes is never cut in two.
+(define long-path  ; 400 bytes: "missing/", 55 × "éé/é" (7 bytes each), "abc.tmx"
+  (string-append "missing/" (string-concatenate (make-list 55 "éé/é")) "abc.tmx"))
+(test-equal "the long path's length in bytes" 400 (bytevector-length (string->utf8 long-path)))
+(test-equal "a 400-byte path with multibyte characters: the whole message"
+  (string-append "In procedure load-tilemap: " long-path ": cannot open map: No such file or directory\n")
+  (error-text (lambda () (load-tilemap long-path))))
 (test-assert "malformed XML: file and line"
   (mentions? (error-text (lambda () (load-tilemap (map-file "bad/malformed.tmx")))) "malformed.tmx" ":5"))
 (for-each
