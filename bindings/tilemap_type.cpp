@@ -313,6 +313,7 @@ SCM tilemap_solid_extent(SCM m) {
     Failure f;
     if (!check_map(m, "tilemap-solid-extent", f)) raise(f);
     const TileGrid& g = tilemap_handle(m).grid;
+    if (g.cols() == 0 || g.rows() == 0) return SCM_BOOL_F;  // no block: (0 0 0 0) would claim one at the origin
     return scm_list_4(scm_from_int64(g.origin_col()), scm_from_int64(g.origin_row()),
                       scm_from_int(g.cols()), scm_from_int(g.rows()));
 }
@@ -394,7 +395,8 @@ void register_tilemap_procedures() {
     define_procedure<1, 0, 0, tilemap_solid_extent>("tilemap-solid-extent",
         "(tilemap-solid-extent tm): the block of cells that can be solid, as the list "
         "(first-col first-row cols rows); every cell outside it is empty (infinite maps may start "
-        "at negative cells).");
+        "at negative cells). #f when no cell can be solid: a map with no tile layers, or an infinite "
+        "map whose layers hold no chunk.");
     define_procedure<4, 0, 0, tilemap_gid>("tilemap-gid",
         "(tilemap-gid tm layer col row): the raw gid (flip bits kept) of a cell of tile layer "
         "number layer, 0 when empty.");

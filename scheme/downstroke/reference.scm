@@ -487,14 +487,20 @@ true result, or #f."
                         (cols-loop (cdr cs)))))
              (rows-loop (cdr rs))))))
 
+(define (solid-extent tm)
+  "TM's block of cells that can be solid, (first-col first-row cols rows);
+an empty block when it has none (tilemap-solid-extent's #f), which every
+clip below then leaves empty."
+  (or (tilemap-solid-extent tm) '(0 0 0 0)))
+
 (define (box-rows e tm)
   (apply (lambda (col0 row0 cols rows)
            (clip (cells-of (num e #:y) (num e #:height) (tilemap-tile-height tm)) row0 rows))
-         (tilemap-solid-extent tm)))
+         (solid-extent tm)))
 (define (box-cols e tm)
   (apply (lambda (col0 row0 cols rows)
            (clip (cells-of (num e #:x) (num e #:width) (tilemap-tile-width tm)) col0 cols))
-         (tilemap-solid-extent tm)))
+         (solid-extent tm)))
 (define (span-of e) (cons (fl (num e #:x)) (fl (num+ (num e #:x) (num e #:width)))))
 
 (define (overlaps-solid? e tm)
@@ -545,7 +551,7 @@ true result, or #f."
   "E moved out of the ramps of column C that its box overlaps over SWEEP:
 (values e lifted), LIFTED 1 once lifted, −1 once pushed down; E #f when
 squeezed."
-  (let ((limit (+ (list-ref (tilemap-solid-extent tm) 3) 1)))
+  (let ((limit (+ (list-ref (solid-extent tm) 3) 1)))
     (let loop ((e e) (lifted lifted) (guard 0))
       (if (> guard limit)
           (values #f lifted)
@@ -592,7 +598,7 @@ squeezed."
                       (else (cons (fl x) (fl (num+ x-start w))))))
          (along (apply (lambda (col0 row0 cols rows)
                          (clip (candidate-cells x move w tw (collision-mode)) col0 cols))
-                       (tilemap-solid-extent tm))))
+                       (solid-extent tm))))
     (define (finish moved stopped? check?)
       ;; A move that leaves the box in a solid is not made at all.
       (let* ((back? (or (not moved) (and check? (overlaps-solid? moved tm))))
@@ -624,7 +630,7 @@ squeezed."
          (span (span-of e))
          (rows (apply (lambda (col0 row0 cols rows)
                         (clip (candidate-cells y move hh th (collision-mode)) row0 rows))
-                      (tilemap-solid-extent tm)))
+                      (solid-extent tm)))
          (cols (box-cols e tm)))
     (let loop ((rs (range->list (and cols rows) (if fwd? 1 -1))))
       (if (null? rs)
@@ -674,7 +680,7 @@ squeezed."
         (values e #f)
         (let* ((rows (apply (lambda (col0 row0 cols rows)
                               (clip (cons (cell-of (num+ y hh) th) (cell-of lowest th)) row0 rows))
-                            (tilemap-solid-extent tm)))
+                            (solid-extent tm)))
                (cols (box-cols e tm))
                (ground
                 (let loop ((rs (range->list (and cols rows) 1)))
@@ -751,7 +757,7 @@ not dropping through, its feet less than *one-way-footing* into the cell."
                        (any (lambda (col) (let ((cell (tilemap-cell-shape tm col row)))
                                             (or (eq? cell 'solid) (and on-top? (eq? cell 'one-way)))))
                             (range->list span 1)))))
-              (tilemap-solid-extent tm))))
+              (solid-extent tm))))
 
 (define (shape-supports? e tm)
   "A shape in the row under the feet whose surface they are on or below,
@@ -962,7 +968,7 @@ D when nothing stops it, else the distance to that cell's near face."
                                (- face (if fwd? (+ pos size) pos))
                                (- (fl face) (fl (if fwd? (num+ pos size) pos))))))
                         (else (loop (cdr cs))))))))))
-     (tilemap-solid-extent tm))))
+     (solid-extent tm))))
 
 (define (cells-between a b)
   "The cells of ranges A and B and every one between."
@@ -1014,7 +1020,7 @@ rule or when nothing stops it, else as far as clipped-push lets it."
                          (when (and p (p-overlaps? p lo hi top bottom)) (proc c r p)))))
                  (range->list cs 1)))
               (range->list rs 1))))
-         (tilemap-solid-extent tm)))
+         (solid-extent tm)))
 
 (define (in-solid? tm bx by bw bh)
   "Whether a box overlaps a whole solid cell or the solid of a shape (not a

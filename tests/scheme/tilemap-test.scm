@@ -167,6 +167,18 @@
 (test-equal '(3 2 8 8) (list (tilemap-width mv) (tilemap-height mv) (tilemap-tile-width mv) (tilemap-tile-height mv)))
 (test-equal "vector cells" '((#f #t #f) (#t #f #f)) (solid-grid mv))
 (test-equal "solid extent of a made map" '(0 0 3 2) (tilemap-solid-extent mv))
+;; Issue 51: a map with no tile layers has no solid block (not one of
+;; 0 × 0 cells at the origin); the native step and the reference both take
+;; it as a map where nothing is solid.
+(define objects-only (load-tilemap (map-file "scheme/objects_only.tmx")))
+(test-equal "no tile layers: no solid extent" #f (tilemap-solid-extent objects-only))
+(let* ((body '(#:x 8 #:y 8 #:vx 3 #:vy 2 #:width 4 #:height 4 #:gravity? #t))
+       (scene (make-scene #:entities (list body) #:tilemap objects-only))
+       (moved (lambda (step) (car (scene-entities (step scene 16))))))
+  (test-equal "… a body crosses it untouched, natively and in the reference"
+    '((11 11) (11 11))  ; x 8 + vx 3; y 8 + vy 2 + the default gravity's 1
+    (map (lambda (step) (let ((e (moved step))) (list (entity-ref e #:x) (entity-ref e #:y))))
+         (list step-scene reference-step-scene))))
 (define ml (make-tilemap 3 2 8 8 '(0 1 0 2 0 3) '(1 2)))
 (test-equal "list cells" '((#f #t #f) (#t #f #f)) (solid-grid ml))
 (test-equal "no solid gids: nothing solid" '((#f #f #f) (#f #f #f))
