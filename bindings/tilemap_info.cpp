@@ -100,6 +100,7 @@ SCM shape_symbol(ObjectShape s) {
     switch (s) {
         case ObjectShape::Rectangle: return sym("rect");
         case ObjectShape::Ellipse: return sym("ellipse");
+        case ObjectShape::Capsule: return sym("capsule");
         case ObjectShape::Point: return sym("point");
         case ObjectShape::Polygon: return sym("polygon");
         case ObjectShape::Polyline: return sym("polyline");

@@ -95,7 +95,7 @@ ObjectText read_text(const Node& t) {
     return text;
 }
 
-// The shape keys (ellipse, point, polygon, polyline, text), when one is written.
+// The shape keys (ellipse, capsule, point, polygon, polyline, text), when one is written.
 bool read_shape(const Node& n, MapObject& o) {
     if (n.has("polygon")) {
         o.shape = ObjectShape::Polygon;
@@ -105,6 +105,8 @@ bool read_shape(const Node& n, MapObject& o) {
         o.points = read_points(n["polyline"]);
     } else if (json::bool_or(n, "ellipse", false)) {
         o.shape = ObjectShape::Ellipse;
+    } else if (json::bool_or(n, "capsule", false)) {
+        o.shape = ObjectShape::Capsule;
     } else if (json::bool_or(n, "point", false)) {
         o.shape = ObjectShape::Point;
     } else if (n.has("text")) {

@@ -54,7 +54,7 @@ struct AnimationFrame {
 
 // What an object is, as Tiled draws it. A tile object is one with a gid
 // (object_kind in map_objects.hpp decides).
-enum class ObjectShape : uint8_t { Rectangle, Ellipse, Point, Polygon, Polyline, Text, Tile };
+enum class ObjectShape : uint8_t { Rectangle, Ellipse, Capsule, Point, Polygon, Polyline, Text, Tile };
 
 // The point of a tile object's picture its (x, y) names (Tiled's
 // objectalignment). Unspecified: BottomLeft on an orthogonal map.

@@ -472,6 +472,8 @@ void read_shape(const XmlFile& f, const XMLElement* e, MapObject& o, ObjectField
         const std::string_view name = c->Name();
         if (name == "ellipse") {
             o.shape = ObjectShape::Ellipse;
+        } else if (name == "capsule") {  // Tiled 1.12
+            o.shape = ObjectShape::Capsule;
         } else if (name == "point") {
             o.shape = ObjectShape::Point;
         } else if (name == "polygon" || name == "polyline") {

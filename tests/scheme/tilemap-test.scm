@@ -239,7 +239,10 @@
   `(#:type enemy #:name "enemy" #:id 8 #:x 48 #:y 16 #:width 12 #:height 10 #:layer "things"
     #:template ,(scheme-file "tpl/enemy.tx") #:hp 5 #:speed 1.5)
   (feature-object "enemy"))
-(test-equal "objects in document order" '("box" "ring" "spot" "tri" "path" "sign" "barrel" "enemy")
+(test-equal "capsule (Tiled 1.12): its shape and box"
+  '(#:type #f #:name "pill" #:id 9 #:x 40 #:y 0 #:width 8 #:height 20 #:layer "things" #:shape capsule)
+  (feature-object "pill"))
+(test-equal "objects in document order" '("box" "ring" "spot" "tri" "path" "sign" "barrel" "enemy" "pill")
   (map (lambda (o) (entity-ref o #:name)) feature-objects))
 
 ;; Element i, or () when there are fewer: a missing layer fails its own test only.

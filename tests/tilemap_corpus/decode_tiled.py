@@ -549,7 +549,7 @@ def object_from_xml(o):
         obj["visible"] = truthy(o.get("visible"))
     if o.get("template") is not None:
         obj["template"] = o.get("template")
-    for shape in ("ellipse", "point"):
+    for shape in ("ellipse", "capsule", "point"):
         if o.find(shape) is not None:
             obj["shape"] = shape
     for shape in ("polygon", "polyline"):
@@ -576,6 +576,8 @@ def object_from_json(o):
         obj["type"] = type_or_class(o.get("type"), o.get("class"))
     if o.get("ellipse"):
         obj["shape"] = "ellipse"
+    if o.get("capsule"):
+        obj["shape"] = "capsule"
     if o.get("point"):
         obj["shape"] = "point"
     for shape in ("polygon", "polyline"):

@@ -103,6 +103,7 @@ const char* solidity_name(ds::LayerSolidity s) {
 const char* shape_name(ds::ObjectShape s) {
     switch (s) {
         case ds::ObjectShape::Ellipse: return "ellipse";
+        case ds::ObjectShape::Capsule: return "capsule";
         case ds::ObjectShape::Point: return "point";
         case ds::ObjectShape::Polygon: return "polygon";
         case ds::ObjectShape::Polyline: return "polyline";
