@@ -171,7 +171,7 @@ void each_child(const XMLElement* parent, const char* name, Fn fn) {
 
 Property read_property(const XmlFile& f, const XMLElement* p, int depth);
 
-// The <property> (or, in a list, <value>) children of `list`.
+// The <property> (or, in a list, <item>) children of `list`.
 Properties read_property_list(const XmlFile& f, const XMLElement* list, const char* child,
                               int depth) {
     if (depth > kMaxPropertyDepth)
@@ -182,8 +182,9 @@ Properties read_property_list(const XmlFile& f, const XMLElement* list, const ch
 }
 
 // A class keeps its members (its nested <properties>), a list its items
-// (<value> children, nameless); a scalar its value=, or, for multi-line
-// strings, the element's text.
+// (<item> children, nameless, each typed like a property: Tiled 1.12's form,
+// the only one any Tiled version writes or reads); a scalar its value=, or,
+// for multi-line strings, the element's text.
 Property read_property(const XmlFile& f, const XMLElement* p, int depth) {
     Property out{str_attr(p, "name"), str_attr(p, "type", "string"), "",
                  str_attr(p, "propertytype"), {}};
@@ -191,7 +192,7 @@ Property read_property(const XmlFile& f, const XMLElement* p, int depth) {
         if (const XMLElement* members = p->FirstChildElement("properties"))
             out.members = read_property_list(f, members, "property", depth + 1);
     } else if (out.type == "list") {
-        out.members = read_property_list(f, p, "value", depth + 1);
+        out.members = read_property_list(f, p, "item", depth + 1);
     } else {
         const char* value = p->Attribute("value");
         if (!value) value = p->GetText();

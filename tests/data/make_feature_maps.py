@@ -149,13 +149,13 @@ PROPERTIES = HEAD + MAP.format(w=2, h=2, extra="") + """\
   </property>
   <property name="empty" type="class" propertytype="Nothing"/>
   <property name="path" type="list">
-   <value type="int" value="4"/>
-   <value type="string" value="two"/>
-   <value type="class" propertytype="Point">
+   <item type="int" value="4"/>
+   <item type="string" value="two"/>
+   <item type="class" propertytype="Point">
     <properties>
      <property name="y" type="float" value="-2"/>
     </properties>
-   </value>
+   </item>
   </property>
   <property name="poem" type="string">roses
 are red</property>

@@ -199,7 +199,7 @@
 (test-equal "map properties: every Tiled type; a class is a plist, a list a list"
   '(#:title "Cave" #:gravity 0.25 #:scale 2 #:lives 3 #:dark #t #:fog "#80ff0000"
     #:music "../music/cave.ogg" #:boss 8 #:difficulty "hard"
-    #:spawn (#:at (#:x 4 #:y 1.5) #:count 2) #:waves (1 "two" #f))
+    #:spawn (#:at (#:x 4 #:y 1.5) #:count 2) #:waves (1 "two" #f (0.5 ()) (#:x 7)))
   (tilemap-properties features))
 (test-equal "a map without properties" '() (tilemap-properties level1))
 (test-equal "a map made in memory has no properties, layers, tilesets or warnings" '(() () () ())

@@ -111,7 +111,7 @@ def xml_prop(p):
     if ptype == "class":
         return Prop(name, ptype, "", p.get("propertytype", ""), xml_props(p))
     if ptype == "list":
-        items = [xml_prop(i) for i in p.findall("value")]  # a list's items are <value>s
+        items = [xml_prop(i) for i in p.findall("item")]  # a list's items are <item>s (Tiled 1.12)
         return Prop(name, ptype, "", p.get("propertytype", ""), items)
     value = p.get("value")
     if value is None:
