@@ -124,9 +124,7 @@ std::pair<MapObject, ObjectFields> read_object(const Node& n) {
     MapObject o;
     ObjectFields f;
     o.id = json::int_or(n, "id", 0);
-    f.name = n.has("name"), f.type = n.has("type") || n.has("class");
-    f.x = n.has("x"), f.y = n.has("y"), f.width = n.has("width"), f.height = n.has("height");
-    f.rotation = n.has("rotation"), f.gid = n.has("gid"), f.visible = n.has("visible");
+    f.rotation = n.has("rotation"), f.visible = n.has("visible");
     f.text = n.has("text");
     o.name = json::string_or(n, "name");
     o.type = type_or_class(n);

@@ -431,20 +431,21 @@ uint32_t map_tile_gid(const Where& w, LoadState& s, const ObjectTemplate& tmpl, 
 void merge_template(const Where& w, LoadState& s, const ObjectTemplate& tmpl,
                     const ObjectFields& fields, MapObject& object, Tilemap* map) {
     const MapObject& t = tmpl.object;
-    if (!fields.name) object.name = t.name;
-    if (!fields.type) object.type = t.type;
-    if (!fields.x) object.x = t.x;
-    if (!fields.y) object.y = t.y;
-    if (!fields.width) object.width = t.width;
-    if (!fields.height) object.height = t.height;
+    // Tiled's rules (libtiled's readObject and MapObject::syncWithTemplate):
+    // the position is always the instance's; a name or class overrides only
+    // when not empty, a size only when both sides are positive (then both),
+    // a gid only when not 0; the rest whenever written.
+    if (object.name.empty()) object.name = t.name;
+    if (object.type.empty()) object.type = t.type;
+    if (!(object.width > 0 && object.height > 0)) object.width = t.width, object.height = t.height;
     if (!fields.rotation) object.rotation = t.rotation;
     if (!fields.visible) object.visible = t.visible;
-    if (!fields.shape && !fields.gid) {
+    if (!fields.shape) {
         object.shape = t.shape;
         object.points = t.points;
     }
     if (!fields.text) object.text = t.text;
-    if (!fields.gid) object.gid = map ? map_tile_gid(w, s, tmpl, *map) : t.gid;
+    if (object.gid == 0) object.gid = map ? map_tile_gid(w, s, tmpl, *map) : t.gid;
     object.shape = object_kind(object.gid, object.shape);
     merge_properties(t.properties, object.properties);
     object.template_path = tmpl.path;

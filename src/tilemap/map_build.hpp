@@ -218,8 +218,7 @@ void fit_infinite_bounds(const Where& w, const LoadState& s, Tilemap& map);
 // Which of an object's fields its file writes: a template instance keeps
 // those and takes the rest from its template.
 struct ObjectFields {
-    bool name = false, type = false, x = false, y = false, width = false, height = false,
-         rotation = false, gid = false, visible = false, shape = false, text = false;
+    bool rotation = false, visible = false, shape = false, text = false;
 };
 
 // A template file (.tx/.tj): its object and, for a tile object, the
@@ -233,8 +232,8 @@ struct ObjectTemplate {
 };
 
 // The instance `object` (fields written as `fields`) made from `tmpl`, as
-// Tiled does: the template's fields are the defaults, the instance's written
-// ones override; properties are the template's, then the instance's
+// Tiled does: the template's fields are the defaults, the instance's override
+// as merge_template's comment says; properties are the template's, then the instance's
 // replacing by name. The template's gid is mapped into the map's gid space
 // (map_tile_gid; with no map, as in a tileset's own objects, the gid is
 // kept as the template has it). object.template_path becomes tmpl.path.

@@ -496,14 +496,7 @@ void read_shape(const XmlFile& f, const XMLElement* e, MapObject& o, ObjectField
 MapObject read_object(const XmlFile& f, const XMLElement* e, Tilemap* map, ObjectFields* written) {
     MapObject o;
     ObjectFields fields;
-    fields.name = e->Attribute("name");
-    fields.type = e->Attribute("type") || e->Attribute("class");
-    fields.x = e->Attribute("x");
-    fields.y = e->Attribute("y");
-    fields.width = e->Attribute("width");
-    fields.height = e->Attribute("height");
     fields.rotation = e->Attribute("rotation");
-    fields.gid = e->Attribute("gid");
     fields.visible = e->Attribute("visible");
     o.id = int_attr(f, e, "id", 0);
     o.name = str_attr(e, "name");

@@ -219,7 +219,7 @@ TEST_SUITE("tmj") {
 TEST_CASE("each JSON twin loads into the model its TMX map loads into") {
     for (const char* name : {"level_xml", "level_csv", "level_base64", "level_zlib", "level_gzip",
                              "level_zstd", "level_zstd_stream", "layers", "tilesets", "infinite",
-                             "features/objects", "features/templates"}) {
+                             "features/objects", "features/templates", "features/template_rules"}) {
         INFO(name);
         LoadOptions options;
         const Tilemap tmx = load_tilemap(map_path(std::string(name) + ".tmx"), options);

@@ -138,7 +138,8 @@ TEST_CASE("template instances: the template's fields are defaults, the instance'
     CHECK(objs[0].template_path == spawn);
     CHECK(props_text(objs[0].properties) == "kind:string=bat count:int=5 boss:bool=true");
     CHECK(objs[1].name == "big");
-    CHECK(objs[1].width == 40);
+    // width="40" alone: a size with a side <= 0 is not an override (Tiled).
+    CHECK(objs[1].width == 20);
     CHECK(objs[1].height == 10);
     CHECK_FALSE(objs[1].visible);
     CHECK(props_text(objs[1].properties) == "kind:string=bat count:int=2");
@@ -197,6 +198,47 @@ TEST_CASE("templates count against max-bytes, each read once however often it is
     CHECK_THROWS_WITH_AS(load_tilemap(feature("templates.tmx"), options),
                          doctest::Contains("self.tx': is 125 bytes, more than the 124 bytes max-bytes leaves"),
                          MapError);
+}
+
+TEST_CASE("template instances override only what Tiled takes as an override") {
+    const Tilemap m = load("template_rules.tmx");
+    const std::vector<MapObject>& objs = m.object_layers.at(0).objects;
+    REQUIRE(objs.size() == 4);
+    // name="" type="" width="0": the template's name, class and whole size;
+    // the position is the instance's, never the template's (70, 80).
+    CHECK(objs[0].name == "placed");
+    CHECK(objs[0].type == "marker");
+    CHECK(objs[0].x == 5);
+    CHECK(objs[0].y == 6);
+    CHECK(objs[0].width == 20);
+    CHECK(objs[0].height == 10);
+    CHECK(objs[0].rotation == 30);
+    CHECK_FALSE(objs[0].visible);
+    CHECK(objs[0].shape == ObjectShape::Ellipse);
+    CHECK(props_text(objs[0].properties) == "a:string=template b:int=1");
+    // Nothing written: at (0, 0).
+    CHECK(objs[1].x == 0);
+    CHECK(objs[1].y == 0);
+    CHECK(objs[1].width == 20);
+    CHECK(objs[1].height == 10);
+    // height="0" beside a positive width: the template's size, both sides.
+    CHECK(objs[2].x == 1);
+    CHECK(objs[2].y == 2);
+    CHECK(objs[2].width == 20);
+    CHECK(objs[2].height == 10);
+    // Everything written: the instance's, rotation 0 and visible="1" too;
+    // gid="0" is no tile, so the shape stays the template's ellipse.
+    CHECK(objs[3].name == "own");
+    CHECK(objs[3].type == "mine");
+    CHECK(objs[3].x == 3);
+    CHECK(objs[3].y == 4);
+    CHECK(objs[3].width == 8);
+    CHECK(objs[3].height == 6);
+    CHECK(objs[3].rotation == 0);
+    CHECK(objs[3].visible);
+    CHECK(objs[3].gid == 0);
+    CHECK(objs[3].shape == ObjectShape::Ellipse);
+    CHECK(props_text(objs[3].properties) == "a:string=template b:int=2 c:string=instance");
 }
 
 TEST_CASE("class and list properties keep their members, recursively") {

@@ -114,6 +114,36 @@ TEMPLATES = HEAD + MAP.format(w=2, h=2, extra="") + """\
 </map>
 """
 
+# A template that says where it is: Tiled never places an instance there.
+PLACED_TX = HEAD + """<template>
+ <object name="placed" type="marker" x="70" y="80" width="20" height="10" rotation="30" visible="0">
+  <properties>
+   <property name="a" value="template"/>
+   <property name="b" type="int" value="1"/>
+  </properties>
+  <ellipse/>
+ </object>
+</template>
+"""
+
+# Instances that write what Tiled does not take as an override (an empty
+# name or class, a size with a side of 0, gid 0) and what it does (rotation
+# and visible, whatever their values).
+TEMPLATE_RULES = HEAD + MAP.format(w=2, h=2, extra="") + TERRAIN + tile_layer("ground", 2, [0, 0, 0, 0]) + """\
+ <objectgroup id="2" name="things">
+  <object id="1" template="templates/placed.tx" name="" type="" x="5" y="6" width="0" height="30"/>
+  <object id="2" template="templates/placed.tx"/>
+  <object id="3" template="templates/placed.tx" x="1" y="2" width="8" height="0"/>
+  <object id="4" template="templates/placed.tx" name="own" class="mine" x="3" y="4" width="8" height="6" rotation="0" visible="1" gid="0">
+   <properties>
+    <property name="b" type="int" value="2"/>
+    <property name="c" value="instance"/>
+   </properties>
+  </object>
+ </objectgroup>
+</map>
+"""
+
 # The map lacks the template's tileset: it is added after the last firstgid.
 TEMPLATE_ADDS_TILESET = HEAD + MAP.format(w=2, h=2, extra="") + """\
  <tileset firstgid="1" name="one" tilewidth="16" tileheight="16" tilecount="3" columns="3">
@@ -255,6 +285,8 @@ def main():
     write("templates/spawn.tx", SPAWN_TX)
     write("templates/self.tx", SELF_TX)
     write("templates.tmx", TEMPLATES)
+    write("templates/placed.tx", PLACED_TX)
+    write("template_rules.tmx", TEMPLATE_RULES)
     write("template_adds_tileset.tmx", TEMPLATE_ADDS_TILESET)
     write("missing_template.tmx", MISSING_TEMPLATE)
     write("dev_zero_template.tmx", DEV_ZERO_TEMPLATE)

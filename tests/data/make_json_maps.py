@@ -255,9 +255,9 @@ def main():
     convert_tileset("tilesets/terrain.tsx", "tilesets/terrain.tsj")
     # The TMX features (tests/data/make_feature_maps.py): shapes and text,
     # templates in maps and in a tileset's tile.
-    for name in ("objects", "templates"):
+    for name in ("objects", "templates", "template_rules"):
         convert_map(f"features/{name}.tmx", f"features/{name}.tmj")
-    for name in ("spawn", "crate", "self"):
+    for name in ("spawn", "crate", "self", "placed"):
         convert_template(f"features/templates/{name}.tx", f"features/templates/{name}.tj")
 
 

@@ -627,13 +627,25 @@ def template_tileset(m, ts_path):
 
 
 def resolve_template(m, obj):
-    """As Tiled resolves it: the template's fields, then the instance's own;
-    the template's properties, each replaced by the instance's of that name,
-    then the instance's others."""
+    """As Tiled resolves it (libtiled's readObject, syncWithTemplate): the
+    position is the instance's alone; its name and class when not empty, its
+    size when both sides are positive, its gid when not 0, whatever else it
+    writes; the template's properties, each replaced by the instance's of
+    that name, then the instance's others."""
     base = read_template(m, rel(m.path, obj["template"]))
     out = dict(base)
+    out["x"], out["y"] = obj.get("x", 0), obj.get("y", 0)
+    for k in ("name", "type"):
+        if obj.get(k):
+            out[k] = obj[k]
+    if float(obj.get("width", 0)) > 0 and float(obj.get("height", 0)) > 0:
+        out["width"], out["height"] = obj["width"], obj["height"]
+    if int(obj.get("gid", 0) or 0):
+        out["gid"] = obj["gid"]
+    if "shape" in obj:
+        out.pop("points", None)
     for k, v in obj.items():
-        if k != "props":
+        if k not in ("props", "x", "y", "name", "type", "width", "height", "gid"):
             out[k] = v
     props = list(base["props"])
     for p in obj["props"]:
