@@ -29,6 +29,11 @@ int64_t floor_px(double v) {
     return int64_t(std::floor(std::clamp(v, -kExact, kExact)));
 }
 
+// A layer's offset (summed through its groups first, as Tiled's
+// Layer::totalOffset sums it) in whole px, rounded as Qt's raster engine
+// rounds a translated picture's position: halves go up, -1.5 to -1.
+double offset_px(double offset) { return std::floor(offset + 0.5); }
+
 bool untinted(Rgba t) { return t.r == 255 && t.g == 255 && t.b == 255 && t.a == 255; }
 
 // The largest tile of any tileset beyond the map's cell, per axis: how far a
@@ -248,8 +253,9 @@ LayerCamera layer_camera(const Tilemap& map, const DrawnLayer& l, int64_t cam_x,
     const double shift_x = (1 - l.parallax_x) * (centre_x - map.parallax_origin_x);
     const double shift_y = (1 - l.parallax_y) * (centre_y - map.parallax_origin_y);
     // No parallax: whole px stay whole, so the common case is exact.
-    return {l.parallax_x == 1 ? cam_x - floor_px(l.offset_x) : floor_px(double(cam_x) - shift_x - l.offset_x),
-            l.parallax_y == 1 ? cam_y - floor_px(l.offset_y) : floor_px(double(cam_y) - shift_y - l.offset_y)};
+    const double ox = offset_px(l.offset_x), oy = offset_px(l.offset_y);
+    return {l.parallax_x == 1 ? cam_x - floor_px(ox) : floor_px(double(cam_x) - shift_x - ox),
+            l.parallax_y == 1 ? cam_y - floor_px(oy) : floor_px(double(cam_y) - shift_y - oy)};
 }
 
 size_t draw_layers(Canvas& c, TileArt& art, const Tilemap& map, std::span<const DrawnLayer> layers, int64_t cam_x,

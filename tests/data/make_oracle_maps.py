@@ -166,6 +166,19 @@ def maps():
         objects("props", [{"gid": 7, "x": 30, "y": 80, "width": 16, "height": 16}], ' offsetx="-5"', lid=4) +
         '  <group id="5" name="hidden" visible="0">\n' + layer("never", 8, 6, [2] * 48, lid=6) + '  </group>\n'
         ' </group>\n' + layer("top", 8, 6, [0] * 40 + [5, 0, 6, 0, 0, 0, 0, 0], ' offsetx="-3"', lid=7)))
+    # Fractional offsets, rounded as Tiled rounds them (floor(offset + 0.5)),
+    # on tile, object and image layers; a group's summed with its layer's
+    # before rounding (0.5 + 0.5 moves 1 px, not 2).
+    write("fractional-offsets.tmx", the_map(8, 6, tileset() +
+        layer("base", 8, 6, [1] * 48) +
+        layer("halves", 8, 6, [0] * 9 + [2] + [0] * 38, ' offsetx="2.5" offsety="-1.5"', lid=2) +
+        ' <group id="3" name="outer" offsetx="0.5" offsety="-2.5">\n' +
+        layer("inner", 8, 6, [0] * 12 + [3] + [0] * 35, ' offsetx="0.5" offsety="0.5"', lid=4) +
+        objects("props", [{"gid": 7, "x": 16, "y": 80, "width": 16, "height": 16}], ' offsetx="-0.5" offsety="0.25"',
+                lid=5) +
+        ' </group>\n'
+        ' <imagelayer id="6" name="picture" offsetx="80.5" offsety="60.5">\n  <image source="backdrop.png" width="24" height="20"/>\n </imagelayer>\n' +
+        layer("thirds", 8, 6, [0] * 46 + [5, 0], ' offsetx="-3.5" offsety="1.4999"', lid=7)))
     # <tileoffset> on cells and on tile objects (scaled with the object).
     write("tile-offset.tmx", the_map(8, 5, tileset(extra="", inner='  <tileoffset x="3" y="-5"/>\n') +
         layer("cells", 8, 5, [0] * 9 + [1, 2, 3] + [0] * 28) + objects(

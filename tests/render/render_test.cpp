@@ -142,10 +142,10 @@ TEST_CASE("a gid no tileset holds is drawn as a missing tile: a faint magenta ce
         }
 }
 
-TEST_CASE("a layer's offset moves its tiles by whole pixels, floored") {
+TEST_CASE("a layer's offset moves its tiles by whole pixels, rounded as Tiled rounds: halves up") {
     Tilemap m = map_with(1, 1, {2});
-    m.layers[0].offset_x = 2.5;  // floors to 2
-    m.layers[0].offset_y = -1;
+    m.layers[0].offset_x = 2.5;   // rounds to 3
+    m.layers[0].offset_y = -1.5;  // rounds to -1, not -2
     Canvas c(8, 8);
     TileArt art;
     art.bind(&m);
@@ -153,9 +153,15 @@ TEST_CASE("a layer's offset moves its tiles by whole pixels, floored") {
     CHECK(draw_map(c, art, m, 0, 0) == 1);
     // Row 0 of the tile is above the canvas; rows 1-3 land on 0-2.
     for (int y = 1; y < kTile; ++y)
-        for (int x = 0; x < kTile; ++x) CHECK(c.pixel(2 + x, y - 1) == sheet_color(1, x, y));
+        for (int x = 0; x < kTile; ++x) CHECK(c.pixel(3 + x, y - 1) == sheet_color(1, x, y));
+    CHECK(c.pixel(2, 0) == kBackground);
+    CHECK(c.pixel(3, 3) == kBackground);
+    m.layers[0].offset_x = 2.4999, m.layers[0].offset_y = -0.5;  // 2 and 0
+    c.clear(kBackground);
+    CHECK(draw_map(c, art, m, 0, 0) == 1);
+    for (int y = 0; y < kTile; ++y)
+        for (int x = 0; x < kTile; ++x) CHECK(c.pixel(2 + x, y) == sheet_color(1, x, y));
     CHECK(c.pixel(1, 0) == kBackground);
-    CHECK(c.pixel(2, 3) == kBackground);
 }
 
 TEST_CASE("an animated tile shows the frame the game's clock is in, and starts over") {
