@@ -63,6 +63,15 @@ void draw_missing(Canvas& c, int64_t x, int64_t y, int w, int h, uint8_t alpha) 
     c.outline_rect(clamp_int(x), clamp_int(y), w, h, edge);
 }
 
+// Whether a gid that has no picture is drawn as a missing tile: one no
+// tileset holds, or one of an atlas whose image ends before it (a tilecount
+// larger than the image holds; the loader warned of both). A collection's
+// tile without an image is drawn as nothing, as Tiled draws it.
+bool missing_tile(const Tilemap& map, uint32_t gid) {
+    const Tileset* ts = map.tileset_for(gid & kGidMask);
+    return !map.gid_known(gid & kGidMask) || (ts && !ts->image.empty());
+}
+
 // Where tile picture `pic` (turned by its gid's flips) goes when drawn into
 // the box at (x, y), w × h, as Tiled's cell renderer puts it: scaled to the
 // box (by the smaller factor, centred, under preserve-aspect-fit), moved by
@@ -123,7 +132,7 @@ size_t draw_tile_layer(Canvas& c, TileArt& art, const Tilemap& map, const TileLa
             const int64_t x = col * map.tile_width - p.cam.x, bottom = (row + 1) * map.tile_height - p.cam.y;
             SDL_Surface* pic = art.tile(gid, time_ms);
             if (!pic) {
-                if (!map.gid_known(gid))
+                if (missing_tile(map, gid))
                     draw_missing(c, x, bottom - map.tile_height, map.tile_width, map.tile_height, p.alpha);
                 continue;
             }
@@ -164,7 +173,7 @@ size_t draw_object_layer(Canvas& c, TileArt& art, const Tilemap& map, const Obje
         SDL_Surface* pic = art.tile(o.gid, time_ms);
         const Tileset* ts = map.tileset_for(o.gid & kGidMask);
         const double x = box.left - double(p.cam.x), y = box.top - double(p.cam.y);
-        if (!map.gid_known(o.gid & kGidMask)) {  // the loader warned of it
+        if (!map.gid_known(o.gid & kGidMask) || (!pic && missing_tile(map, o.gid))) {  // the loader warned of it
             const int w = box.width > 0 ? int(std::min(box.width, 4096.0)) : map.tile_width;
             const int h = box.height > 0 ? int(std::min(box.height, 4096.0)) : map.tile_height;
             draw_missing(c, floor_px(x), floor_px(box.height > 0 ? y : y - h), w, h, p.alpha);

@@ -113,10 +113,9 @@ bool tile_rect(const Tileset& ts, int image_w, int image_h, uint32_t id, SDL_Rec
     const int tw = ts.tile_width, th = ts.tile_height;
     if (tw <= 0 || th <= 0) return false;
     if (columns <= 0) columns = (image_w - 2 * ts.margin + ts.spacing) / (tw + ts.spacing);
-    if (columns <= 0) return false;
+    if (columns <= 0 || id >= tiles_in_image(ts, image_w, image_h, columns)) return false;
     const int64_t col = id % uint32_t(columns), row = id / uint32_t(columns);
     const int64_t x = ts.margin + col * (tw + ts.spacing), y = ts.margin + row * (th + ts.spacing);
-    if (x + tw > image_w || y + th > image_h) return false;
     out = {int(x), int(y), tw, th};
     return true;
 }

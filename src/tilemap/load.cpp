@@ -35,6 +35,25 @@ void warn_bad_shapes(Tilemap& map) {
         }
 }
 
+// An atlas whose tilecount is more than its image holds: the tiles past
+// the image's end are gids of the map but have no picture. Tiled draws a
+// placeholder for them; the engine draws the missing-tile mark, and says
+// so once per tileset, naming the first such tile. Judged by the image
+// size the tileset declares (the loader does not decode images).
+void warn_tiles_past_image(Tilemap& map) {
+    for (const Tileset& ts : map.tilesets) {
+        if (ts.image.empty() || ts.tile_count <= 0 || ts.image_width <= 0 || ts.image_height <= 0) continue;
+        const uint32_t held = tiles_in_image(ts, ts.image_width, ts.image_height, ts.columns);
+        if (held >= uint32_t(ts.tile_count)) continue;
+        map.warnings.push_back(map.path + ": tileset '" + ts.name + "'" +
+                               (ts.source.empty() ? "" : " (" + ts.source + ")") + ": tile " + std::to_string(held) +
+                               " and on are past the end of its image '" + ts.image + "' (" +
+                               std::to_string(ts.image_width) + "x" + std::to_string(ts.image_height) +
+                               " px holds " + std::to_string(held) + " of its " + std::to_string(ts.tile_count) +
+                               " tiles); drawn as missing tiles");
+    }
+}
+
 // A tile object whose gid no tileset holds: Tiled loads such a map and
 // shows the tile as missing, and so does the engine, saying so once per
 // layer (naming the object and the gid); an error for a strict load, as a
@@ -66,6 +85,7 @@ Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
                                                      : read_tmx_map(text, file, s);
     inherit_tile_classes(map);
     warn_bad_shapes(map);
+    warn_tiles_past_image(map);
     check_object_gids(map, s);
     check_image_files(s, map);
     for (ObjectLayer& layer : map.object_layers) layer.index = index_objects(map, layer);

@@ -74,6 +74,18 @@ bool Tileset::has_tile(uint32_t local_id) const {
     return local_id < static_cast<uint32_t>(tile_count);
 }
 
+uint32_t tiles_in_image(const Tileset& ts, int image_w, int image_h, int columns) {
+    const int64_t tw = ts.tile_width, th = ts.tile_height, m = ts.margin, sp = ts.spacing;
+    if (tw <= 0 || th <= 0 || tw + sp <= 0 || th + sp <= 0) return 0;
+    if (columns <= 0) columns = int((image_w - 2 * m + sp) / (tw + sp));
+    if (columns <= 0) return 0;
+    // A column (row) k fits when m + k·(tw + sp) + tw is within the image.
+    const auto fitting = [&](int64_t side, int64_t t) { return side < m + t ? 0 : (side - m - t) / (t + sp) + 1; };
+    const int64_t cols = fitting(image_w, tw), rows = fitting(image_h, th);
+    if (rows == 0) return 0;
+    return uint32_t(std::min<int64_t>(cols < columns ? cols : rows * columns, UINT32_MAX));
+}
+
 bool Tileset::tile_solid(uint32_t local_id) const {
     const TileInfo* t = tile(local_id);
     if (!t) return false;

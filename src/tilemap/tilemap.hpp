@@ -292,6 +292,13 @@ struct DOWNSTROKE_API Tilemap {
     void set_gid(size_t layer, int64_t col, int64_t row, uint32_t gid);
 };
 
+// How many tiles an atlas image of image_w × image_h px holds, cut as
+// Tiled cuts it (`columns` columns, 0: as many as fit; the tileset's margin
+// and spacing): the local id of the first tile whose rectangle reaches past
+// the image's right or bottom edge. A tileset whose tilecount is larger
+// names tiles it has no picture for, which are drawn as missing tiles.
+DOWNSTROKE_API uint32_t tiles_in_image(const Tileset& ts, int image_w, int image_h, int columns);
+
 // Where a picture the map names is opened (the loader checks it there, the
 // renderer decodes it there): a tileset's `image` (its own, or one of its
 // collection tiles') joined to the tileset's folder (image_dir), and an

@@ -293,6 +293,21 @@ TEST_CASE("the object index finds every object that shows in a view, and none fa
     CHECK(found.size() < 400 / 4);  // a view of 640 × 360 of 2000² px sees few of them
 }
 
+TEST_CASE("how many tiles an atlas image holds, cut as Tiled cuts it") {
+    Tileset ts;
+    ts.tile_width = ts.tile_height = 4;
+    CHECK(tiles_in_image(ts, 8, 8, 2) == 4);
+    CHECK(tiles_in_image(ts, 8, 8, 0) == 4);   // columns as many as fit
+    CHECK(tiles_in_image(ts, 9, 11, 0) == 4);  // a part-tile at the edge holds none
+    CHECK(tiles_in_image(ts, 8, 8, 3) == 2);   // a third column past the right edge: tile 2 is past it
+    CHECK(tiles_in_image(ts, 8, 3, 2) == 0);   // not one row high
+    ts.margin = 1, ts.spacing = 2;
+    CHECK(tiles_in_image(ts, 12, 8, 0) == 2);  // columns at x 1 and 7, one row at y 1 (the next would end at 11)
+    CHECK(tiles_in_image(ts, 12, 11, 0) == 4);
+    ts.tile_width = 0;
+    CHECK(tiles_in_image(ts, 12, 11, 0) == 0);
+}
+
 TEST_CASE("bad input names the file and the value") {
     const std::string dir = temp_dir().string();
     const auto map_text = [](const std::string& layers, const std::string& attrs = "") {
@@ -334,6 +349,21 @@ TEST_CASE("bad input names the file and the value") {
         draw_map(c, art, m, 0, 0);
         Rgba edge = kMissingTileColor;
         CHECK(c.pixel(0, 0) == edge);
+    }
+    SUBCASE("a tilecount larger than the tileset's image holds: one warning naming the first tile past its end") {
+        write(dir + "/past.tmx",
+              "<map orientation=\"orthogonal\" width=\"1\" height=\"1\" tilewidth=\"4\" tileheight=\"4\">\n"
+              " <tileset firstgid=\"1\" name=\"s\" tilewidth=\"4\" tileheight=\"4\" tilecount=\"7\" columns=\"2\">"
+              "<image source=\"sheet.png\" width=\"8\" height=\"8\"/></tileset>\n"
+              " <layer name=\"l\" width=\"1\" height=\"1\"><data encoding=\"csv\">6</data></layer>\n</map>\n");
+        const Tilemap m = load_tilemap(dir + "/past.tmx");
+        REQUIRE(m.warnings.size() == 1);
+        CHECK(m.warnings[0] == dir + "/past.tmx: tileset 's': tile 4 and on are past the end of its image 'sheet.png' "
+                                     "(8x8 px holds 4 of its 7 tiles); drawn as missing tiles");
+        CHECK(m.gid_known(6));  // the tileset's gid all the same: no "beyond every tileset"
+        LoadOptions strict;
+        strict.strict = true;  // the tiles are the tileset's: not an error even so
+        CHECK(load_tilemap(dir + "/past.tmx", strict).warnings.size() == 1);
     }
     SUBCASE("an image layer's missing image") {
         write(dir + "/image.tmx", map_text("<imagelayer name=\"sky\"><image source=\"nowhere.png\" width=\"4\" "

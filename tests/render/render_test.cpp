@@ -124,6 +124,42 @@ TEST_CASE("the camera shifts the map by its floored position") {
     CHECK(c.pixel(0, 0) == sheet_color(0, 3, 2));
 }
 
+TEST_CASE("a tile past the end of its tileset's image is drawn as a missing tile, in cells and as an object") {
+    Tilemap m = map_with(3, 1, {4, 5, 6});  // the sheet's image holds local ids 0-3
+    m.tilesets[0].tile_count = 6;           // so gids 5 and 6 are the tileset's, with no picture
+    m.object_layers.push_back({});
+    MapObject o;
+    o.shape = ObjectShape::Tile;
+    o.gid = 6, o.x = 8, o.y = 8, o.width = kTile, o.height = kTile;
+    m.object_layers[0].objects.push_back(o);
+    m.layer_tree.resize(2);
+    m.layer_tree[0].kind = LayerKind::Tile;
+    m.layer_tree[1].kind = LayerKind::Object;
+    Canvas c(12, 8);
+    TileArt art;
+    art.bind(&m);
+    c.clear(kBackground);
+    CHECK(draw_map(c, art, m, 0, 0) == 1);  // only gid 4 has a picture
+    check_tile_at(c, 0, 0, 3, 0);
+    const Rgba magenta{255, 0, 255, 255};
+    for (int left : {4, 8})
+        for (int y = 0; y < kTile; ++y)
+            for (int x = 0; x < kTile; ++x) {
+                const bool edge = x == 0 || y == 0 || x == kTile - 1 || y == kTile - 1;
+                CAPTURE(left);
+                CAPTURE(x);
+                CAPTURE(y);
+                CHECK(c.pixel(left + x, y) == (edge ? magenta : blended(magenta, kBackground, 96)));
+            }
+    for (int y = kTile; y < 8; ++y)
+        for (int x = 0; x < 12; ++x) {
+            const bool object = x >= 8 && (x == 8 || y == kTile || x == 11 || y == 7);
+            CAPTURE(x);
+            CAPTURE(y);
+            CHECK(c.pixel(x, y) == (object ? magenta : x >= 8 ? blended(magenta, kBackground, 96) : kBackground));
+        }
+}
+
 TEST_CASE("a gid no tileset holds is drawn as a missing tile: a faint magenta cell, outlined") {
     Tilemap m = map_with(2, 1, {1, 9});  // the sheet holds gids 1-4
     Canvas c(8, 4);
