@@ -389,7 +389,7 @@ LayerInfo read_layer_info(const Node& n) {
     info.parallax_x = json::number_or(n, "parallaxx", 1);
     info.parallax_y = json::number_or(n, "parallaxy", 1);
     info.tint_color = json::string_or(n, "tintcolor");
-    info.tint = color_or(n, "tintcolor");
+    if (!tint_without_hash(info.tint_color)) info.tint = color_or(n, "tintcolor");  // else untinted: load.cpp warns
     info.properties = read_properties(n);
     if (info.kind == LayerKind::Image) {
         info.image = json::string_or(n, "image");

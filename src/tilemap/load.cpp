@@ -54,6 +54,19 @@ void warn_tiles_past_image(Tilemap& map) {
     }
 }
 
+// A tintcolor without its '#' (map_color.hpp): Tiled reads no colour in
+// it and draws the layer untinted, and so does the engine, saying so once
+// per layer, as an author who wrote one meant a tint.
+void warn_unread_tints(const std::string& path, const std::vector<LayerInfo>& layers,
+                       std::vector<std::string>& warnings) {
+    for (const LayerInfo& l : layers) {
+        if (tint_without_hash(l.tint_color))
+            warnings.push_back(path + ": layer '" + l.name + "' has tintcolor '" + l.tint_color +
+                               "', which has no '#' and so is no colour (as Tiled reads it); drawn untinted");
+        warn_unread_tints(path, l.children, warnings);
+    }
+}
+
 // A tile object whose gid no tileset holds: Tiled loads such a map and
 // shows the tile as missing, and so does the engine, saying so once per
 // layer (naming the object and the gid); an error for a strict load, as a
@@ -86,6 +99,7 @@ Tilemap read_map(std::string_view text, const std::string& path, LoadState& s) {
     inherit_tile_classes(map);
     warn_bad_shapes(map);
     warn_tiles_past_image(map);
+    warn_unread_tints(map.path, map.layer_tree, map.warnings);
     check_object_gids(map, s);
     check_image_files(s, map);
     for (ObjectLayer& layer : map.object_layers) layer.index = index_objects(map, layer);

@@ -407,7 +407,7 @@ LayerInfo read_layer_info(const XmlFile& f, const XMLElement* e, LayerKind kind)
     info.parallax_x = double_attr(f, e, "parallaxx", 1);
     info.parallax_y = double_attr(f, e, "parallaxy", 1);
     info.tint_color = str_attr(e, "tintcolor");
-    info.tint = color_attr(f, e, "tintcolor");
+    if (!tint_without_hash(info.tint_color)) info.tint = color_attr(f, e, "tintcolor");  // else untinted: load.cpp warns
     info.properties = read_properties(f, e);
     return info;
 }

@@ -179,6 +179,15 @@ def maps():
         ' </group>\n'
         ' <imagelayer id="6" name="picture" offsetx="80.5" offsety="60.5">\n  <image source="backdrop.png" width="24" height="20"/>\n </imagelayer>\n' +
         layer("thirds", 8, 6, [0] * 46 + [5, 0], ' offsetx="-3.5" offsety="1.4999"', lid=7)))
+    # A tintcolor without its '#' is no colour to Tiled: the layers are drawn
+    # untinted. (Tiled 1.8 draws no tint at all, and its JSON twin leaves
+    # the tints out; map-draw checks, from TMX and JSON, that a '#'-less
+    # tint is left out where a tint would show.)
+    write("tint-without-hash.tmx", the_map(6, 3, tileset() +
+        ' <group id="1" name="tinted" tintcolor="80ff00ff">\n' +
+        layer("cells", 6, 3, [(i % 8) + 1 for i in range(18)], ' tintcolor="ff0000"', lid=2) +
+        objects("things", [{"gid": 3, "x": 40, "y": 40, "width": 16, "height": 16}], ' tintcolor="00ff00"', lid=3) +
+        ' </group>\n'))
     # <tileoffset> on cells and on tile objects (scaled with the object).
     write("tile-offset.tmx", the_map(8, 5, tileset(extra="", inner='  <tileoffset x="3" y="-5"/>\n') +
         layer("cells", 8, 5, [0] * 9 + [1, 2, 3] + [0] * 28) + objects(

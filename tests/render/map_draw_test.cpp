@@ -321,9 +321,41 @@ TEST_CASE("bad input names the file and the value") {
         CHECK_THROWS_WITH(load_tilemap(dir + "/colour.tmx"),
                           doctest::Contains("backgroundcolor='#12x' is not a colour"));
         CHECK_THROWS_WITH(load_tilemap(dir + "/colour.tmx"), doctest::Contains("colour.tmx:1"));
-        write(dir + "/tint.tmx", map_text("<layer name=\"l\" width=\"1\" height=\"1\" tintcolor=\"red\">"
+        write(dir + "/tint.tmx", map_text("<layer name=\"l\" width=\"1\" height=\"1\" tintcolor=\"#ff00zz\">"
                                           "<data encoding=\"csv\">0</data></layer>\n"));
-        CHECK_THROWS_WITH(load_tilemap(dir + "/tint.tmx"), doctest::Contains("tintcolor='red' is not a colour"));
+        CHECK_THROWS_WITH(load_tilemap(dir + "/tint.tmx"), doctest::Contains("tintcolor='#ff00zz' is not a colour"));
+    }
+    SUBCASE("a tintcolor without '#': no colour, as Tiled reads it; the layer is drawn untinted, with a warning") {
+        write_sheet("sheet.png");
+        for (const char* ext : {".tmx", ".tmj"}) {
+            const std::string path = dir + "/hashless" + ext;
+            if (std::string(ext) == ".tmx")
+                write(path, map_text("<group name=\"g\" tintcolor=\"80ff0000\"><layer name=\"l\" width=\"1\" "
+                                     "height=\"1\" tintcolor=\"ff0000\"><data encoding=\"csv\">1</data></layer></group>\n"));
+            else
+                write(path, "{\"orientation\": \"orthogonal\", \"width\": 1, \"height\": 1, \"tilewidth\": 4, "
+                            "\"tileheight\": 4, \"tilesets\": [{\"firstgid\": 1, \"name\": \"s\", \"tilewidth\": 4, "
+                            "\"tileheight\": 4, \"tilecount\": 4, \"columns\": 2, \"image\": \"sheet.png\", "
+                            "\"imagewidth\": 8, \"imageheight\": 8}], \"layers\": [{\"type\": \"group\", \"name\": \"g\", "
+                            "\"tintcolor\": \"80ff0000\", \"layers\": [{\"type\": \"tilelayer\", \"name\": \"l\", "
+                            "\"width\": 1, \"height\": 1, \"tintcolor\": \"ff0000\", \"data\": [1]}]}]}");
+            CAPTURE(path);
+            const Tilemap m = load_tilemap(path);
+            REQUIRE(m.warnings.size() == 2);
+            CHECK(m.warnings[0] == path + ": layer 'g' has tintcolor '80ff0000', which has no '#' and so is no "
+                                          "colour (as Tiled reads it); drawn untinted");
+            CHECK(m.warnings[1] == path + ": layer 'l' has tintcolor 'ff0000', which has no '#' and so is no "
+                                          "colour (as Tiled reads it); drawn untinted");
+            CHECK(m.layer_tree[0].tint_color == "80ff0000");  // kept as written
+            CHECK(!m.layer_tree[0].children[0].tint);
+            Canvas c(kTile, kTile);
+            TileArt art;
+            art.bind(&m);
+            c.clear(kBackground);
+            draw_map(c, art, m, 0, 0);
+            for (int y = 0; y < kTile; ++y)
+                for (int x = 0; x < kTile; ++x) CHECK(c.pixel(x, y) == sheet_color(0, x, y));
+        }
     }
     SUBCASE("an unknown alignment") {
         write(dir + "/align.tmx",
@@ -351,6 +383,7 @@ TEST_CASE("bad input names the file and the value") {
         CHECK(c.pixel(0, 0) == edge);
     }
     SUBCASE("a tilecount larger than the tileset's image holds: one warning naming the first tile past its end") {
+        write_sheet("sheet.png");
         write(dir + "/past.tmx",
               "<map orientation=\"orthogonal\" width=\"1\" height=\"1\" tilewidth=\"4\" tileheight=\"4\">\n"
               " <tileset firstgid=\"1\" name=\"s\" tilewidth=\"4\" tileheight=\"4\" tilecount=\"7\" columns=\"2\">"
