@@ -52,10 +52,9 @@ Property read_member(const std::string& name, const Node& v, int depth) {
     return p;
 }
 
-// The value of a property (or list item) of `type`, into p.
-void read_value(const Node& owner, const std::string& type, Property& p, int depth) {
-    if (!owner.has("value")) return;  // Tiled leaves empty values out
-    const Node v = owner["value"];
+// Value `v` of a property (or list item) of `type`, into p; `type_node`
+// is where the type was written, named when it is none of Tiled's.
+void read_value_of(const Node& v, const Node& type_node, const std::string& type, Property& p, int depth) {
     if (type == "string" || type == "color" || type == "file") {
         p.value = v.string();
     } else if (type == "int" || type == "float" || type == "object") {
@@ -72,9 +71,16 @@ void read_value(const Node& owner, const std::string& type, Property& p, int dep
         check_depth(v, depth);
         for (size_t i = 0; i < v.value->size(); ++i) p.members.push_back(read_list_item(v[i], depth + 1));
     } else {
-        owner["type"].fail("is none of string, int, float, bool, color, file, object, class or list");
+        type_node.fail("is none of string, int, float, bool, color, file, object, class or list");
     }
 }
+
+// The value of a property (or list item) of `type`, into p.
+void read_value(const Node& owner, const std::string& type, Property& p, int depth) {
+    if (!owner.has("value")) return;  // Tiled leaves empty values out
+    read_value_of(owner["value"], owner.has("type") ? owner["type"] : owner, type, p, depth);
+}
+
 
 }  // namespace
 
@@ -94,10 +100,38 @@ namespace {
 Property read_list_item(const Node& item, int depth) { return read_typed(item, "", depth); }
 }  // namespace
 
+// A value whose type is not given takes the type its JSON value has, as a
+// class member's does; the names come in key order, as Tiled's QVariantMap
+// gives them.
+Properties read_property_object(const Node& values, const Node* types) {
+    values.object();
+    if (types) types->object();
+    Properties out;
+    for (const auto& [key, value] : values.value->items()) {
+        const Node v{&value, values.path + "." + key};
+        if (!types || !types->has(key.c_str())) {
+            out.push_back(read_member(key, v, 0));
+            continue;
+        }
+        const Node type_node = (*types)[key.c_str()];
+        Property p;
+        p.name = key;
+        p.type = type_node.string();
+        read_value_of(v, type_node, p.type, p, 0);
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
 Properties read_properties(const Node& owner) {
     Properties out;
     if (!owner.has("properties")) return out;
     const Node list = owner["properties"];
+    if (list.value->is_object()) {  // before Tiled 1.2
+        if (!owner.has("propertytypes")) return read_property_object(list, nullptr);
+        const Node types = owner["propertytypes"];
+        return read_property_object(list, &types);
+    }
     for (size_t i = 0; i < list.array().size(); ++i) {
         const Node p = list[i];
         p.object();

@@ -16,7 +16,13 @@ namespace ds::json {
 // object, `depth` how many classes or lists it is inside (at most
 // kMaxPropertyDepth, as TMX).
 Property read_typed(const Node& n, std::string name, int depth = 0);
-// The "properties" array of `owner`, empty when absent.
+// The "properties" of `owner`, empty when absent: an array, or an object
+// as before Tiled 1.2 (read_property_object, its types in "propertytypes").
 Properties read_properties(const Node& owner);
+// Properties as Tiled wrote them in JSON before 1.2, and as Tiled still
+// reads them (VariantToMapConverter::toProperties): an object of name →
+// value, with `types` (when given) an object of name → Tiled type beside
+// it ("propertytypes", or a tileset's "tilepropertytypes" per tile).
+Properties read_property_object(const Node& values, const Node* types);
 
 }  // namespace ds::json

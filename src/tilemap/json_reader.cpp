@@ -6,6 +6,7 @@
 // the file, the JSON path and the reason (the line too when the JSON itself
 // is malformed); unknown keys are skipped.
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -220,6 +221,37 @@ T named_or(const Node& n, const char* key, T fallback, Parse parse, const char* 
     return *v;
 }
 
+// Tile properties as Tiled wrote them before 1.2, and as Tiled still reads
+// them: "tileproperties" maps each tile id (a decimal key) to its
+// properties object, "tilepropertytypes" the same ids to their types.
+void read_old_tile_properties(const Node& n, Tileset& ts) {
+    const Node all = n["tileproperties"];
+    all.object();
+    const bool typed = n.has("tilepropertytypes");
+    const Node all_types = typed ? n["tilepropertytypes"] : all;
+    if (typed) all_types.object();
+    for (const auto& [key, value] : all.value->items()) {
+        const Node props{&value, all.path + "." + key};
+        uint32_t id = 0;
+        const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), id);
+        if (ec != std::errc() || end != key.data() + key.size()) props.fail("is not named by a tile id");
+        Properties read;
+        if (typed && all_types.has(key.c_str())) {
+            const Node types = all_types[key.c_str()];
+            read = json::read_property_object(props, &types);
+        } else {
+            read = json::read_property_object(props, nullptr);
+        }
+        auto it = std::find_if(ts.tiles.begin(), ts.tiles.end(), [&](const TileInfo& t) { return t.id == id; });
+        if (it == ts.tiles.end()) {
+            ts.tiles.push_back({});
+            it = ts.tiles.end() - 1;
+            it->id = id;
+        }
+        it->properties = std::move(read);
+    }
+}
+
 // What a tileset says of itself, embedded or in a .tsj.
 void read_tileset_body(const JsonFile& f, const Node& n, Tileset& ts) {
     ts.name = json::string_or(n, "name");
@@ -253,6 +285,7 @@ void read_tileset_body(const JsonFile& f, const Node& n, Tileset& ts) {
         const Node tiles = n["tiles"];
         for (size_t i = 0; i < tiles.array().size(); ++i) ts.tiles.push_back(read_tile(f, tiles[i], ts));
     }
+    if (n.has("tileproperties")) read_old_tile_properties(n, ts);
     sort_tiles(ts);
 }
 

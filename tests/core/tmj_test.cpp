@@ -389,6 +389,36 @@ TEST_CASE("properties of every Tiled type") {
     CHECK(waves.members[1].value == "last");
 }
 
+TEST_CASE("properties as objects, as Tiled wrote them before 1.2, load as their modern twin's") {
+    // old_properties.tmj: "properties" objects with "propertytypes" beside
+    // them on the map, layers, tileset and object, and "tileproperties" /
+    // "tilepropertytypes" for tiles; some values untyped. Its twin says the
+    // same in Tiled 1.2's arrays.
+    const Tilemap old = load_tilemap(json_path("old_properties.tmj"));
+    const Tilemap modern = load_tilemap(json_path("old_properties_modern.tmj"));
+    same_model(old, modern);
+    CHECK(prop(old.properties, "gravity").type == "float");
+    CHECK(prop(old.properties, "gravity").value == "9.5");
+    CHECK(prop(old.properties, "tint").type == "color");
+    CHECK(prop(old.properties, "tint").value == "#ff102030");
+    CHECK(prop(old.properties, "music").type == "file");
+    // Untyped: the type its JSON value has.
+    CHECK(prop(old.tilesets[0].properties, "scale").type == "int");
+    CHECK(prop(old.layers[0].properties, "name-tag").type == "string");
+    CHECK(prop(old.tilesets[0].tiles[1].properties, "label").value == "ledge");
+    CHECK(prop(old.object_layers[0].properties, "spawns").type == "float");
+    CHECK(prop(old.object_layers[0].properties, "spawns").value == "1.0");
+    CHECK(prop(old.object_layers[0].objects[0].properties, "locked").value == "false");
+    CHECK(old.tilesets[0].tile_solid(0));  // a tile property still makes it solid
+    CHECK(old.cell_kind(0, 0) == modern.cell_kind(0, 0));
+    CHECK(parse_error(R"({"orientation": "orthogonal", "width": 1, "height": 1, "tilewidth": 4, "tileheight": 4,
+        "properties": {"n": "x"}, "propertytypes": {"n": "vector"}, "layers": []})") ==
+          "m.tmj: propertytypes.n is none of string, int, float, bool, color, file, object, class or list");
+    CHECK(parse_error(R"({"orientation": "orthogonal", "width": 1, "height": 1, "tilewidth": 4, "tileheight": 4,
+        "tilesets": [{"firstgid": 1, "name": "t", "tilewidth": 4, "tileheight": 4, "tileproperties": {"top": {}}}],
+        "layers": []})") == "m.tmj: tilesets[0].tileproperties.top is not named by a tile id");
+}
+
 TEST_CASE("a project file fills the class members a map leaves at their defaults") {
     LoadOptions options;
     options.project_path = json_path("project.tiled-project");
