@@ -3,44 +3,17 @@
 
 #include <algorithm>
 
+#include "accuracy/depth.hpp"
 #include "frame.hpp"
 #include "speed/paths.hpp"
 #include "speed/scenes.hpp"
 
 namespace bench::accuracy {
 
-namespace {
-
-double overlap(double p1, double s1, double p2, double s2) {
-    return std::min(p1 + s1, p2 + s2) - std::max(p1, p2);
-}
-
-// The deepest a body sits in one whole solid cell: per cell, the smaller
-// axis overlap (as Penetration by scene measures it).
-double depth_in_tiles(const ds::Body& b, const ds::TileGrid& g) {
-    const ds::CellRange cols = g.clip_cols(ds::cells_of(b.x, b.w, g.tile_width()));
-    const ds::CellRange rows = g.clip_rows(ds::cells_of(b.y, b.h, g.tile_height()));
-    const double tw = g.tile_width(), th = g.tile_height();
-    double deepest = 0;
-    for (int64_t r = rows.first; r <= rows.last; ++r)
-        for (int64_t c = cols.first; c <= cols.last; ++c)
-            if (g.solid(c, r))
-                deepest = std::max(deepest, std::min(overlap(b.x.v, b.w.v, static_cast<double>(c) * tw, tw),
-                                                     overlap(b.y.v, b.h.v, static_cast<double>(r) * th, th)));
-    return deepest;
-}
-
-}  // namespace
-
 Sinking measure_sinking(const std::string& name, int n, ds::PushRule rule, long frames) {
     const Scene scene = make_scene(name, n);
-    ds::TileGrid grid(scene.cols, scene.rows, scene.tile, scene.tile, scene.solid);
-    add_shapes(grid, scene);
-    ds::World world;
-    world.grid = &grid;
-    world.bodies = to_bodies(scene);
-    std::vector<int64_t> rvx, rvy;
-    for (const SceneBody& b : scene.bodies) rvx.push_back(b.rvx), rvy.push_back(b.rvy);
+    NativeScene native(scene);
+    auto& [grid, world, rvx, rvy] = native;
     ds::FrameOptions opts;  // the speed benchmark's: swept, k = 1
     opts.push = rule;
     Sinking s{name, n, rule, frames};

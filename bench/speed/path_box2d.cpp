@@ -17,6 +17,7 @@
 
 #include "common/timing.hpp"
 #include "speed/paths.hpp"
+#include "speed/tile_rects.hpp"
 
 namespace bench {
 
@@ -31,46 +32,6 @@ constexpr uint16 kSolidMask = kTiles | kSolid | kEnemy | kSensor;
 
 float m(double px) { return static_cast<float>(px / kPxPerM); }
 float mps(double px_per_frame) { return static_cast<float>(px_per_frame * kHz / kPxPerM); }
-
-struct Rect {
-    int c0, c1, r0, r1;  // cells, inclusive
-};
-
-// Runs of solid cells per row, merged downwards while the next row has the
-// very same run: a floor several tiles deep is one box, a wall one column.
-std::vector<Rect> tile_rects(const Scene& s) {
-    std::vector<Rect> done, open;
-    for (int r = 0; r <= s.rows; ++r) {
-        std::vector<std::pair<int, int>> runs;
-        if (r < s.rows)
-            for (int c = 0; c < s.cols;) {
-                if (!s.solid[static_cast<size_t>(r) * s.cols + c]) {
-                    ++c;
-                    continue;
-                }
-                int e = c;
-                while (e + 1 < s.cols && s.solid[static_cast<size_t>(r) * s.cols + e + 1]) ++e;
-                runs.push_back({c, e});
-                c = e + 1;
-            }
-        std::vector<Rect> still;
-        for (Rect& rect : open) {
-            bool extended = false;
-            for (auto& run : runs)
-                if (run.first == rect.c0 && run.second == rect.c1) {
-                    rect.r1 = r;
-                    run = {-1, -1};
-                    extended = true;
-                    break;
-                }
-            (extended ? still : done).push_back(rect);
-        }
-        for (auto& run : runs)
-            if (run.first >= 0) still.push_back({run.first, run.second, r, r});
-        open = std::move(still);
-    }
-    return done;
-}
 
 void add_box(b2Body* body, double x, double y, double w, double h, uint16 category, uint16 mask,
              float density) {

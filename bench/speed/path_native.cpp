@@ -85,16 +85,19 @@ void add_shapes(ds::TileGrid& grid, const Scene& scene) {
     }
 }
 
+NativeScene::NativeScene(const Scene& scene)
+    : grid(scene.cols, scene.rows, scene.tile, scene.tile, scene.solid) {
+    add_shapes(grid, scene);
+    world.grid = &grid;
+    world.bodies = to_bodies(scene);
+    for (const SceneBody& b : scene.bodies) rvx.push_back(b.rvx), rvy.push_back(b.rvy);
+}
+
 PathResult run_native(const Scene& scene, const RunConfig& cfg) {
     PathResult r;
     const int64_t t_setup = now_ns();
-    ds::TileGrid grid(scene.cols, scene.rows, scene.tile, scene.tile, scene.solid);
-    add_shapes(grid, scene);
-    ds::World world;
-    world.grid = &grid;
-    world.bodies = to_bodies(scene);
-    std::vector<int64_t> rvx, rvy;
-    for (const SceneBody& b : scene.bodies) rvx.push_back(b.rvx), rvy.push_back(b.rvy);
+    NativeScene native(scene);
+    auto& [grid, world, rvx, rvy] = native;
     ds::Frame frame;
     ds::FrameOptions opts;  // swept, dt = 1000/60 ms
     opts.resting_contacts = scene.resting_contacts;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "frame.hpp"
 #include "speed/scenes.hpp"
 #include "tile_grid.hpp"
 
@@ -56,6 +57,18 @@ void add_shapes(ds::TileGrid& grid, const Scene& scene);
 // The scenes' bounce update after a frame (Scene::bounce): an axis whose
 // velocity a collision zeroed turns round to rvx / rvy, whose signs it flips.
 void bounce(std::vector<ds::Body>& bodies, std::vector<int64_t>& rvx, std::vector<int64_t>& rvy);
+
+// A scene as the native path steps it: its grid with the shaped cells
+// added, a World on that grid, and the bounce scenes' turn-round speeds.
+// Not copyable: world.grid points at grid.
+struct NativeScene {
+    explicit NativeScene(const Scene& scene);
+    NativeScene(const NativeScene&) = delete;
+    NativeScene& operator=(const NativeScene&) = delete;
+    ds::TileGrid grid;
+    ds::World world;
+    std::vector<int64_t> rvx, rvy;
+};
 
 // ds::World + ds::Frame::step, one call per frame.
 PathResult run_native(const Scene& scene, const RunConfig& cfg);

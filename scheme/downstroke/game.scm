@@ -117,12 +117,13 @@
 
 ;; Checked where it is given, not first in a frame, where the error would
 ;; name the collision-mode parameter and come frames after the typo.
-(define collision-modes '(swept discrete))
+(define (check-choice who key choices value)
+  (unless (memq value choices)
+    (scm-error 'wrong-type-arg who (string-append key ": expected one of ~S, got ~S")
+               (list choices value) #f)))
 
 (define (check-collision-mode who mode)
-  (unless (memq mode collision-modes)
-    (scm-error 'wrong-type-arg who "collision-mode: expected one of ~S, got ~S"
-               (list collision-modes mode) #f)))
+  (check-choice who "collision-mode" '(swept discrete) mode))
 
 (define (game-collision-mode-set! game mode)
   "Make MODE ('swept or 'discrete) GAME's collision mode from the next frame on."
@@ -131,12 +132,8 @@
   (%game-collision-mode-set! game mode))
 
 ;; As the collision mode: checked where it is given.
-(define push-rules '(clipped seed))
-
 (define (check-push-rule who rule)
-  (unless (memq rule push-rules)
-    (scm-error 'wrong-type-arg who "push-rule: expected one of ~S, got ~S"
-               (list push-rules rule) #f)))
+  (check-choice who "push-rule" '(clipped seed) rule))
 
 (define (game-push-rule-set! game rule)
   "Make RULE ('clipped or 'seed) GAME's push rule from the next frame on."
