@@ -138,16 +138,31 @@ bool decode_batch(SCM entities, Batch& batch, Failure& f, CategoryTable* table) 
 void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
     batch.all_settled = false;  // until this frame completes (note_settled)
     batch.colliders = any_collider(batch.bodies);
-    if (!batch.settling.begin(batch.size(), SettleConditions::of(grid, opts))) return;
+    // An entity eq? to the one the last frame left is the body it left
+    // (the cache's decoding of it).
+    batch.fit.resize(batch.size());
+    for (size_t i = 0; i < batch.size(); ++i) batch.fit[i] = batch.hit[i] && !batch.has_tween[i];
+    batch.keep_groups = batch.groups_formed;
+    batch.groups_formed = false;  // until this frame completes (note_settled)
+    const bool same = batch.settling.begin(batch.size(), SettleConditions::of(grid, opts));
+    batch.keep_groups &= same;
+    if (!same) return;
     for (size_t i = 0; i < batch.size(); ++i)
         batch.settling.plan(i, batch.hit[i], batch.has_tween[i], batch.bodies[i], batch.colliders);
 }
 
 void note_settled(Batch& batch) {
     bool all = true;
-    for (size_t i = 0; i < batch.size(); ++i)
+    batch.unchanged.resize(batch.size());
+    for (size_t i = 0; i < batch.size(); ++i) {
         all &= batch.settling.settle(i, !batch.changed[i], batch.has_tween[i], batch.bodies[i], batch.colliders);
+        // A plist handed back as it came is the same body next frame, which
+        // the same frame leaves the same again (settle.hpp's RestingGroups).
+        batch.unchanged[i] = !batch.changed[i] && !batch.has_tween[i];
+    }
     batch.all_settled = all;
+    batch.frame.form_resting_groups(batch.bodies, batch.unchanged);
+    batch.groups_formed = true;
 }
 
 bool frame_is_noop(const Batch& batch, SCM entities, const TileGrid* grid, const FrameOptions& opts) {

@@ -63,6 +63,14 @@ struct Batch {
     // By position: which entities settled, under which map and options, and
     // which the frame leaves asleep (settle.hpp).
     Settling settling;
+    // Resting groups of colliders (settle.hpp), which batch.frame keeps:
+    // by position, whether the entity enters as the last frame left it with
+    // no tween (`fit`), and after the frame whether it left a stepped one so
+    // (`unchanged`); whether the last frame's groups may sleep in this one
+    // (the same conditions, and that frame formed them: a frame that failed
+    // part-way formed none).
+    std::vector<uint8_t> fit, unchanged;
+    bool keep_groups = false, groups_formed = false;
     std::vector<uint8_t> changed;  // by position: encode_batch rewrote it
     std::vector<uint32_t> fields;  // by position: the Field bits that changed
     bool colliders = false;        // the frame has bodies that collide
@@ -101,7 +109,9 @@ SCM encode_batch(SCM entities, Batch& batch, Failure& f);
 // Plans which entities a whole frame leaves asleep (settled, handed back as
 // the same object, under the same map revision and options, still depending
 // on no other entity), and after the frame (after encode_batch) records
-// which entities settled. Both by position, in Batch::settling.
+// which entities settled. Both by position, in Batch::settling. Also
+// what the frame's resting groups need (Batch::fit, keep_groups), and
+// after the frame the groups the next one may keep.
 void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts);
 void note_settled(Batch& batch);
 

@@ -135,10 +135,11 @@ SCM step_entities(SCM entities, SCM tilemap, SCM dt, SCM mode, SCM substeps, SCM
                 stats.decode.ms += timer.lap();
                 plan_sleep(batch, grid, opts);
                 batch.frame.note_pairs(pushed_pairs());
-                batch.frame.step_physics(batch.bodies, grid, opts,
-                                         tweened ? std::span<const Body>(batch.frame_start)
-                                                 : std::span<const Body>(),
-                                         batch.writes, batch.settling.asleep());
+                batch.frame.step_physics_resting(batch.bodies, grid, opts,
+                                                 tweened ? std::span<const Body>(batch.frame_start)
+                                                         : std::span<const Body>(),
+                                                 batch.writes, batch.settling.asleep(), batch.fit,
+                                                 batch.keep_groups);
                 gather_contacts(batch);
                 timer.lap();  // the steps time themselves (batch.frame.stats())
                 result = encode_batch(list, batch, f);

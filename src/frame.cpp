@@ -294,6 +294,39 @@ void Frame::Impl::step_physics(std::span<Body> bodies, const TileGrid* grid, con
     run_physics(bodies, grid, opts, scene, writes);
 }
 
+void Frame::Impl::step_physics_resting(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                                       std::span<const Body> scene, std::span<FirstWrites> writes,
+                                       std::span<const uint8_t> asleep, std::span<const uint8_t> fit, bool keep) {
+    const size_t n = bodies.size();
+    RestingGroups& groups = settling_.groups();
+    groups.begin(n, keep);
+    // The bodies are after the tweens: run_physics copies out the
+    // supporters, and only when some body is awake to read them.
+    begin_census(n, false);
+    for (size_t i = 0; i < n; ++i) {
+        enlist(bodies[i], i);
+        groups.propose(i, fit[i]);
+    }
+    end_census();
+    plan_groups(bodies, asleep);
+    run_waking(bodies, grid, opts, scene, writes, asleep);
+}
+
+void Frame::Impl::run_waking(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                             std::span<const Body> scene, std::span<FirstWrites> writes,
+                             std::span<const uint8_t> alone) {
+    // A frame with asleep groups runs again, with the groups an awake
+    // collider reached woken, until none is reached (settle.hpp).
+    for (;;) {
+        rerun_index_.clear();
+        rerun_from_.clear();
+        rerun_writes_.clear();
+        if (groups_asleep_ && opts.substeps > 1) save_for_rerun(bodies, writes, active_);
+        if (!run_physics(bodies, grid, opts, scene, writes)) break;
+        wake_reached(bodies, writes, alone);
+    }
+}
+
 bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         std::span<const Body> scene, std::span<FirstWrites> writes) {
     for (StepId id = kStepAcceleration; id < kStepCount; id = static_cast<StepId>(id + 1))
@@ -316,7 +349,7 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         step_bodies(bodies, grid, opts, round, writes, active_, false);
         auto t0 = Clock::now();
         if (carrying) carry(bodies, grid, opts, writes);
-        if (groups_asleep_ && reaches_asleep(bodies, grid, opts, round)) {
+        if (groups_asleep_ && reaches_asleep(bodies, grid, opts, writes, round)) {
             end_contact_log();
             return true;
         }
@@ -351,7 +384,7 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
 }
 
 bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
-                                  int round) {
+                                  std::span<FirstWrites> writes, int round) {
     if (awake_members_.empty()) return false;
     RestingGroups& groups = settling_.groups();
     if (round == 0) groups.file_asleep(bodies, members_);
@@ -371,8 +404,8 @@ bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, c
             if (groups.asleep(i) && groups.marked(i)) woken_.push_back(static_cast<uint32_t>(i));
         groups.wake_marked();
         for (const uint32_t i : woken_) groups.start(i, bodies[i]);
-        if (opts.substeps > 1) save_for_rerun(bodies, woken_);
-        step_bodies(bodies, grid, opts, round, {}, woken_, true);
+        if (opts.substeps > 1) save_for_rerun(bodies, writes, woken_);
+        step_bodies(bodies, grid, opts, round, writes, woken_, true);
         any = false;
         for (const uint32_t i : woken_) {
             groups.extend(i, bodies[i]);
@@ -386,10 +419,12 @@ bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, c
     return any;
 }
 
-void Frame::Impl::save_for_rerun(std::span<const Body> bodies, std::span<const uint32_t> which) {
+void Frame::Impl::save_for_rerun(std::span<const Body> bodies, std::span<const FirstWrites> writes,
+                                 std::span<const uint32_t> which) {
     for (const uint32_t i : which) {
         rerun_index_.push_back(i);
         rerun_from_.push_back(bodies[i]);
+        if (!writes.empty()) rerun_writes_.push_back(writes[i]);
     }
 }
 
@@ -446,17 +481,22 @@ void Frame::Impl::plan_sleep(const World& world, const FrameOptions& opts) {
         settling_.propose(i, world.bodies[i]);
     }
     end_census();
+    for (size_t i = 0; i < n; ++i) settling_.confirm(i, colliders_);
+    plan_groups(world.bodies, settling_.asleep_alone());
+}
+
+void Frame::Impl::plan_groups(std::span<const Body> bodies, std::span<const uint8_t> alone) {
     // Resting groups sleep only in frames whose every read of another body
     // the extents bound (settle.hpp's RestingGroups).
     groups_allowed_ = carriers_.empty() && !crushed_ && grouped_ == 0 && contact_bodies_ == 0 &&
                       overlay_log_ == nullptr;
-    settling_.allow_groups(groups_allowed_);
-    active_.clear();
     RestingGroups& groups = settling_.groups();
-    for (size_t i = 0; i < n; ++i)
-        if (!settling_.confirm(i, colliders_)) {
+    groups.allow(groups_allowed_);
+    active_.clear();
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (!groups.asleep(i) && (alone.empty() || !alone[i])) {
             active_.push_back(static_cast<uint32_t>(i));
-            if (world.bodies[i].collides()) groups.start(i, world.bodies[i]);
+            if (bodies[i].collides()) groups.start(i, bodies[i]);
         }
     groups_asleep_ = groups.any_asleep();
     if (groups_asleep_) note_awake_members();
@@ -469,17 +509,21 @@ void Frame::Impl::note_awake_members() {
         if (!groups.asleep(i)) awake_members_.push_back(i);
 }
 
-void Frame::Impl::wake_reached(World& world) {
+void Frame::Impl::wake_reached(std::span<Body> bodies, std::span<FirstWrites> writes,
+                               std::span<const uint8_t> alone) {
     // Back to the frame's start (after the tweens) for every body stepped,
-    // and the reached groups awake.
-    for (size_t k = 0; k < rerun_index_.size(); ++k) world.bodies[rerun_index_[k]] = rerun_from_[k];
+    // first writes included, and the reached groups awake.
+    for (size_t k = 0; k < rerun_index_.size(); ++k) {
+        bodies[rerun_index_[k]] = rerun_from_[k];
+        if (!writes.empty()) writes[rerun_index_[k]] = rerun_writes_[k];
+    }
     RestingGroups& groups = settling_.groups();
     for (const size_t i : members_)
-        if (groups.asleep(i) && groups.marked(i)) groups.start(i, world.bodies[i]);
+        if (groups.asleep(i) && groups.marked(i)) groups.start(i, bodies[i]);
     groups.wake_marked();
     active_.clear();
-    for (size_t i = 0; i < world.bodies.size(); ++i)
-        if (!groups.asleep(i) && !settling_.asleep_alone(i)) active_.push_back(static_cast<uint32_t>(i));
+    for (size_t i = 0; i < bodies.size(); ++i)
+        if (!groups.asleep(i) && (alone.empty() || !alone[i])) active_.push_back(static_cast<uint32_t>(i));
     groups_asleep_ = groups.any_asleep();
     note_awake_members();
 }
@@ -518,15 +562,8 @@ const FrameReport& Frame::Impl::step(World& world, const FrameOptions& opts) {
         step_tweens(world, opts.dt);
         scene = start_;
     }
-    // A frame with asleep groups runs again, with the groups an awake
-    // collider reached woken, until none is reached (settle.hpp).
-    for (;;) {
-        rerun_index_.clear();
-        rerun_from_.clear();
-        if (groups_asleep_ && opts.substeps > 1) save_for_rerun(world.bodies, active_);
-        if (!run_physics(world.bodies, world.grid, opts, scene, {})) break;
-        wake_reached(world);
-    }
+    run_waking(world.bodies, world.grid, opts, scene, {},
+               track ? settling_.asleep_alone() : std::span<const uint8_t>());
     if (track) note_settled(world);
     settling_.end_frame(world.bodies.size());
     return report_;
@@ -544,6 +581,19 @@ void Frame::step_physics(std::span<Body> bodies, const TileGrid* grid, const Fra
                          std::span<const Body> scene, std::span<FirstWrites> writes,
                          std::span<const uint8_t> asleep) {
     impl_->step_physics(bodies, grid, opts, scene, writes, asleep);
+}
+void Frame::step_physics_resting(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                                 std::span<const Body> scene, std::span<FirstWrites> writes,
+                                 std::span<const uint8_t> asleep, std::span<const uint8_t> fit, bool keep) {
+    impl_->step_physics_resting(bodies, grid, opts, scene, writes, asleep, fit, keep);
+}
+bool Frame::resting_asleep(size_t i) const { return impl_->settling_.groups().asleep(i); }
+void Frame::form_resting_groups(std::span<const Body> bodies, std::span<const uint8_t> unchanged) {
+    Impl& m = *impl_;
+    // As step() does (note_settled): when nothing was stepped the groups
+    // stand as they were.
+    if (!m.groups_allowed_) m.settling_.groups().forget();
+    else if (!m.active_.empty()) m.settling_.groups().form(bodies, m.members_, unchanged);
 }
 const FrameStats& Frame::stats() const { return impl_->stats_; }
 FrameStats& Frame::stats() { return impl_->stats_; }

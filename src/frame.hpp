@@ -128,6 +128,22 @@ public:
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                       std::span<const Body> scene = {}, std::span<FirstWrites> writes = {},
                       std::span<const uint8_t> asleep = {});
+    // step_physics with resting groups of colliders asleep too, as step()
+    // lets them sleep (settle.hpp's RestingGroups), for a caller that knows
+    // bodies only by position: `fit`, by body, whether it enters the frame
+    // as the last frame left it, with no tween; `keep`, whether the groups
+    // the last frame formed still stand (the same conditions and bodies,
+    // and that frame completed). A group an awake collider reaches is woken
+    // and the frame, first writes included, comes out as if every body had
+    // been stepped. After the frame: resting_asleep(i), whether it left
+    // body i asleep in a group, and form_resting_groups, given by body
+    // whether the frame left each stepped body as it entered with no tween,
+    // forms the groups the next frame may keep.
+    void step_physics_resting(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                              std::span<const Body> scene, std::span<FirstWrites> writes,
+                              std::span<const uint8_t> asleep, std::span<const uint8_t> fit, bool keep);
+    bool resting_asleep(size_t i) const;
+    void form_resting_groups(std::span<const Body> bodies, std::span<const uint8_t> unchanged);
 
 private:
     // The scratch and the passes (detail/frame_impl.hpp): the core's own

@@ -292,7 +292,7 @@ public:
     }
     RestingGroups& groups() { return groups_; }
     // Whether body i sleeps this frame as a settled body of its own.
-    bool asleep_alone(size_t i) const { return marks_.asleep()[i]; }
+    std::span<const uint8_t> asleep_alone() const { return marks_.asleep(); }
 
     // Not tracking: forgets every copy (nothing is settled), and counts.
     void skip();

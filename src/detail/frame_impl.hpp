@@ -25,6 +25,9 @@ struct Frame::Impl {
     void step_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                       std::span<const Body> scene, std::span<FirstWrites> writes,
                       std::span<const uint8_t> asleep);
+    void step_physics_resting(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                              std::span<const Body> scene, std::span<FirstWrites> writes,
+                              std::span<const uint8_t> asleep, std::span<const uint8_t> fit, bool keep);
     void step_tweens(World& world, double dt);
     void plan_sleep(const World& world, const FrameOptions& opts);
     void note_settled(const World& world);
@@ -49,11 +52,20 @@ struct Frame::Impl {
     // against the asleep members, before a push-apart; the awake members;
     // and the frame put back to its start with the reached groups awake
     // (after a later sub-frame reached them).
-    bool reaches_asleep(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts, int round);
+    bool reaches_asleep(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                        std::span<FirstWrites> writes, int round);
     void merge_into(std::vector<uint32_t>& list, std::span<const uint32_t> more);
-    void save_for_rerun(std::span<const Body> bodies, std::span<const uint32_t> which);
+    void save_for_rerun(std::span<const Body> bodies, std::span<const FirstWrites> writes,
+                        std::span<const uint32_t> which);
+    // After the census and each member's proposal: whether groups may sleep
+    // this frame, and the awake bodies (`alone`: asleep as settled bodies).
+    void plan_groups(std::span<const Body> bodies, std::span<const uint8_t> alone);
     void note_awake_members();
-    void wake_reached(World& world);
+    // The frame's physics, run again from its start while a later sub-frame
+    // reaches an asleep group.
+    void run_waking(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
+                    std::span<const Body> scene, std::span<FirstWrites> writes, std::span<const uint8_t> alone);
+    void wake_reached(std::span<Body> bodies, std::span<FirstWrites> writes, std::span<const uint8_t> alone);
     void take_supporters(std::span<const Body> scene);
     bool rests(const Body& b, size_t i, const TileGrid* grid, bool indexed);
     // The carriers' steps around push-apart (semantics §11), in frames that
@@ -124,6 +136,7 @@ struct Frame::Impl {
     std::vector<size_t> awake_members_;
     std::vector<uint32_t> rerun_index_;  // with sub-frames (only a later one runs the frame again)
     std::vector<Body> rerun_from_;
+    std::vector<FirstWrites> rerun_writes_;  // beside rerun_from_, for a caller that logs first writes
     std::vector<uint32_t> woken_, merged_;  // members woken in the first sub-frame
     bool index_built_ = false;              // support_index_, this sub-frame
     // The contact report (semantics §10): this frame's bodies with
