@@ -21,8 +21,9 @@
 // own fields, its tween, the map and the options: when none changed, the
 // frame does what it did last time, which was nothing.
 //
-// Colliders, which do depend on others, sleep in *resting groups* on the
-// World path (RestingGroups below, with why that is exact).
+// Colliders, which do depend on others, sleep in *resting groups* on both
+// paths (RestingGroups below, with why that is exact; the bindings keep
+// theirs through Frame::step_physics_resting).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -154,7 +155,7 @@ struct Extent {
     }
 };
 
-// Resting groups of colliders (the World path's sleeping for bodies that
+// Resting groups of colliders (both paths' sleeping for bodies that
 // push each other). A frame's resting group is a set of colliders that
 // may_rest, that the frame left exactly as they entered, and whose extents
 // (Extent) reach no collider outside the set: the components, under

@@ -1,4 +1,4 @@
-;;; SPDX-License-Identifier: MIT
+;; SPDX-License-Identifier: MIT
 ;;; Resting groups on the Scheme path (settle.hpp's RestingGroups): the
 ;;; native step-scene lets colliders at rest that push each other sleep as
 ;;; a group, as the World path does, and a run with them asleep equals,
