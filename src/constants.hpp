@@ -102,6 +102,13 @@ constexpr int kMaxJsonDepth = 4 * kMaxGroupDepth;
 // while a forged polygon of 10^6 points is refused as its tileset is read.
 constexpr size_t kMaxShapePoints = 256;
 
+// How far past its tile a collision point may lie, in tiles (semantics
+// §12): a shape drawn a little past its tile's edge collides as its part
+// inside the cell, and one reaching more than a whole tile further is no
+// tile's outline. Keeps the clip's exact integer arithmetic (products of
+// two coordinates) far inside int64 and a ramp's slant points in int32.
+constexpr int64_t kMaxShapeReachTiles = 1;
+
 // Class members a Tiled project file fills into one map's properties (the
 // defaults a map leaves out). A class whose members are classes multiplies
 // at each level, so a hostile project of a few lines could ask for billions;

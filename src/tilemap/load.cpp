@@ -19,9 +19,10 @@ Syntax sniff_syntax(std::string_view text) {
                                                                                  : Syntax::Xml;
 }
 
-// A collision shape that tries to be one and is not (semantics §12) is the
-// whole cell, as before shapes were read, and never silently: a warning
-// names the file, the tileset, the tile and what is wrong.
+// A collision shape with no area (none inside its tile) is nothing, and
+// one that tries to be a shape and is not (semantics §12) is the whole
+// cell, as before shapes were read; neither silently: a warning names the
+// file, the tileset, the tile and what is wrong.
 void warn_bad_shapes(Tilemap& map) {
     for (const Tileset& ts : map.tilesets)
         for (const TileInfo& t : ts.tiles) {
@@ -31,7 +32,7 @@ void warn_bad_shapes(Tilemap& map) {
             map.warnings.push_back(map.path + ": tileset '" + ts.name + "'" +
                                    (ts.source.empty() ? "" : " (" + ts.source + ")") + ", tile " +
                                    std::to_string(t.id) + ": " + part.problem +
-                                   "; its cells are solid whole");
+                                   (part.empty ? "; its cells are not solid" : "; its cells are solid whole"));
         }
 }
 

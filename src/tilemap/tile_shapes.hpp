@@ -14,11 +14,14 @@
 namespace ds {
 
 struct TileSolidPart {
-    bool whole = true;  // the whole cell (today's rule), else `shape`
+    bool whole = true;   // the whole cell (today's rule), else `shape` or nothing
+    bool empty = false;  // no solid at all (whole is false): a shape with no area
     CellShape shape;
-    // Why the objects were not read as a shape although they tried to be
-    // one (a polygon of two points, a point outside the tile): the whole
-    // cell is solid and the loader warns with this text. Empty otherwise.
+    // Why the objects collide as nothing (a rectangle or polygon with no
+    // area, or no area inside the tile) or as the whole cell although they
+    // tried to be a shape (a polygon reaching past the tile that is not
+    // convex, or whose part inside is neither a box nor a ramp): the loader
+    // warns with this text. Empty otherwise.
     std::string problem;
 };
 
@@ -29,7 +32,11 @@ struct TileSolidPart {
 // kFlipHorizontal, then kFlipVertical, as Tiled turns a tile). A rectangle or
 // polygon filling the tile is the whole cell; a polygon that is its bounding
 // box cut by one slanted edge (a triangle or trapezoid with a horizontal and
-// a vertical side) is a ramp; any other polygon is the whole cell.
+// a vertical side) is a ramp; any other polygon is the whole cell. A
+// rectangle or convex polygon reaching past the tile (by at most
+// kMaxShapeReachTiles) is clipped to the tile's square, exactly, and its
+// part inside is read by the same rule; a shape with no area, or none
+// inside the tile, is nothing.
 TileSolidPart tile_solid_part(const std::vector<MapObject>& objects, int tile_w, int tile_h, uint32_t flips);
 
 }  // namespace ds

@@ -162,6 +162,7 @@ bool property_solid(const TileInfo& t) {
 
 CellPart whole_or_shape(const TileSolidPart& part, bool one_way) {
     CellPart c;
+    if (part.empty) return c;
     if (part.whole) {
         c.kind = one_way ? kOneWayCell : kSolidCell;
     } else {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "frame.hpp"
 #include "support.hpp"
 #include "tilemap/tile_shapes.hpp"
 #include "tilemap/tilemap.hpp"
@@ -109,16 +110,58 @@ TEST_CASE("anything else is the whole cell, as before shapes were read") {
     CHECK(whole({line}));
 }
 
-TEST_CASE("bad shapes: the whole cell, with the reason") {
+TEST_CASE("shapes with no area: nothing, with the reason") {
     const ds::TileSolidPart two = ds::tile_solid_part({polygon({{0, 0}, {16, 16}})}, 16, 16, 0);
-    CHECK(two.whole);
+    CHECK_FALSE(two.whole);
+    CHECK(two.empty);
     CHECK(two.problem == "a collision polygon of 2 points (3 at least make a shape)");
-    const ds::TileSolidPart out = ds::tile_solid_part({polygon({{0, 16}, {20, 16}, {20, 0}})}, 16, 16, 0);
-    CHECK(out.whole);
-    CHECK(out.problem == "collision point (20, 16) lies outside the 16x16 tile");
     const ds::TileSolidPart flat = ds::tile_solid_part({rect(0, 4, 16, 0)}, 16, 16, 0);
-    CHECK(flat.whole);
+    CHECK_FALSE(flat.whole);
+    CHECK(flat.empty);
     CHECK(flat.problem == "a collision rectangle of (16, 0) px has no area");
+    const ds::TileSolidPart line = ds::tile_solid_part({polygon({{0, 16}, {8, 8}, {16, 0}})}, 16, 16, 0);
+    CHECK(line.empty);
+    CHECK(line.problem == "a collision polygon whose points lie on one line has no area");
+    // Area only outside the tile, or only along its edge.
+    const ds::TileSolidPart past = ds::tile_solid_part({polygon({{16, 16}, {24, 16}, {24, 0}})}, 16, 16, 0);
+    CHECK(past.empty);
+    CHECK(past.problem == "the part of the collision polygon inside the 16x16 tile has no area");
+    const ds::TileSolidPart beside = ds::tile_solid_part({rect(-8, 0, 8, 16)}, 16, 16, 0);
+    CHECK(beside.empty);
+    CHECK(beside.problem == "the part of the collision rectangle inside the 16x16 tile has no area");
+}
+
+TEST_CASE("shapes reaching past the tile: their part inside the cell, exactly") {
+    // A 45° ramp drawn 8 px past the right and bottom edges: the same line
+    // over the corner of it inside the cell.
+    CHECK(shape_of(polygon({{0, 24}, {24, 24}, {24, 0}})) == ramp(8, 8, 16, 16, Cut::Floor, 0, 24, 24, 0));
+    // A 2:3 slope whose in-cell part ends at y = 16/3: the box is rounded
+    // out to whole px, the cut is the drawn line's.
+    CHECK(shape_of(polygon({{0, 16}, {24, 16}, {24, 0}})) == ramp(0, 5, 16, 16, Cut::Floor, 0, 16, 24, 0));
+    // Flipped horizontally: the line turns with the tile, then is clipped.
+    CHECK(shape_of(polygon({{0, 16}, {24, 16}, {24, 0}}), H) == ramp(0, 5, 16, 16, Cut::Floor, -8, 0, 16, 16));
+    // A ceiling ramp reaching above and left of the tile.
+    CHECK(shape_of(polygon({{-4, -4}, {16, -4}, {-4, 16}})) == ramp(0, 0, 12, 12, Cut::Ceiling, -4, 16, 16, -4));
+    // A box reaching past two sides is the box inside; one covering the
+    // cell is the whole cell.
+    CHECK(shape_of(rect(4, 8, 20, 12)) == CellShape{4, 8, 16, 16});
+    CHECK(whole({rect(-2, -2, 20, 20)}));
+    // A ramp whose slant lies wholly outside the tile: a box inside.
+    CHECK(shape_of(polygon({{0, 16}, {0, 8}, {20, 8}, {28, 16}})) == CellShape{0, 8, 16, 16});
+}
+
+TEST_CASE("shapes reaching past the tile that do not fit: the whole cell, with the reason") {
+    const ds::TileSolidPart star = ds::tile_solid_part(
+        {polygon({{0, 16}, {8, 12}, {20, 16}, {20, 0}})}, 16, 16, 0);  // not convex
+    CHECK(star.whole);
+    CHECK(star.problem == "collision point (20, 16) lies outside the 16x16 tile and the polygon is not convex, so "
+                          "its part inside is not read");
+    const ds::TileSolidPart roof = ds::tile_solid_part({polygon({{-8, 16}, {8, 0}, {24, 16}})}, 16, 16, 0);
+    CHECK(roof.whole);
+    CHECK(roof.problem == "the part of the collision polygon inside the 16x16 tile is neither a box nor a ramp");
+    const ds::TileSolidPart far = ds::tile_solid_part({polygon({{0, 16}, {33, 16}, {33, 0}})}, 16, 16, 0);
+    CHECK(far.whole);
+    CHECK(far.problem == "collision point (33, 16) lies more than a tile outside the 16x16 tile");
 }
 
 const char* kShapedTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
@@ -148,7 +191,7 @@ TEST_CASE("a loaded map: shapes, flips, one-way shapes, properties, warnings") {
     CellShape one_way = ramp(0, 0, 16, 16, Cut::Floor, 0, 16, 16, 0);
     one_way.one_way = true;
     CHECK(*g.shape(2, 0) == one_way);
-    CHECK(g.cell(3, 0) == ds::kSolidCell);  // a bad polygon: the whole cell
+    CHECK(g.cell(3, 0) == ds::kEmptyCell);  // a polygon of 2 points: no area, nothing
     CHECK(*g.shape(0, 1) == CellShape{0, 8, 16, 16});
     CHECK(g.cell(1, 1) == ds::kSolidCell);  // a solid property wins over its shape
     CHECK(g.cell(2, 1) == ds::kSolidCell);
@@ -159,7 +202,61 @@ TEST_CASE("a loaded map: shapes, flips, one-way shapes, properties, warnings") {
     CHECK(m.cell_one_way(2, 0));
     REQUIRE(m.warnings.size() == 1);
     CHECK(m.warnings[0] == "shapes.tmx: tileset 'ramps', tile 4: a collision polygon of 2 points (3 at least "
-                           "make a shape); its cells are solid whole");
+                           "make a shape); its cells are not solid");
+}
+
+// Row 2: a zero-area rectangle (col 0) and a 2:3 floor ramp drawn 8 px
+// past its tile's right edge (col 1); row 3 a solid floor, top at y = 48.
+const char* kReachingTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.10" orientation="orthogonal" width="3" height="4" tilewidth="16" tileheight="16">
+ <tileset firstgid="1" name="past" tilewidth="16" tileheight="16" tilecount="3" columns="3">
+  <tile id="0"><properties><property name="solid" type="bool" value="true"/></properties></tile>
+  <tile id="1"><objectgroup><object id="1" x="0" y="0"><polygon points="0,16 24,16 24,0"/></object></objectgroup></tile>
+  <tile id="2"><objectgroup><object id="1" x="0" y="6" width="16" height="0"/></objectgroup></tile>
+ </tileset>
+ <layer id="1" name="ground" width="3" height="4">
+  <data encoding="csv">0,0,0,
+0,0,0,
+3,2,0,
+1,1,1</data>
+ </layer>
+</map>)";
+
+// Where a falling 8x8 body whose left edge is at x comes to rest.
+ds::Num landed_y(const ds::TileGrid& g, double x) {
+    dst::Body b = dst::box(x, 0, 8, 8);
+    b.gravity = true;
+    for (int f = 0; f < 200 && !b.on_ground; ++f) {
+        ds::World world;
+        world.bodies = {b};
+        world.grid = &g;
+        ds::Frame frame;
+        frame.step(world, ds::FrameOptions{});
+        b = world.bodies[0];
+    }
+    CHECK(b.on_ground);
+    return b.y;
+}
+
+TEST_CASE("a loaded shape reaching past its tile collides as its part inside; one with no area as nothing") {
+    const ds::Tilemap m = ds::parse_tilemap(kReachingTmx, "past.tmx");
+    const ds::TileGrid g = m.solid_grid();
+    CHECK(g.cell(0, 2) == ds::kEmptyCell);
+    REQUIRE(g.shape(1, 2) != nullptr);
+    CHECK(*g.shape(1, 2) == ramp(0, 5, 16, 16, Cut::Floor, 0, 16, 24, 0));
+    CHECK(g.cell(2, 2) == ds::kEmptyCell);
+    // Over [20, 28) the slant's highest point is at x = 28, tile x 12:
+    // 16 − 12·2/3 = 8 below the row's top 32, so the feet rest at 40.
+    const ds::Num on_ramp = landed_y(g, 20);
+    CHECK(on_ramp.exact);
+    CHECK_EXACT(on_ramp, 32);
+    // The 8 px drawn past the edge hold nothing: a body over [34, 42)
+    // falls to the floor, as one over the zero-area rectangle does.
+    CHECK_EXACT(landed_y(g, 34), 40);
+    CHECK_EXACT(landed_y(g, 4), 40);
+    REQUIRE(m.warnings.size() == 1);
+    CHECK(m.warnings[0] == "past.tmx: tileset 'past', tile 2: a collision rectangle of (16, 0) px has no area; "
+                           "its cells are not solid");
 }
 
 TEST_CASE("a NaN in a collision polygon is refused with the file") {

@@ -486,9 +486,15 @@
   "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 1000000 points, more than the 256 a shape may have\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '()
                                        `((1 . (polygon ,@(map (lambda (i) (cons (modulo i 17) 16)) (iota 1000000)))))))))
-(test-equal "make-tilemap: a point outside the tile"
-  "In procedure make-tilemap: shapes: the shape of gid 1: collision point (20, 16) lies outside the 16x16 tile\n"
-  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 16) (20 . 16) (20 . 0))))))))
+(test-equal "make-tilemap: a point more than a tile outside the tile"
+  "In procedure make-tilemap: shapes: the shape of gid 1: collision point (33, 16) lies more than a tile outside the 16x16 tile\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 16) (33 . 16) (33 . 0))))))))
+(test-equal "make-tilemap: a polygon reaching past the tile is its part inside"
+  #(0 5 16 16 floor 0 16 24 0 #f)
+  (tilemap-cell-shape (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 16) (24 . 16) (24 . 0))))) 0 0))
+(test-equal "make-tilemap: a rectangle with no area"
+  "In procedure make-tilemap: shapes: the shape of gid 1: a collision rectangle of (16, 0) px has no area\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (rect 0 4 16 0)))))))
 (test-equal "make-tilemap: NaN in a shape"
   "In procedure make-tilemap: shapes: expected (gid . (rect x y w h)) or (gid . (polygon (x . y) ...)) with finite numbers, got (1 polygon (0 . 0) (1 . +nan.0) (4 . 4))\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . +nan.0) (4 . 4))))))))
