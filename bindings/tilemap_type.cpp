@@ -377,7 +377,8 @@ void register_tilemap_procedures() {
         "map made in memory; cells is a vector (or list) of gids, row-major, flip bits allowed; "
         "one-way-gids are one-way platforms (solid from above only); shapes gives gids a collision "
         "shape in tile px, as a list of (gid . (rect x y w h)) or (gid . (polygon (x . y) ...)), "
-        "read as Tiled's collision editor's (a shaped gid in one-way-gids is a one-way shape).");
+        "read as Tiled's collision editor's (a shaped gid in one-way-gids is a one-way shape; a shape "
+        "drawn past the tile is its part inside it).");
     define_procedure<1, 0, 0, tilemap_p>("tilemap?", "(tilemap? obj): whether obj is a tilemap.");
     define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "(tilemap-width tm): the map's width in cells.");
     define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "(tilemap-height tm): the map's height in cells.");
