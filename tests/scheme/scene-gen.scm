@@ -232,12 +232,25 @@
       (9 . (rect 0 0 ,tw ,(min 4 th)))                                 ; a ledge
       (10 . (polygon (1 . ,(- th 1)) (,hw . ,(- th 1)) (,hw . ,hh)))   ; a small triangle
       (11 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0)))                 ; one-way ramp
-      (12 . (polygon (0 . ,th) (,tw . ,th) (,tw . ,(- th 1)))))))      ; a very shallow ramp
+      (12 . (polygon (0 . ,th) (,tw . ,th) (,tw . ,(- th 1))))         ; a very shallow ramp
+      ;; Drawn past the tile (§12): each collides as its part inside.
+      (13 . (polygon (0 . ,(+ th hh)) (,(+ tw hw) . ,(+ th hh)) (,(+ tw hw) . 0))) ; past right and bottom
+      (14 . (polygon (0 . ,th) (,(+ tw hw) . ,th) (,(+ tw hw) . 0)))   ; past right: slant ends off whole px
+      (15 . (rect ,(- hw) ,(- hh) ,tw ,th))                            ; a box past left and top
+      (16 . (polygon (,(- hw) . ,(- hh)) (,tw . ,(- hh)) (,(- hw) . ,th)))))) ; a ceiling ramp past left and top
 
 (define ramp-one-way-gids '(11))
 
 (define (flip-bits r)
   (+ (if (chance r 1 2) #x80000000 0) (if (chance r 1 5) #x40000000 0) (if (chance r 1 6) #x20000000 0)))
+
+;;; A ramp cell's gid, or in about one in six (a draw from R2, a stream of
+;;; its own, so the maps' other cells stay as they were) a shape drawn past
+;;; its tile (gids 13–16) with the same flips.
+(define (reaching r2 gid)
+  (if (chance r2 1 6)
+      (logior (logand gid #xE0000000) (pick r2 '(13 14 15 16)))
+      gid))
 
 (define (ramp-gid r)
   (+ (wpick r '((30 . 3) (12 . 4) (12 . 5) (6 . 6) (6 . 7) (8 . 8) (6 . 9) (5 . 10) (10 . 11) (5 . 12)))
@@ -248,7 +261,7 @@
 ;;; and a few anywhere. A stream of its own, salted by the seed: the other maps
 ;;; and every draw of the scene stay as they were.
 (define (add-ramps! seed cols rows cells)
-  (let ((r (make-rng seed 7919)))
+  (let ((r (make-rng seed 7919)) (r2 (make-rng seed 7927)))
     (when (chance r 2 5)
       (let ((solid? (lambda (c row) (and (< -1 c cols) (< -1 row rows)
                                          (eqv? 1 (vector-ref cells (+ c (* cols row)))))))
@@ -258,11 +271,11 @@
             (let ((i (+ c (* cols row))))
               (when (eqv? 0 (vector-ref cells i))
                 (cond ((and (solid? c (+ row 1)) (chance r density 10))
-                       (vector-set! cells i (ramp-gid r)))
+                       (vector-set! cells i (reaching r2 (ramp-gid r))))
                       ((and (solid? c (- row 1)) (chance r 1 6))
-                       (vector-set! cells i (logior #x40000000 (ramp-gid r))))
+                       (vector-set! cells i (logior #x40000000 (reaching r2 (ramp-gid r)))))
                       ((chance r 1 40)
-                       (vector-set! cells i (ramp-gid r))))))))))))
+                       (vector-set! cells i (reaching r2 (ramp-gid r)))))))))))))
 
 (define (ramped? spec)
   (and spec (let ((v (list-ref spec 4)))
