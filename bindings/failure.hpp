@@ -7,7 +7,6 @@
 #include <libguile.h>
 
 #include <cstdarg>
-#include <cstdlib>
 #include <exception>
 #include <type_traits>
 
@@ -73,8 +72,12 @@ bool guarded(Failure& f, const char* what, Fn&& fn) noexcept {
     } catch (...) {
         reason = copy_of_handled_reason();
     }
+    // fail_text allocates from the collector, whose out-of-memory error
+    // longjmps: the dynwind frees the reason on that way out too.
+    scm_dynwind_begin(static_cast<scm_t_dynwind_flags>(0));
+    if (reason) scm_dynwind_free(reason);
     fail_text(f, "misc-error", what, reason ? reason : "unknown C++ failure (no memory to copy its text)");
-    std::free(reason);
+    scm_dynwind_end();
     return false;
 }
 
