@@ -290,7 +290,7 @@ void Frame::Impl::step_physics(std::span<Body> bodies, const TileGrid* grid, con
                          std::span<const Body> scene, std::span<FirstWrites> writes,
                          std::span<const uint8_t> asleep) {
     census(bodies, asleep, false);
-    groups_asleep_ = false;
+    groups_asleep_ = groups_forming_ = false;
     run_physics(bodies, grid, opts, scene, writes);
 }
 
@@ -349,9 +349,14 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         step_bodies(bodies, grid, opts, round, writes, active_, false);
         auto t0 = Clock::now();
         if (carrying) carry(bodies, grid, opts, writes);
-        if (groups_asleep_ && reaches_asleep(bodies, grid, opts, writes, round)) {
-            end_contact_log();
-            return true;
+        if (groups_asleep_) {
+            if (reaches_asleep(bodies, grid, opts, writes, round)) {
+                end_contact_log();
+                return true;
+            }
+        } else if (groups_forming_) {
+            RestingGroups& groups = settling_.groups();
+            for (const size_t i : members_) groups.extend(i, bodies[i]);
         }
         const bool reports = contact_bodies_ != 0;
         // Asleep members meet nobody in push-apart (none reaches them) and
@@ -387,7 +392,7 @@ bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, c
                                   std::span<FirstWrites> writes, int round) {
     if (awake_members_.empty()) return false;
     RestingGroups& groups = settling_.groups();
-    if (round == 0) groups.file_asleep(bodies, members_);
+    if (round == 0) groups.file_asleep(members_);
     bool any = false;
     for (const size_t i : awake_members_) {
         groups.extend(i, bodies[i]);
@@ -490,6 +495,7 @@ void Frame::Impl::plan_groups(std::span<const Body> bodies, std::span<const uint
     // the extents bound (settle.hpp's RestingGroups).
     groups_allowed_ = carriers_.empty() && !crushed_ && grouped_ == 0 && contact_bodies_ == 0 &&
                       overlay_log_ == nullptr;
+    groups_forming_ = groups_allowed_;
     RestingGroups& groups = settling_.groups();
     groups.allow(groups_allowed_);
     active_.clear();
@@ -549,7 +555,7 @@ const FrameReport& Frame::Impl::step(World& world, const FrameOptions& opts) {
         plan_sleep(world, opts);  // and the census
     } else {
         settling_.skip();  // step_bodies counts the bodies that can settle, all being awake
-        groups_asleep_ = false;
+        groups_asleep_ = groups_forming_ = false;
         census(world.bodies, {}, true);  // the bodies are the frame-start scene
     }
     // Every per-entity step sees the scene as it was before the tweens ran

@@ -26,7 +26,7 @@ void RestingGroups::begin(size_t n, bool keep) {
     asleep_.assign(groups_, 1);
     wake_.assign(groups_, 0);
     any_wake_ = false;
-    if (extent_.size() != n) extent_.resize(n);
+    if (extent_.size() != n) extent_.resize(n), room_.resize(n);
 }
 
 void RestingGroups::allow(bool allowed) {
@@ -42,13 +42,13 @@ void RestingGroups::forget() {
     any_asleep_ = any_wake_ = false;
 }
 
-void RestingGroups::file_asleep(std::span<const Body> bodies, std::span<const size_t> members) {
+void RestingGroups::file_asleep(std::span<const size_t> members) {
     filed_.clear();
     widest_ = 0;
     for (const size_t i : members)
         if (asleep(i)) {
-            filed_.push_back({Extent::of(bodies[i]), group_[i]});
-            widest_ = std::max(widest_, bodies[i].w.v);
+            filed_.push_back({room_[i], group_[i]});
+            widest_ = std::max(widest_, room_[i].x1 - room_[i].x0);
         }
     std::sort(filed_.begin(), filed_.end(), [](const Filed& a, const Filed& b) { return a.box.x0 < b.box.x0; });
 }
@@ -98,12 +98,14 @@ void RestingGroups::form(std::span<const Body> bodies, std::span<const size_t> m
     for (size_t k = 0; k < m; ++k) {
         const size_t i = members[k];
         const Body& b = bodies[i];
+        // An asleep member's frame would have been its last one again: it
+        // keeps that frame's room.
         const bool slept = asleep(i);
-        if (slept) ext_[k] = Extent::of(b);
-        else {
-            ext_[k] = extent_[i];
-            ext_[k].add(b);
+        if (!slept) {
+            room_[i] = extent_[i];
+            room_[i].add(b);
         }
+        ext_[k] = room_[i];
         fit_[k] = (slept || unchanged[i]) && may_rest(b);
         fits += fit_[k];
         parent_[k] = static_cast<uint32_t>(k);

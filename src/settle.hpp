@@ -166,12 +166,16 @@ struct Extent {
 // (whose steps read bodies by rules the extents do not bound). Asleep
 // members stay supporters for the awake bodies; the push-apart pass and
 // the put-out leave them out. Before each push-apart the frame tests every
-// awake collider's extent so far against the asleep members: one that
-// reaches a member wakes its group. In the first sub-frame the woken group
-// is stepped on the spot (a per-entity step reads only its own body and
-// the frame-start supporters, so that is stepping it with the rest) and
-// tested in turn; in a later one the frame runs again from its start with
-// the group awake.
+// awake collider's extent so far against the asleep members' rooms (each
+// one's extent over the last frame it was stepped, which its skipped frame
+// would repeat): one that reaches a member wakes its group. In the first
+// sub-frame the woken group is stepped on the spot (a per-entity step
+// reads only its own body and the frame-start supporters, so that is
+// stepping it with the rest) and tested in turn; in a later one the frame
+// runs again from its start with the group awake. Every awake collider's
+// extent takes its box before each push-apart, whether or not a group is
+// asleep: a body that sinks into its support and is pushed back ends where
+// it began, but read what it overlapped on the way.
 //
 // Why that is exact. In a frame without those roles, a collider's frame
 // reads: its own fields, the map and the options; the frame-start
@@ -184,8 +188,9 @@ struct Extent {
 // bodies, the map and the options, and it left G as it was. In the next
 // frame G's members enter as left, the map and the options are the same,
 // and — tested before each push-apart, with the frame run again otherwise —
-// nothing outside G reaches G: G's frame would read the same and so leave
-// G as it was again, which is what not stepping it does. The awake bodies
+// nothing outside G reaches the room G's frame would take (the same as the
+// last time, so long as it reads the same): G's frame would read the same
+// and so leave G as it was again, which is what not stepping it does. The awake bodies
 // read of G only its members as supporters (frame-start values, which
 // asleep members keep) and never meet it in push-apart, so they step as
 // they would beside a stepped G. Non-colliders neither push nor hold up.
@@ -214,8 +219,8 @@ public:
     // and grows with each box it takes before a push-apart.
     void start(size_t i, const Body& b) { extent_[i] = Extent::of(b); }
     void extend(size_t i, const Body& b) { extent_[i].add(b); }
-    // Files the asleep members' boxes for reached() (once a frame run).
-    void file_asleep(std::span<const Body> bodies, std::span<const size_t> members);
+    // Files the asleep members' rooms for reached() (once a frame run).
+    void file_asleep(std::span<const size_t> members);
     // Marks to wake each asleep group collider i's extent reaches; returns
     // whether it reached any not marked yet.
     bool reached(size_t i);
@@ -246,8 +251,12 @@ private:
     std::vector<uint8_t> asleep_;  // by group, this frame
     std::vector<uint8_t> wake_;    // by group: reached this frame run
     bool any_asleep_ = false, any_wake_ = false;
-    std::vector<Extent> extent_;   // by body (awake colliders)
-    std::vector<Filed> filed_;     // asleep members, by x0
+    std::vector<Extent> extent_;   // by body (awake colliders), this frame so far
+    // By body (members of groups): the room it took the last frame it was
+    // stepped. An asleep member's skipped frame would take the same room, so
+    // that, not its box, is what an awake collider must not reach.
+    std::vector<Extent> room_;
+    std::vector<Filed> filed_;     // asleep members' rooms, by x0
     double widest_ = 0;            // of filed_
     // form()'s scratch: by member (position in `members`), its extent, its
     // union–find parent, and whether it may rest; members by x0.

@@ -133,6 +133,9 @@ struct Frame::Impl {
     // that are awake, and the stepped bodies as the run started (for
     // running the frame again) with the list they were stepped in.
     bool groups_allowed_ = false, groups_asleep_ = false;
+    // Whether groups form at this frame's end: every awake collider's
+    // extent then takes its box before each push-apart (settle.hpp).
+    bool groups_forming_ = false;
     std::vector<size_t> awake_members_;
     std::vector<uint32_t> rerun_index_;  // with sub-frames (only a later one runs the frame again)
     std::vector<Body> rerun_from_;

@@ -185,4 +185,42 @@ TEST_CASE("a frame with a body that reports contacts lets no group sleep") {
     }
 }
 
+// A skips ground detection, so each frame gravity 10 sinks it 10 px into
+// the immovable I and push-apart puts it back: it ends every frame as it
+// began and sleeps, yet each frame its box reached 10 px under its feet.
+// C rises under A's overhang, 6 px beside I: it must wake A while A's
+// skipped frame would still have met it, not when C nears A's resting box.
+TEST_CASE("a body that sinks into its support and is pushed back keeps the room it took on the way while asleep") {
+    for (const int substeps : {1, 2}) {
+        CAPTURE(substeps);
+        std::vector<Body> bodies;
+        Body c = solid_box(122, 70, 8, 8);
+        c.vy = ds::Num::integer(-1);
+        bodies.push_back(c);
+        bodies.push_back(wall_box(100, 50, 16, 32));
+        Body a = solid_box(84, 42, 48, 8);
+        a.gravity = true;
+        a.skip = ds::kSkipOnSolid;
+        bodies.push_back(a);
+        Twin t(bodies);
+        t.opts = FrameOptions{};
+        t.opts.gravity = ds::Num::integer(10);
+        t.opts.substeps = substeps;
+        std::vector<double> c_y;
+        std::vector<uint64_t> stepped;
+        for (int f = 0; f < 20; ++f) {
+            CHECK(t.step());
+            c_y.push_back(t.world.bodies[0].y.v);
+            stepped.push_back(t.stepped());
+        }
+        CHECK(t.world.bodies[2].y.v == 42);
+        if (substeps == 1) {
+            // C rises until A's sunken box meets it, is pushed back down
+            // and sinks on; A and I sleep while C is out of reach.
+            CHECK(c_y == std::vector<double>{69, 68, 67, 66, 65, 64, 63, 62, 61, 60, 60, 61, 62, 63, 64, 65, 66, 67, 68, 69});
+            CHECK(stepped == std::vector<uint64_t>{3, 3, 1, 1, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 1, 1});
+        }
+    }
+}
+
 }
