@@ -10,6 +10,7 @@
 #include "keys.hpp"
 #include "list_walk.hpp"
 #include "plist.hpp"
+#include "pushed_pairs.hpp"
 
 namespace ds::guile {
 
@@ -152,21 +153,30 @@ void plan_sleep(Batch& batch, const TileGrid* grid, const FrameOptions& opts) {
 }
 
 void note_settled(Batch& batch) {
-    bool all = true;
     batch.unchanged.resize(batch.size());
     for (size_t i = 0; i < batch.size(); ++i) {
-        all &= batch.settling.settle(i, !batch.changed[i], batch.has_tween[i], batch.bodies[i], batch.colliders);
+        batch.settling.settle(i, !batch.changed[i], batch.has_tween[i], batch.bodies[i], batch.colliders);
         // A plist handed back as it came is the same body next frame, which
         // the same frame leaves the same again (settle.hpp's RestingGroups).
         batch.unchanged[i] = !batch.changed[i] && !batch.has_tween[i];
     }
-    batch.all_settled = all;
     batch.frame.form_resting_groups(batch.bodies, batch.unchanged);
     batch.groups_formed = true;
+    // Every entity settled or in a resting group: handed this list again,
+    // no collider is awake to reach a group, so the frame steps nobody.
+    batch.some_grouped = false;
+    batch.all_settled = true;
+    for (size_t i = 0; i < batch.size() && batch.all_settled; ++i)
+        if (!batch.settling.settled(i)) {
+            batch.all_settled = batch.frame.resting_grouped(i);
+            batch.some_grouped = true;
+        }
 }
 
 bool frame_is_noop(const Batch& batch, SCM entities, const TileGrid* grid, const FrameOptions& opts) {
-    return batch.all_settled && scm_is_true(batch.last_result) &&
+    // Groups sleep only while the overlay logs no pairs (Frame::plan_groups).
+    return batch.all_settled && !(batch.some_grouped && pushed_pairs() != nullptr) &&
+           scm_is_true(batch.last_result) &&
            scm_is_eq(SCM_SIMPLE_VECTOR_REF(batch.last_result, 0), entities) &&
            batch.settling.holds(SettleConditions::of(grid, opts));
 }

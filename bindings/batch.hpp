@@ -81,12 +81,12 @@ struct Batch {
     ContactIndex contacts;
     // The list the last whole frame returned (slot 0 of a protected vector,
     // so it cannot be recycled into a look-alike at the same address), and
-    // whether every entity in it had settled: handed that very list again
-    // under the same map (revision) and options, the frame would change
-    // nothing.
+    // whether every entity in it had settled or is in a resting group (and
+    // whether any relies on a group): handed that very list again under the
+    // same map (revision) and options, the frame would change nothing.
     SCM last_result = SCM_BOOL_F;
     size_t last_count = 0;  // its length (the other calls sharing this Batch resize `bodies`)
-    bool all_settled = false;
+    bool all_settled = false, some_grouped = false;
 
     size_t size() const { return bodies.size(); }
     // The list as decoded (valid from decode_batch until encode_batch).

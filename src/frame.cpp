@@ -594,6 +594,7 @@ void Frame::step_physics_resting(std::span<Body> bodies, const TileGrid* grid, c
     impl_->step_physics_resting(bodies, grid, opts, scene, writes, asleep, fit, keep);
 }
 bool Frame::resting_asleep(size_t i) const { return impl_->settling_.groups().asleep(i); }
+bool Frame::resting_grouped(size_t i) const { return impl_->settling_.groups().grouped(i); }
 void Frame::form_resting_groups(std::span<const Body> bodies, std::span<const uint8_t> unchanged) {
     Impl& m = *impl_;
     // As step() does (note_settled): when nothing was stepped the groups

@@ -138,11 +138,13 @@ public:
     // been stepped. After the frame: resting_asleep(i), whether it left
     // body i asleep in a group, and form_resting_groups, given by body
     // whether the frame left each stepped body as it entered with no tween,
-    // forms the groups the next frame may keep.
+    // forms the groups the next frame may keep; then resting_grouped(i),
+    // whether body i is in one of them.
     void step_physics_resting(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                               std::span<const Body> scene, std::span<FirstWrites> writes,
                               std::span<const uint8_t> asleep, std::span<const uint8_t> fit, bool keep);
     bool resting_asleep(size_t i) const;
+    bool resting_grouped(size_t i) const;
     void form_resting_groups(std::span<const Body> bodies, std::span<const uint8_t> unchanged);
 
 private:

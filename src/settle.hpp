@@ -213,6 +213,8 @@ public:
         return g >= 0 && asleep_[static_cast<size_t>(g)];
     }
     bool any_asleep() const { return any_asleep_; }
+    // Whether body i is in a group (formed by the last form()).
+    bool grouped(size_t i) const { return i < group_.size() && group_[i] >= 0; }
     bool any_group() const { return groups_ != 0; }
 
     // Stepping: an awake collider's extent starts at its frame-start box

@@ -121,6 +121,20 @@
          (s4 (step-scene s3 16)))
     (test-equal "an asleep stack's entities come back eq?" (make-list 8 #t)
       (map eq? (scene-entities s3) (scene-entities s4)))
-    (test-eq "… and the list itself" (scene-entities s3) (scene-entities s4))))
+    (test-eq "… and the list itself" (scene-entities s3) (scene-entities s4))
+    ;; Every entity in a resting group and the very list handed back: the
+    ;; frame steps nobody, so it is skipped before decoding.
+    (let ((decode (lambda () (assq 'decode ((@@ (downstroke physics) %frame-stats))))))
+      (test-equal "… a frame of only asleep groups is not even decoded" '(decode 0 8)
+        (list-head (decode) 3))
+      (let* ((s5 (step-scene s4 16))
+             (late (entity-set (car (scene-entities s5)) #:vy 0.0))
+             (s6 (step-scene (update-scene s5 #:entities (cons late (cdr (scene-entities s5)))) 16)))
+        (test-eq "… nor the next" (scene-entities s4) (scene-entities s5))
+        (test-equal "… but one written entity decodes the frame again" '(decode 8 0)
+          (list-head (decode) 3))
+        (test-equal "… which steps as the reference does"
+          (scene-entities (reference-step-scene (update-scene s5 #:entities (cons late (cdr (scene-entities s5)))) 16))
+          (scene-entities s6))))))
 
 (test-end "resting-groups")
