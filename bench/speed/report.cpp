@@ -213,6 +213,13 @@ each body goes through the same motion whatever N is.
   their own: the crowd a resting group can sleep in (settle.hpp), so
   crowd-resting against box2d3 is the sleeping crowd against v3's. (Box2D:
   mapped exactly as crowd.)
+- crowd-visitor :: crowd-resting plus one solid 8×8 box with no gravity
+  flying 2 px/frame along the stacks' tops, 2 px above them, turned round
+  at the walls: a player over a field of crates at rest. The stacks it
+  comes within reach of wake and are stepped; the others sleep.
+  crowd-visitor ÷ crowd-resting is what one mover among asleep groups
+  costs. (Box2D: a dynamic body without gravity, turned round by the bench's
+  bounce update, as on every path.)
 - shots :: a shooter's busy frame: N 4×4 shots (sensors in the category
   shot, colliding with enemy; =#:bounce 1=; no gravity; 2–4 px/frame in
   every direction) in an open walled arena, 2 tiles apart at the start,

@@ -192,6 +192,23 @@ Scene crowd_resting(int n) {
     return s;
 }
 
+// crowd-visitor: crowd-resting with one solid 8×8 box, no gravity, flying
+// 2 px/frame along the stacks' tops 2 px above them (the bounce update
+// turns it round at the walls): a player walking over a field of crates at
+// rest. Every stack it comes within reach of wakes and is stepped, the rest
+// sleep; crowd-visitor ÷ crowd-resting is what one mover among asleep
+// groups costs.
+Scene crowd_visitor(int n) {
+    Scene s = crowd_resting(n);
+    const int64_t floor_y = static_cast<int64_t>(s.rows - 1) * kTile;
+    SceneBody v = box(kTile + 2, floor_y - 8 * 8 - 8 - 2, 8);
+    v.vx = v.rvx = 2;
+    v.solid = true;
+    s.bodies.insert(s.bodies.begin() + n, v);  // a mover: before the pillars
+    s.bounce = true;
+    return s;
+}
+
 // rest: 8×8 gravity boxes (not solid) standing exactly on shelves of tiles,
 // on-ground, vy 0: a frame changes nothing.
 Scene rest(int n) {
@@ -368,7 +385,7 @@ void check_at_rest(const Scene& s) {
 
 const std::vector<std::string>& scene_names() {
     static const std::vector<std::string> names = {"rain", "crowd", "rest", "bullets", "platformer", "ramps",
-                                                   "ramps-flat", "crowd-categories", "crowd-sensors", "crowd-resting",
+                                                   "ramps-flat", "crowd-categories", "crowd-sensors", "crowd-resting", "crowd-visitor",
                                                    "shots", "shots-quiet", "shots-author-first",
                                                    "shots-author-first-quiet", "knobs",
                                                    "knobs-off"};
@@ -393,6 +410,7 @@ Scene make_scene(const std::string& name, int n) {
     else if (name == "crowd-categories") s = crowd_categories(n);
     else if (name == "crowd-sensors") s = crowd_sensors(n);
     else if (name == "crowd-resting") s = crowd_resting(n);
+    else if (name == "crowd-visitor") s = crowd_visitor(n);
     else if (name == "shots") s = shots(n, true, false);
     else if (name == "shots-quiet") s = shots(n, false, false);
     else if (name == "shots-author-first") s = shots(n, true, true);
