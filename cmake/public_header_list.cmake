@@ -7,6 +7,6 @@
 set(DS_PUBLIC_HEADERS
   downstroke.hpp export.hpp
   body.hpp body_fields.def cell_shape.hpp constants.hpp contacts.hpp ease.hpp frame.hpp
-  frame_options.hpp ground.hpp groups.hpp number.hpp settle.hpp shared_cells.hpp
+  extent.hpp frame_options.hpp ground.hpp groups.hpp number.hpp settle.hpp shared_cells.hpp
   state_hash.hpp steps.hpp tile_grid.hpp tiles.hpp tween.hpp
   tilemap/map_bounds.hpp tilemap/map_color.hpp tilemap/object_index.hpp tilemap/tilemap.hpp)

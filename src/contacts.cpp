@@ -196,16 +196,18 @@ uint8_t resolve_pair(Body& a, Body& b, bool a_rests, bool b_rests, const TileGri
 
 namespace {
 
-void all_pairs(std::span<Body> bodies, std::span<const size_t> members,
-               std::span<const uint8_t> resting, PairLog* log, SideLog* sides, const TileGrid* walls) {
+void all_pairs(std::span<Body> bodies, std::span<const size_t> members, std::span<const uint8_t> resting,
+               PairLog* log, SideLog* sides, const TileGrid* walls, Extent* rooms) {
     auto rests = [&](size_t i) { return !resting.empty() && resting[i] != 0; };
     for (size_t a = 0; a < members.size(); ++a)
         for (size_t b = a + 1; b < members.size(); ++b) {
             Body& first = bodies[members[a]];
             Body& second = bodies[members[b]];
             if (!aabb_overlap(first, second)) continue;
-            if (const uint8_t side = meet(first, second, rests(members[a]), rests(members[b]), walls))
+            if (const uint8_t side = meet(first, second, rests(members[a]), rests(members[b]), walls)) {
                 note_pushed(log, sides, members[a], members[b], side);
+                note_rooms(rooms, members[a], first, members[b], second);
+            }
         }
 }
 
@@ -215,8 +217,8 @@ void run_pairs(ContactScratch& scratch, std::span<Body> bodies, std::span<const 
     if (members.size() < 2) return;
     const bool grid = method == PairMethod::Grid ||
                       (method == PairMethod::Auto && members.size() >= kPairGridFrom);
-    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, scratch.sides, scratch.walls);
-    else all_pairs(bodies, members, resting, scratch.log, scratch.sides, scratch.walls);
+    if (grid) scratch.sweep.run(bodies, members, resting, scratch.log, scratch.sides, scratch.walls, scratch.rooms);
+    else all_pairs(bodies, members, resting, scratch.log, scratch.sides, scratch.walls, scratch.rooms);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "extent.hpp"
 #include "export.hpp"
 
 namespace ds {
@@ -76,6 +77,14 @@ inline void note_pushed(PairLog* log, SideLog* sides, size_t a, size_t b, uint8_
     if (!log) return;
     log->emplace_back(static_cast<uint32_t>(a), static_cast<uint32_t>(b));
     if (sides) sides->push_back(side);
+}
+// After a pair met, the rooms by body (when a Frame records them for its
+// resting groups, settle.hpp) take both boxes: a body pushed away and back
+// within the pass still met what lay on the way.
+inline void note_rooms(Extent* rooms, size_t a, const Body& first, size_t b, const Body& second) {
+    if (!rooms) return;
+    rooms[a].add(first);
+    rooms[b].add(second);
 }
 
 // Push-apart writes every contact body's #:touching (semantics §10), named

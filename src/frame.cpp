@@ -321,7 +321,7 @@ void Frame::Impl::run_waking(std::span<Body> bodies, const TileGrid* grid, const
         rerun_index_.clear();
         rerun_from_.clear();
         rerun_writes_.clear();
-        if (groups_asleep_ && opts.substeps > 1) save_for_rerun(bodies, writes, active_);
+        if (groups_asleep_) save_for_rerun(bodies, writes, active_);
         if (!run_physics(bodies, grid, opts, scene, writes)) break;
         wake_reached(bodies, writes, alone);
     }
@@ -363,6 +363,7 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
         // are out of every solid already: the pass and the put-out leave them out.
         const std::span<const size_t> pass = groups_asleep_ ? std::span<const size_t>(awake_members_) : pass_members();
         contacts_.walls = opts.push == PushRule::Clipped ? grid : nullptr;
+        contacts_.rooms = groups_forming_ ? settling_.groups().extents() : nullptr;
         const bool put_out = contacts_.walls && !members_.empty();
         if (pass.size() >= 2 || reports || put_out)
             logged_bulk(bodies, writes, kFieldX | kFieldY | kFieldVx | kFieldVy | (reports ? kFieldTouching : 0u),
@@ -372,6 +373,10 @@ bool Frame::Impl::run_physics(std::span<Body> bodies, const TileGrid* grid, cons
                                 put_members_out(bs, *grid, groups_asleep_ ? pass : std::span<const size_t>(members_));
                             if (reports) mark_touching(bs);
                         });
+        if (groups_forming_ && took_room_after_pass(bodies, pass)) {
+            end_contact_log();
+            return true;
+        }
         if (carrying) crush(bodies, grid, opts, writes);
         const auto solid = static_cast<uint64_t>(groups_asleep_ ? pass.size() : supporters_.size());
         StepStats& push = stats_.step[kStepEntityCollisions];
@@ -409,7 +414,7 @@ bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, c
             if (groups.asleep(i) && groups.marked(i)) woken_.push_back(static_cast<uint32_t>(i));
         groups.wake_marked();
         for (const uint32_t i : woken_) groups.start(i, bodies[i]);
-        if (opts.substeps > 1) save_for_rerun(bodies, writes, woken_);
+        save_for_rerun(bodies, writes, woken_);
         step_bodies(bodies, grid, opts, round, writes, woken_, true);
         any = false;
         for (const uint32_t i : woken_) {
@@ -420,6 +425,21 @@ bool Frame::Impl::reaches_asleep(std::span<Body> bodies, const TileGrid* grid, c
         merge_into(active_, woken_);
         groups_asleep_ = groups.any_asleep();
         note_awake_members();
+    }
+    return any;
+}
+
+bool Frame::Impl::took_room_after_pass(std::span<const Body> bodies, std::span<const size_t> pass) {
+    // Each awake collider's extent takes its box after the pass and the
+    // put-out (where the next sub-frame, or the frame's end, finds it).
+    // While groups sleep, one the pass carried within reach of an asleep
+    // member means the group's frame would have met it: the frame runs again
+    // from its start with that group awake.
+    RestingGroups& groups = settling_.groups();
+    bool any = false;
+    for (const size_t i : pass) {
+        groups.extend(i, bodies[i]);
+        if (groups_asleep_) any |= groups.reached(i);
     }
     return any;
 }

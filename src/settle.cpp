@@ -58,10 +58,10 @@ bool RestingGroups::reached(size_t i) {
     // the widest box and the reach before it, and no further right than
     // the reach after it.
     const Extent& e = extent_[i];
-    auto it = std::lower_bound(filed_.begin(), filed_.end(), e.x0 - Extent::kReach - widest_,
+    auto it = std::lower_bound(filed_.begin(), filed_.end(), e.x0 - Extent::kReachX - widest_,
                                [](const Filed& f, double x) { return f.box.x0 < x; });
     bool any = false;
-    for (; it != filed_.end() && it->box.x0 <= e.x1 + Extent::kReach; ++it)
+    for (; it != filed_.end() && it->box.x0 <= e.x1 + Extent::kReachX; ++it)
         if (const auto g = static_cast<size_t>(it->group); asleep_[g] && !wake_[g] && e.reaches(it->box)) {
             wake_[g] = 1;
             any = true;
@@ -122,7 +122,7 @@ void RestingGroups::form(std::span<const Body> bodies, std::span<const size_t> m
     // its reach) is tested against it.
     for (size_t a = 0; a < m; ++a) {
         const Extent& e = ext_[order_[a]];
-        for (size_t b = a + 1; b < m && ext_[order_[b]].x0 <= e.x1 + Extent::kReach; ++b)
+        for (size_t b = a + 1; b < m && ext_[order_[b]].x0 <= e.x1 + Extent::kReachX; ++b)
             if (e.reaches(ext_[order_[b]])) {
                 const size_t ra = find(order_[a]), rb = find(order_[b]);
                 if (ra != rb) parent_[std::max(ra, rb)] = static_cast<uint32_t>(std::min(ra, rb));

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "extent.hpp"
 #include "constants.hpp"
 #include "frame_options.hpp"
 #include "tile_grid.hpp"
@@ -136,64 +137,46 @@ private:
     std::vector<uint8_t> asleep_;   // by body, this frame (between propose and confirm: two bits)
 };
 
-// The room a body took up over a frame: the hull of its boxes at the
-// frame's start, before each push-apart, and at its end.
-struct Extent {
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    static Extent of(const Body& b) { return {b.x.v, b.y.v, b.x.v + b.w.v, b.y.v + b.h.v}; }
-    void add(const Body& b) {
-        x0 = std::min(x0, b.x.v), y0 = std::min(y0, b.y.v);
-        x1 = std::max(x1, b.x.v + b.w.v), y1 = std::max(y1, b.y.v + b.h.v);
-    }
-    // Whether two bodies this far apart may read each other in a frame:
-    // ground detection reads a supporter up to kOnSolidTolerance below a
-    // body's feet, push-apart and the resting check read only bodies that
-    // overlap or touch. One pixel more keeps the test clear of rounding.
-    static constexpr double kReach = kOnSolidTolerance + 1;
-    bool reaches(const Extent& o) const {
-        return x0 - kReach <= o.x1 && o.x0 <= x1 + kReach && y0 - kReach <= o.y1 && o.y0 <= y1 + kReach;
-    }
-};
-
 // Resting groups of colliders (both paths' sleeping for bodies that
 // push each other). A frame's resting group is a set of colliders that
-// may_rest, that the frame left exactly as they entered, and whose extents
-// (Extent) reach no collider outside the set: the components, under
-// Extent::reaches, of every collider, kept when every body of one is such
-// a body. A group is asleep in the next frame when every member enters as
-// left with no tween, under the same conditions, in a frame with no
-// carriers, crushed bodies, group followers, contact reports or sensors
-// (whose steps read bodies by rules the extents do not bound). Asleep
-// members stay supporters for the awake bodies; the push-apart pass and
-// the put-out leave them out. Before each push-apart the frame tests every
-// awake collider's extent so far against the asleep members' rooms (each
-// one's extent over the last frame it was stepped, which its skipped frame
-// would repeat): one that reaches a member wakes its group. In the first
-// sub-frame the woken group is stepped on the spot (a per-entity step
-// reads only its own body and the frame-start supporters, so that is
-// stepping it with the rest) and tested in turn; in a later one the frame
-// runs again from its start with the group awake. Every awake collider's
-// extent takes its box before each push-apart, whether or not a group is
-// asleep: a body that sinks into its support and is pushed back ends where
-// it began, but read what it overlapped on the way.
+// may_rest, that the frame left exactly as they entered, and whose rooms
+// (Extent: every box a member took in the frame, its pass included) reach
+// no collider's outside the set: the components, under Extent::reaches,
+// of every collider, kept when every body of one is such a body. A group is
+// asleep in the next frame when every member enters as left with no tween,
+// under the same conditions, in a frame with no carriers, crushed bodies,
+// group followers, contact reports or sensors (whose steps read bodies by
+// rules the rooms do not bound). Asleep members stay supporters for the
+// awake bodies; the push-apart pass and the put-out leave them out. Before
+// each push-apart the frame tests every awake collider's room so far
+// against the asleep members' rooms (each one's room over the last frame it
+// was stepped, which its skipped frame would repeat): one that reaches a
+// member wakes its group. In the first sub-frame the woken group is
+// stepped on the spot (a per-entity step reads only its own body and the
+// frame-start supporters, so that is stepping it with the rest) and tested
+// in turn; in a later one the frame runs again from its start with the
+// group awake. After each push-apart the test is made again, the rooms
+// now holding every box the pass gave a body, and a group reached then
+// makes the frame run again from its start with it awake.
 //
 // Why that is exact. In a frame without those roles, a collider's frame
-// reads: its own fields, the map and the options; the frame-start
-// supporters its ground detection and resting check find (within
-// kOnSolidTolerance of its feet, touching); in push-apart, the colliders
-// its box overlaps as the pass goes, each as earlier pairs left it; and
-// the put-out reads only itself and the map. Every one of those bodies is
-// within Extent::kReach of it at some point of the frame. When group G
-// formed, no collider outside G reached it, so G's frame read only G's own
-// bodies, the map and the options, and it left G as it was. In the next
-// frame G's members enter as left, the map and the options are the same,
-// and — tested before each push-apart, with the frame run again otherwise —
-// nothing outside G reaches the room G's frame would take (the same as the
-// last time, so long as it reads the same): G's frame would read the same
-// and so leave G as it was again, which is what not stepping it does. The awake bodies
-// read of G only its members as supporters (frame-start values, which
-// asleep members keep) and never meet it in push-apart, so they step as
-// they would beside a stepped G. Non-colliders neither push nor hold up.
+// reads: its own fields, the map and the options; the (sub-)frame-start
+// supporters its ground detection and resting check find (overlapping it
+// along x, within kOnSolidTolerance of its feet); in push-apart, the
+// colliders its box overlaps as the pass goes, each as earlier pairs left
+// it; and the put-out reads only itself and the map. Each of those reads
+// is between two boxes the two rooms hold, so the rooms reach. When group
+// G formed, no collider outside G reached it, so G's frame read only G's
+// own bodies, the map and the options, and it left G as it was. In the
+// next frame G's members enter as left, the map and the options are the
+// same, and — tested before and after each push-apart, with the frame run
+// again otherwise — nothing outside G reaches the room G's frame would
+// take (the same as the last time, so long as it reads the same): G's
+// frame would read the same and so leave G as it was again, which is what
+// not stepping it does. The awake bodies read of G only its members as
+// supporters (frame-start values, which asleep members keep) and never
+// meet it in push-apart, so they step as they would beside a stepped G.
+// Non-colliders neither push nor hold up.
 class DOWNSTROKE_API RestingGroups {
 public:
     // A frame of n bodies: the last frame's groups may sleep (`keep`), or
@@ -221,6 +204,8 @@ public:
     // and grows with each box it takes before a push-apart.
     void start(size_t i, const Body& b) { extent_[i] = Extent::of(b); }
     void extend(size_t i, const Body& b) { extent_[i].add(b); }
+    // The extents by body, for push-apart to extend (ContactScratch::rooms).
+    Extent* extents() { return extent_.data(); }
     // Files the asleep members' rooms for reached() (once a frame run).
     void file_asleep(std::span<const size_t> members);
     // Marks to wake each asleep group collider i's extent reaches; returns

@@ -82,7 +82,7 @@ void PairSweep::query(const CellBox& r, uint32_t after, std::span<const size_t> 
 
 void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
                     std::span<const uint8_t> resting, PairLog* log, SideLog* sides,
-                    const TileGrid* walls) {
+                    const TileGrid* walls, Extent* rooms) {
     auto rests = [&](uint32_t m) { return !resting.empty() && resting[members[m]] != 0; };
     const auto n = static_cast<uint32_t>(members.size());
     inv_cell_ = inverse_cell_size(n, sizes_, [&](size_t m) {
@@ -113,6 +113,7 @@ void PairSweep::run(std::span<Body> bodies, std::span<const size_t> members,
             const uint8_t side = meet(first, second, rests(a), rests(b), walls);
             if (side == 0) continue;
             note_pushed(log, sides, members[a], members[b], side);
+            note_rooms(rooms, members[a], first, members[b], second);
             // Re-file b only when it changed cells (sizes never change, so
             // a small body stays small).
             if ((second.x.v != bx || second.y.v != by) && !is_big_[b]) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "extent.hpp"
 #include "cell_hash.hpp"
 
 namespace ds {
@@ -24,10 +25,13 @@ public:
     // `resting`: empty, or per body whether it rested (see resolve_pair).
     // `log`, when given, receives each pair resolved (contacts.hpp's PairLog),
     // and `sides` (if given too) the side of its first body (note_pushed).
+    // `rooms`, when given (by body), takes both bodies' boxes after each
+    // pair they meet in (note_rooms).
     void run(std::span<Body> bodies, std::span<const size_t> members,
              std::span<const uint8_t> resting = {},
              std::vector<std::pair<uint32_t, uint32_t>>* log = nullptr,
-             std::vector<uint8_t>* sides = nullptr, const TileGrid* walls = nullptr);
+             std::vector<uint8_t>* sides = nullptr, const TileGrid* walls = nullptr,
+             Extent* rooms = nullptr);
 
 private:
     CellBox cells(const Body& b) const;

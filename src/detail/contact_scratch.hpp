@@ -26,6 +26,10 @@ struct ContactScratch {
     // The map whose solid cells cut pushes short (PushRule::Clipped, §4), or
     // none under the seed's rule.
     const TileGrid* walls = nullptr;
+    // By body, when set: each body's room, taking its box after every pair
+    // it meets (note_rooms). A Frame sets it while resting groups may form
+    // or sleep.
+    Extent* rooms = nullptr;
 };
 
 // One pass over the pairs (i, j), i < j, in list order; each pair sees what

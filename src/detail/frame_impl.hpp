@@ -49,11 +49,12 @@ struct Frame::Impl {
     bool run_physics(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                      std::span<const Body> scene, std::span<FirstWrites> writes);
     // Resting groups (settle.hpp): the awake colliders' extents so far
-    // against the asleep members, before a push-apart; the awake members;
-    // and the frame put back to its start with the reached groups awake
-    // (after a later sub-frame reached them).
+    // against the asleep members, before a push-apart and after it; the
+    // awake members; and the frame put back to its start with the reached
+    // groups awake (after a later sub-frame, or a pass, reached them).
     bool reaches_asleep(std::span<Body> bodies, const TileGrid* grid, const FrameOptions& opts,
                         std::span<FirstWrites> writes, int round);
+    bool took_room_after_pass(std::span<const Body> bodies, std::span<const size_t> pass);
     void merge_into(std::vector<uint32_t>& list, std::span<const uint32_t> more);
     void save_for_rerun(std::span<const Body> bodies, std::span<const FirstWrites> writes,
                         std::span<const uint32_t> which);

@@ -2,6 +2,7 @@
 // Resting groups (settle.hpp): colliders at rest that push each other sleep
 // as a group on the World path, and a run with them asleep equals, body for
 // body and frame for frame, the same run with every body stepped.
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -221,6 +222,55 @@ TEST_CASE("a body that sinks into its support and is pushed back keeps the room 
             CHECK(stepped == std::vector<uint64_t>{3, 3, 1, 1, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 1, 1});
         }
     }
+}
+
+TEST_CASE("stacks 1 px apart are groups of their own: a box dropped on one wakes only that one") {
+    std::vector<Body> bodies;
+    for (int k = 0; k < 4; ++k) stack(bodies, 32 + 9 * k);  // 1 px between neighbours, as the crowd bench
+    Body drop = solid_box(32 + 9, 16, 8, 8);                // onto the second stack
+    drop.gravity = true;
+    bodies.push_back(drop);
+    Twin t(bodies);
+    std::vector<uint64_t> stepped;
+    for (int frame = 1; frame <= 40; ++frame) {
+        INFO("frame " << frame);
+        REQUIRE(t.step());
+        stepped.push_back(t.stepped());
+    }
+    // Frames 1-2 step all 33; then the falling box alone, then it and the
+    // second stack (8 + 1), never the stacks beside it; then nothing.
+    CHECK(std::vector<uint64_t>(stepped.begin(), stepped.begin() + 2) == std::vector<uint64_t>{33, 33});
+    CHECK(*std::max_element(stepped.begin() + 2, stepped.end()) == 9);
+    CHECK(stepped.back() == 0);
+    CHECK(t.world.bodies[32].y.v == kFloor - 72);
+}
+
+// D slides into C, and their push carries C 1 px into the asleep stack S
+// beside it: only the pass brings C within reach of S, which must then be
+// stepped too (the frame runs again with S awake), as pairs after (C, D)
+// in list order meet S.
+TEST_CASE("a push that carries a body into an asleep group's room makes the frame run again with it awake") {
+    std::vector<Body> bodies;
+    Body c = solid_box(110, kFloor - 8, 8, 8);
+    c.gravity = true;
+    bodies.push_back(c);
+    Body d = solid_box(160, kFloor - 8, 8, 8);
+    d.gravity = true;
+    d.vx = ds::Num::integer(-8);
+    bodies.push_back(d);
+    stack(bodies, 100);
+    Twin t(bodies);
+    std::vector<uint64_t> stepped;
+    for (int frame = 1; frame <= 12; ++frame) {
+        INFO("frame " << frame);
+        REQUIRE(t.step());
+        stepped.push_back(t.stepped());
+    }
+    // S (8) and C sleep from frame 3 while D slides alone; at frame 6 D
+    // reaches C, which wakes on the spot, and the pass carries C into S's
+    // room: the frame runs again with all 10 awake.
+    CHECK(std::vector<uint64_t>(stepped.begin(), stepped.begin() + 6) == std::vector<uint64_t>{10, 10, 1, 1, 1, 10});
+    CHECK(t.plain[0].x.v < 108);  // C ended inside S's column: it met S
 }
 
 }
