@@ -31,7 +31,8 @@
     ((downstroke render) . "Drawing, sounds and how the host shows frames (headless, a window, captures).")
     ((downstroke hash) . "A fingerprint of a scene's physical state, for checking that two runs are the same.")
     ((downstroke scene-file) . "A whole scene in one readable file: saving a game, loading it, carrying a scene in a bug report.")
-    ((downstroke history) . "Bounded records of a running game: a ring of the last frames, and a log of the newest items.")))
+    ((downstroke history) . "Bounded records of a running game: a ring of the last frames, and a log of the newest items.")
+    ((downstroke live) . "Live editing: files a running game watches, and maps reloaded when theirs change on disk.")))
 
 (define user-modules (map car module-summaries))
 
@@ -103,7 +104,9 @@
     ;; (downstroke engine)
     (game-paused? . "Whether GAME is paused (game-paused-set!): its ticks then read input and call the paused: hook and render:, and step nothing.")
     ;; (downstroke history)
-    (frame-ring? . "Whether OBJ is a frame ring (made by make-frame-ring).")))
+    (frame-ring? . "Whether OBJ is a frame ring (made by make-frame-ring).")
+    ;; (downstroke live)
+    (watch-poll-interval . "A parameter, 1 by default: the least time, in seconds, between two looks (a stat of each) at a game's watched files (watch-file!); the frames between look at none. 0 looks in every frame, as tests do.")))
 
 (define (export-names module-name)
   "The names MODULE-NAME (a list such as (downstroke world)) exports, sorted."

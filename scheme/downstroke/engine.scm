@@ -148,7 +148,7 @@ RENDER go on, nothing steps."
                             history (make-bounded-log)
                             display #f empty-input-log stack-limit (and pause-when-unfocused? #t)
                             (and interpolate? #t) (and strict? #t) (make-hash-table) bindings
-                            #f paused 0 (make-bounded-log))))
+                            #f paused 0 (make-bounded-log) #f)))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
       ;; Slips decoded before this game was made (a step-scene of its own)
       ;; are not this game's.

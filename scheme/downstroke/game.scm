@@ -24,6 +24,7 @@
             game-pause-when-unfocused? game-interpolate? game-strict? game-slips-warned
             game-bindings game-paused? %game-paused-set! game-paused-update
             game-paused-ticks game-paused-ticks-set! game-pause-marks game-pause-marks-set!
+            game-live game-live-set!
             check-game check-scene-or-false check-hook-or-false
             check-collision-mode check-push-rule check-substeps
             game-scene-set! game-update-set! game-engine-update-set!
@@ -35,7 +36,7 @@
               collision-mode push-rule substeps resting-contacts
               input input-script script-cursor frame sounds music history-size history
               display debug-draw input-log stack-limit pause-when-unfocused interpolate
-              strict slips-warned bindings paused paused-update paused-ticks pause-marks)
+              strict slips-warned bindings paused paused-update paused-ticks pause-marks live)
   game?
   (title game-title)
   (width game-width)
@@ -72,7 +73,10 @@
   (paused-ticks game-paused-ticks game-paused-ticks-set!)
   ;; A bounded log of (frame . the ticks paused before the pause at that
   ;; frame), newest first: where a rewind finds the input clock of its frame.
-  (pause-marks game-pause-marks game-pause-marks-set!))
+  (pause-marks game-pause-marks game-pause-marks-set!)
+  ;; What (downstroke live) keeps for the game: the files it watches, whether
+  ;; its maps are watched, the last reload's error; #f until it watches one.
+  (live game-live game-live-set!))
 
 ;;; Refused where they are passed, not frames later inside the loop, where
 ;;; the error would name struct-vtable or camera-follow!.

@@ -15,6 +15,7 @@
   #:use-module ((downstroke frame) #:select (step-game!))
   #:use-module ((downstroke frame-hooks) #:select (run-frame-hooks! frame-pacing))
   #:use-module ((downstroke hook-errors) #:select (step-or-pause!))
+  #:use-module ((downstroke live) #:select (poll-watched-files!))
   #:use-module ((downstroke drawing) #:select (draw-game!))
   #:use-module (downstroke loop)
   #:export (run-headless! warn-if-endless! headless-end headless-frame-limit game-served?))
@@ -75,6 +76,7 @@
      #:tick tick #:period tick
      #:poll (lambda ()
               (run-frame-hooks! game)
+              (poll-watched-files! game)
               (let ((held (scripted-held! game (input-clock game))))
                 (and (or (not frames) (< (game-frame game) frames)) (not (memq 'quit held))
                      (not (and (game-paused? game) pause-budget (>= paused pause-budget)))
