@@ -301,6 +301,48 @@ SCM tilemap_warnings(SCM m) {
 
 SCM tilemap_objects(SCM m) { return map_accessor(m, "tilemap-objects", all_objects); }
 
+// FILE (a path, or #f for none) consed onto FILES.
+SCM with_file(SCM file, SCM files) { return scm_is_true(file) ? scm_cons(file, files) : files; }
+
+// Every file a loaded map was read from, consed onto `files` (repeats
+// included: the caller drops them), so that live
+// editing can watch them: the map, its tileset files, the templates its
+// objects (and its tiles' collision objects) came from, and the pictures of
+// its tilesets, their tiles and its image layers, each as the loader
+// opened it. Built of SCM strings only, with no C++ container to outlive
+// a failed allocation.
+SCM template_files(const std::vector<MapObject>& objects, SCM files) {
+    for (const MapObject& o : objects)
+        if (!o.template_path.empty()) files = scm_cons(text(o.template_path), files);
+    return files;
+}
+
+SCM layer_image_files(const Tilemap& map, const std::vector<LayerInfo>& layers, SCM files) {
+    for (const LayerInfo& l : layers) {
+        if (l.kind == LayerKind::Image) files = with_file(resolved(map_dir(map), l.image), files);
+        if (l.kind == LayerKind::Group) files = layer_image_files(map, l.children, files);
+    }
+    return files;
+}
+
+SCM tilemap_files(SCM m) {
+    return map_accessor(m, "%tilemap-files", [](const Tilemap& t) {
+        SCM files = SCM_EOL;
+        if (!t.path.empty()) files = scm_cons(text(t.path), files);
+        for (const Tileset& ts : t.tilesets) {
+            files = with_file(resolved(map_dir(t), ts.source), files);
+            files = with_file(resolved(ts.image_dir, ts.image), files);
+            for (const TileInfo& tile : ts.tiles) {
+                files = with_file(resolved(ts.image_dir, tile.image), files);
+                files = template_files(tile.objects, files);
+            }
+        }
+        for (const ObjectLayer& layer : t.object_layers) files = template_files(layer.objects, files);
+        files = layer_image_files(t, t.layer_tree, files);
+        return scm_reverse_x(files, SCM_EOL);
+    });
+}
+
 }  // namespace
 
 SCM tiled_number(double v) {
@@ -357,6 +399,8 @@ void register_tilemap_info_procedures() {
         "#:columns, #:margin, #:spacing, #:image (or #f for an image collection), #:image-width, "
         "#:image-height, #:tile-offset (x . y), #:properties and #:tiles (the tiles carrying "
         "something: #:id #:type #:properties, and #:collision? #:image #:animation).");
+    define_procedure<1, 0, 0, tilemap_files>("%tilemap-files",
+        WrapperDoc{"(tm)", "load-tilemap", "(downstroke tilemap)"});
     define_procedure<1, 0, 0, tilemap_warnings>("tilemap-warnings",
         "(tilemap-warnings tm): what load-tilemap warned about (gids beyond every tileset), as "
         "a list of strings naming the file, layer and cell.");

@@ -17,6 +17,25 @@
 ;; what scene-save writes to name it. Weak: a map no one holds is dropped.
 (define %tilemap-source (make-object-property))
 
+;; A loaded map → (loaded . files): the map as load-tilemap returned it (#f
+;; for the map itself, which a weak table's value must not hold), before
+;; the game's edits, and the absolute names of the files it was read from.
+;; Kept by its edits, as the source is: (downstroke live) watches the files,
+;; and re-applies the edits (the cells that differ from LOADED) to the map
+;; read again.
+(define %tilemap-origin (make-object-property))
+
+(define (absolute path)
+  (if (absolute-file-name? path) path (string-append (getcwd) "/" path)))
+
+(define (read-files tm project)
+  ;; The map's files, its project's too, each once, in the order read.
+  (let loop ((files (append (%tilemap-files tm) (if (string? project) (list project) '())))
+             (seen '()))
+    (cond ((null? files) (reverse seen))
+          ((member (absolute (car files)) seen) (loop (cdr files) seen))
+          (else (loop (cdr files) (cons (absolute (car files)) seen))))))
+
 (define* (load-tilemap path #:key (solid-gids '()) (max-cells #f) (max-bytes #f)
                        (strict? #f) (project #f))
   "Load a Tiled map (.tmx or .tmj) and the tilesets (.tsx, .tsj) and
@@ -30,9 +49,12 @@ kept in (tilemap-warnings map), and so does a picture it names (a tileset's,
 a tile's, an image layer's) that cannot be opened; STRICT? #t makes each an
 error instead.
 PROJECT names a Tiled project file (.tiled-project) whose class types fill in
-the members a class property leaves at their defaults."
+the members a class property leaves at their defaults. The map remembers the
+files it was read from, so that a game watching its maps (game-watch-maps!)
+reloads it when one of them changes."
   (let ((tm (%load-tilemap path solid-gids max-cells max-bytes strict? project)))
     (set! (%tilemap-source tm) (list path solid-gids max-cells max-bytes strict? project))
+    (set! (%tilemap-origin tm) (cons #f (read-files tm project)))
     (for-each (lambda (warning)
                 (display "load-tilemap: warning: " (current-warning-port))
                 (display warning (current-warning-port))
@@ -45,6 +67,8 @@ the members a class property leaves at their defaults."
 of tile layer number layer (0) holds gid (0 clears it), solidity and all; tm
 is unchanged."
   (let ((edited (apply %tilemap-set-tile tm col row gid layer))
-        (source (%tilemap-source tm)))
+        (source (%tilemap-source tm))
+        (origin (%tilemap-origin tm)))
     (when source (set! (%tilemap-source edited) source))
+    (when origin (set! (%tilemap-origin edited) (cons (or (car origin) tm) (cdr origin))))
     edited))
