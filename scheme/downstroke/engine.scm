@@ -33,6 +33,7 @@
   #:use-module (downstroke costs)
   #:use-module (downstroke script-arguments)
   #:use-module (downstroke hook-errors)
+  #:use-module ((downstroke live) #:select (game-watch-maps! watch-default))
   #:use-module (downstroke frame-hooks)
   #:use-module (downstroke drawing)
   #:use-module (downstroke misspelt-keys)
@@ -150,6 +151,7 @@ RENDER go on, nothing steps."
                             (and interpolate? #t) (and strict? #t) (make-hash-table) bindings
                             #f paused 0 (make-bounded-log) #f)))
       (when (debug-draw-default) (game-debug-draw-set! game #t))
+      (when (watch-default) (game-watch-maps! game #t))
       ;; Slips decoded before this game was made (a step-scene of its own)
       ;; are not this game's.
       (%take-key-slips)

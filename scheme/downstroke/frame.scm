@@ -72,7 +72,11 @@ has a tilemap — never past the map's right or bottom edge."
   (let ((render (game-render game))
         (display (game-display game)))
     (when display (%display-clear-commands! display))
-    (when render (call-bounded game "render:" (lambda () (render game))))))
+    (when render (call-bounded game "render:" (lambda () (render game))))
+    ;; Over what the game drew: a map reload's error, while it stands.
+    (draw-reload-error! game)))
+
+(define draw-reload-error! (@@ (downstroke live) draw-reload-error!))
 
 (define (pause-tick! game dt held)
   ;; A paused tick: input, the paused: hook, render; nothing steps.
