@@ -438,6 +438,11 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
                       step, alpha (the share of a step drawn past it) and
                       the steps dropped after stalls so far
   --debug             start with the debug overlay on (F1 toggles it in a window)
+  --watch             reload a running game's map when it or a file it reads
+                      (a tileset, a template, a picture) changes on disk:
+                      on by default with --window, --repl-server and
+                      --repl-port
+  --no-watch          do not
   --capture DIR       headless, and draw every frame off-screen into
                       DIR/NNNNNN.png (NNNNNN: the frame number)
   --repl-server PATH  serve a REPL into the game on a Unix socket (mode 0600)
@@ -484,6 +489,8 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
           ((string=? (car args) "--no-auto-compile") (loop (cdr args) (acons 'no-auto-compile #t opts)))
           ((string=? (car args) "--debug") (loop (cdr args) (acons 'debug #t opts)))
           ((string=? (car args) "--fullscreen") (loop (cdr args) (acons 'fullscreen #t opts)))
+          ((string=? (car args) "--watch") (loop (cdr args) (acons 'watch #t opts)))
+          ((string=? (car args) "--no-watch") (loop (cdr args) (acons 'no-watch #t opts)))
           ((string=? (car args) "--frame-log") (with-value 'frame-log string?))
           ((string=? (car args) "--record") (with-value 'record string?))
           ((string=? (car args) "--scale")
@@ -566,6 +573,20 @@ DOWNSTROKE_BACKTRACE=full prints the whole backtrace instead.
                       #t)))))
           (else #t))))
 
+(define (prepare-watch! opts)
+  ;; Whether games watch their files (watch-default): asked for, or by
+  ;; default where someone is at the game to edit it, a window or a REPL;
+  ;; #f when both --watch and --no-watch are given (said on the error port).
+  (cond ((and (assq-ref opts 'watch) (assq-ref opts 'no-watch))
+         (display "downstroke: --watch and --no-watch exclude each other\n" (current-error-port))
+         #f)
+        (else
+         ((@ (downstroke live) watch-default)
+          (and (not (assq-ref opts 'no-watch))
+               (any (lambda (o) (assq-ref opts o)) '(watch window repl-server repl-port))
+               #t))
+         #t)))
+
 (define* (main args #:optional (version "unknown") (templates "templates"))
   "ARGS: the command line after the program's name (see usage-text);
 VERSION: the project's, for --version; TEMPLATES: the folder of the
@@ -577,6 +598,7 @@ templates `downstroke new' copies. Returns the exit status."
           ((assq-ref (car parsed) 'help) (display (usage-text)) 0)
           ((assq-ref (car parsed) 'version) (format #t "downstroke ~a~%" version) 0)
           ((not (prepare-display! (car parsed))) 2)
+          ((not (prepare-watch! (car parsed))) 2)
           (else
            (let ((opts (car parsed)) (rest (cdr parsed)))
              (cond ((and (or (assq-ref opts 'frames) (assq-ref opts 'timeout))

@@ -2,7 +2,8 @@
 ;;; Maps reloaded under a running headless game (game-watch-maps!,
 ;;; reload-map!): the next frame's scene, the entities, the history, the
 ;;; game's tile edits, and a map saved broken.
-(use-modules (srfi srfi-64) (downstroke) (downstroke live) (srfi srfi-1))
+(use-modules (srfi srfi-64) (downstroke) (downstroke live) (srfi srfi-1)
+             (ice-9 popen) (ice-9 rdelim) (ice-9 textual-ports))
 
 (load "support.scm")
 
@@ -166,6 +167,77 @@
 (test-equal "watch-default" '(#t #f)
   (list (parameterize ((watch-default #t)) (game-watching-maps? (make-game)))
         (game-watching-maps? (make-game))))
+
+;;; ---------------------------------------------------------------- the host
+(define host (readlink "/proc/self/exe"))
+(define (run-host . argv)
+  ;; (exit status, stdout, stderr) of the host run with ARGV.
+  (let* ((err (in-dir "stderr"))
+         (cmd (string-append (string-join (map (lambda (a) (string-append "'" a "'")) (cons host argv)) " ")
+                             " 2>'" err "'"))
+         (p (open-pipe* OPEN_READ "/bin/sh" "-c" cmd))
+         (out (get-string-all p))
+         (status (status:exit-val (close-pipe p))))
+    (list status out (call-with-input-file err get-string-all))))
+(define watching-script (in-dir "watching.scm"))
+(write-file watching-script "(display (game-watching-maps? (make-game)))\n")
+(test-equal "headless, games do not watch their maps by default" '(0 "#f" "")
+  (run-host "--no-auto-compile" watching-script))
+(test-equal "--watch: they do" '(0 "#t" "") (run-host "--no-auto-compile" "--watch" watching-script))
+(test-equal "--watch and --no-watch together are refused" '(2 "" "downstroke: --watch and --no-watch exclude each other\n")
+  (run-host "--watch" "--no-watch" watching-script))
+
+;;; A game served to a REPL watches its map by default, and reloads it as
+;;; a game in a window does.
+(define served-script (in-dir "served.scm"))
+(write-file served-script
+            (string-append "(watch-poll-interval 0)
+(define game (make-game scene: (make-scene tilemap: (load-tilemap " (object->string map-file) "))))
+(format #t \"~a~%\" (game-watching-maps? game)) (force-output)
+(game-run! game frames: 3000)
+(exit 3)
+"))
+(define (connect-when-ready path tries)
+  (let ((s (socket PF_UNIX SOCK_STREAM 0)))
+    (catch 'system-error
+      (lambda () (connect s AF_UNIX path) s)
+      (lambda args
+        (close-port s)
+        (if (zero? tries) (apply throw args) (begin (usleep 50000) (connect-when-ready path (- tries 1))))))))
+(define prompt "scheme@(guile-user)> ")
+(define (read-until port marker)
+  ;; What PORT sends up to and including MARKER (or its end).
+  (let loop ((acc ""))
+    (if (string-suffix? marker acc)
+        acc
+        (let ((ch (read-char port)))
+          (if (eof-object? ch) acc (loop (string-append acc (string ch))))))))
+(define (value c text)
+  ;; The value TEXT evaluates to in the served game, from its "$N = VALUE".
+  (display text c) (newline c) (force-output c)
+  (let* ((r (read-until c prompt)) (at (string-contains r " = ")))
+    (and at (read (open-input-string (substring r (+ at 3)))))))
+(save map-file (map-text 4 '("0,0,0,0" "0,0,0,0" "1,1,1,1")))
+(define socket-path (in-dir "repl.sock"))
+(define served (open-pipe* OPEN_READ host "--no-auto-compile" "--repl-server" socket-path served-script))
+(test-equal "served: the game watches its map" "#t" (read-line served))
+(define client (connect-when-ready socket-path 100))
+(read-until client prompt)
+(define gid-at-0-0 "(tilemap-gid (scene-tilemap (game-scene game)) 0 0 0)")
+(test-equal "the map as loaded" 0 (value client gid-at-0-0))
+(save map-file (map-text 4 '("2,0,0,0" "0,0,0,0" "1,1,1,1")))
+(test-equal "saved: the served game's scene has the new map within a few frames" 2
+  ;; Asked again, at most 100 times 20 ms apart, until the save is seen.
+  (let wait ((tries 100))
+    (let ((gid (value client gid-at-0-0)))
+      (if (or (eqv? gid 2) (zero? tries)) gid (begin (usleep 20000) (wait (- tries 1)))))))
+(save map-file (map-text 4 '("3,0,0,0" "0,0,0,0" "1,1,1,1")))
+(test-equal "(reload-map!) by hand in the REPL reads it at once" '(#t 3)
+  (list (value client "(reload-map!)") (value client gid-at-0-0)))
+(display "(game-update-set! game (lambda (g dt) (exit 0)))\n" client)
+(force-output client)
+(test-equal "the served game ends when asked" 0 (status:exit-val (close-pipe served)))
+(close-port client)
 
 (system* "rm" "-rf" dir)
 (test-end "live-maps")
