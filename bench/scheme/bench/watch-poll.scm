@@ -1,4 +1,4 @@
-;;; SPDX-License-Identifier: MIT
+;; SPDX-License-Identifier: MIT
 ;;; What poll-watched-files! costs a frame when nothing changes
 ;;; (docs/repl.org, "What watching costs"): one game watching 10 files.
 ;;;   downstroke bench/scheme/bench/watch-poll.scm N MODE
