@@ -27,10 +27,16 @@
 ;; second is what "a saved file shows within a second" needs, and a look
 ;; costs a stat per file (some µs each): once a second, a frame in sixty
 ;; pays it. Tests set it to 0, so that every poll looks.
-(define watch-poll-interval (make-parameter 1))
+(define watch-poll-interval
+  (make-parameter 1 (lambda (seconds)
+                      ;; Refused where it is set, not in a frame later.
+                      (unless (and (real? seconds) (>= seconds 0) (finite? seconds))
+                        (scm-error 'wrong-type-arg "watch-poll-interval"
+                                   "expected a number of seconds ≥ 0, got ~S" (list seconds) #f))
+                      seconds)))
 
 ;; Whether games made from now on watch their maps (game-watch-maps!): the
-;; host's --watch, on by default in a window.
+;; host's --watch, on by default in a window and in a game served to a REPL.
 (define watch-default (make-parameter #f))
 
 ;;; A game's live state (game-live): the watched files, in the order they
@@ -71,8 +77,7 @@
   (let ((st (stat path #f)))
     (and st (list (stat:dev st) (stat:ino st) (stat:size st) (stat:mtime st) (stat:mtimensec st)))))
 
-(define (absolute path)
-  (if (absolute-file-name? path) path (string-append (getcwd) "/" path)))
+(define absolute (@@ (downstroke tilemap) absolute))
 
 (define (check-path who path)
   (unless (and (string? path) (not (string-null? path)))

@@ -25,6 +25,7 @@
 ;; read again.
 (define %tilemap-origin (make-object-property))
 
+;; PATH against the current folder; (downstroke live) names files so too.
 (define (absolute path)
   (if (absolute-file-name? path) path (string-append (getcwd) "/" path)))
 

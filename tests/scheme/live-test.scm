@@ -123,6 +123,10 @@
     seen))
 
 ;;; Refused where they are given.
+(test-equal "watch-poll-interval: a negative number of seconds"
+  "In procedure watch-poll-interval: expected a number of seconds ≥ 0, got -1\n"
+  (error-text (lambda () (watch-poll-interval -1))))
+(test-equal "… and the interval is left as it was" 0 (watch-poll-interval))
 (test-equal "watch-file!: a path that is not a string"
   "In procedure watch-file!: path: expected a file name (a non-empty string), got 42\n"
   (error-text (lambda () (watch-file! game 42 note!))))
