@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tilemap_info.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -325,6 +326,37 @@ SCM layer_image_files(const Tilemap& map, const std::vector<LayerInfo>& layers, 
     return files;
 }
 
+// The cells of `edited` whose gid differs from `loaded`'s, the map it was
+// made from by tilemap-set-tile (the same layers, each of the same extent),
+// as (layer col row gid) lists in layer, row, column order: the game's tile
+// edits, which a map reload re-applies. Compared here, not by tilemap-gid
+// from Scheme, which took 153 ms for one 1000 × 1000 layer. Built back to
+// front, so that only SCM values are made, onto the list.
+SCM tilemap_edits(SCM loaded, SCM edited) {
+    Failure f;
+    if (!check_map(loaded, "%tilemap-edits", f) || !check_map(edited, "%tilemap-edits", f)) raise(f);
+    const Tilemap& a = tilemap_handle(loaded).map;
+    const Tilemap& b = tilemap_handle(edited).map;
+    SCM edits = SCM_EOL;
+    for (size_t l = std::min(a.layers.size(), b.layers.size()); l-- > 0;) {
+        const TileLayer& was = a.layers[l];
+        const TileLayer& now = b.layers[l];
+        if (was.origin_col != now.origin_col || was.origin_row != now.origin_row || was.width != now.width ||
+            was.height != now.height || now.width <= 0)
+            continue;  // not one map's edit of the other: nothing to re-apply
+        for (size_t i = now.cells.size(); i-- > 0;) {
+            const uint32_t gid = now.cells[i];
+            if (gid == was.cells[i]) continue;
+            const int64_t col = now.origin_col + static_cast<int64_t>(i % static_cast<size_t>(now.width));
+            const int64_t row = now.origin_row + static_cast<int64_t>(i / static_cast<size_t>(now.width));
+            edits = scm_cons(scm_list_4(scm_from_size_t(l), scm_from_int64(col), scm_from_int64(row),
+                                        scm_from_uint32(gid)),
+                             edits);
+        }
+    }
+    return edits;
+}
+
 SCM tilemap_files(SCM m) {
     return map_accessor(m, "%tilemap-files", [](const Tilemap& t) {
         SCM files = SCM_EOL;
@@ -399,6 +431,8 @@ void register_tilemap_info_procedures() {
         "#:columns, #:margin, #:spacing, #:image (or #f for an image collection), #:image-width, "
         "#:image-height, #:tile-offset (x . y), #:properties and #:tiles (the tiles carrying "
         "something: #:id #:type #:properties, and #:collision? #:image #:animation).");
+    define_procedure<2, 0, 0, tilemap_edits>("%tilemap-edits",
+        WrapperDoc{"(loaded edited)", "reload-map!", "(downstroke live)"});
     define_procedure<1, 0, 0, tilemap_files>("%tilemap-files",
         WrapperDoc{"(tm)", "load-tilemap", "(downstroke tilemap)"});
     define_procedure<1, 0, 0, tilemap_warnings>("tilemap-warnings",

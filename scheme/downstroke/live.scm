@@ -17,6 +17,7 @@
   #:use-module (downstroke error-text)
   #:use-module (downstroke game)
   #:use-module (downstroke hook-errors)
+  #:use-module ((downstroke native) #:select (%tilemap-edits))
   #:use-module ((downstroke world) #:select (scene-tilemap update-scene))
   #:use-module ((downstroke tilemap) #:select (load-tilemap tilemap-set-tile))
   #:use-module ((downstroke render) #:select (current-display draw-label))
@@ -182,7 +183,6 @@ it once a frame."
 
 (define tilemap-source (@@ (downstroke tilemap) %tilemap-source))
 (define tilemap-origin (@@ (downstroke tilemap) %tilemap-origin))
-(define tile-edits (@@ (downstroke scene-file) tile-edits))
 
 (define (scene-map game)
   ;; The current scene's map, or #f.
@@ -273,7 +273,7 @@ the old map."
   ;; loaded) changed alike, where FRESH still has them.
   (let ((loaded (car (tilemap-origin tm))))
     (if loaded
-        (fold (lambda (edit m) (apply re-edit m edit)) fresh (tile-edits loaded tm))
+        (fold (lambda (edit m) (apply re-edit m edit)) fresh (%tilemap-edits loaded tm))
         fresh)))
 
 (define (re-edit m layer col row gid)
