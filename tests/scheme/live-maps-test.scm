@@ -107,6 +107,11 @@
       (list (tilemap-cell-solid? tm 1 2) (tilemap-cell-solid? tm 0 0)))))
 
 ;;; A map saved broken: the game runs on with the map it had, the error said.
+;; A pixel past the map's 64 px, where the first line of an error is drawn.
+(define (pixel-over-the-error game)
+  (game-capture game (in-dir "frame.png"))
+  (game-pixel game 300 6))
+(define plain-pixel (and (renderer-available?) (pixel-over-the-error game)))
 (define before-broken (scene-tilemap (game-scene game)))
 (define broken-report
   (warnings-of (lambda ()
@@ -121,11 +126,16 @@
              "In procedure load-tilemap: "))
 (test-assert "and is shown over the game's picture until a reload succeeds"
   (string? ((@@ (downstroke live) live-error) ((@@ (downstroke game) game-live) game))))
+(when (renderer-available?)
+  (test-assert "drawn over the game's picture: the label's plate darkens the background"
+    (not (equal? plain-pixel (pixel-over-the-error game)))))
 (test-equal "the next good save is reloaded, and the error is gone" '(((3 0 0 0) (0 0 1 0) (1 1 1 1)) #f)
   (begin
     (save map-file (map-text 4 '("3,0,0,0" "0,0,0,0" "1,1,1,1")))
     (game-run! game frames: 10)
     (list (scene-gids game) ((@@ (downstroke live) live-error) ((@@ (downstroke game) game-live) game)))))
+(when (renderer-available?)
+  (test-equal "… from the picture too" plain-pixel (pixel-over-the-error game)))
 
 ;;; A tile edit whose cell the new map no longer has is dropped, said.
 (define narrowed-report
