@@ -214,7 +214,8 @@ project. When one changes on disk, the map is read again between two frames
 and put into the current scene (reload-map!); the scenes kept for
 game-rewind! keep the map they had. The watched map follows the scene's: a
 new level's map is watched from the next look. New games watch their maps
-when watch-default is true (the host's --watch, on by default in a window)."
+when watch-default is true (the host's --watch, on by default in a window
+and in a game served to a REPL)."
   (check-game "game-watch-maps!" game)
   (let ((live (live-of game)))
     (live-maps?-set! live (and on? #t))
