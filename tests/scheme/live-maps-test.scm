@@ -173,6 +173,25 @@
   "In procedure game-watch-maps!: game: expected a game (make-game), got 1\n"
   (error-text (lambda () (game-watch-maps! 1 #t))))
 
+;;; The watched files follow the scene's map.
+(define (watched-paths game)
+  (map (@@ (downstroke live) watched-path)
+       ((@@ (downstroke live) live-files) ((@@ (downstroke game) game-live) game))))
+(test-equal "the files watched are the current map's: the map, its tileset and its picture"
+  (list map-file tileset-file (in-dir "terrain.png"))
+  (let ((g (make-game scene: (make-scene tilemap: (load-tilemap map-file)))))
+    (game-watch-maps! g #t)
+    (watched-paths g)))
+(test-equal "a scene with a map made in memory: none, from the next look; a save then changes nothing" '(() #t)
+  (let ((g (make-game scene: (make-scene tilemap: (load-tilemap map-file))))
+        (in-memory (make-tilemap 2 2 16 16 '(0 0 0 0) '())))
+    (game-watch-maps! g #t)
+    (game-scene-set! g (make-scene tilemap: in-memory))
+    (poll-watched-files! g)
+    (save map-file (map-text 4 '("1,1,1,1" "0,0,0,0" "1,1,1,1")))
+    (poll-watched-files! g)
+    (list (watched-paths g) (eq? in-memory (scene-tilemap (game-scene g))))))
+
 ;;; New games watch their maps when watch-default is true (the host's --watch).
 (test-equal "watch-default" '(#t #f)
   (list (parameterize ((watch-default #t)) (game-watching-maps? (make-game)))
