@@ -173,6 +173,19 @@
   "In procedure game-watch-maps!: game: expected a game (make-game), got 1\n"
   (error-text (lambda () (game-watch-maps! 1 #t))))
 
+;;; What a map remembers to watch: every file it was read from, each once.
+(test-equal "a map with templates: the map, a tileset file, the tilesets' pictures, the templates of its objects and of a tile's shape"
+  '(#t ("templates.tmx" "terrain.tsx" "terrain.png" "shapes.png" "spawn.tx" "crate.tx" "self.tx"))
+  (let* ((tm (load-tilemap (string-append (dirname (current-filename)) "/../data/maps/features/templates.tmx")))
+         (files (cdr ((@@ (downstroke tilemap) %tilemap-origin) tm))))
+    (list (every (lambda (f) (and (absolute-file-name? f) (file-exists? f))) files)
+          (map basename files))))
+
+(test-equal "a map with an image layer: its picture too"
+  '("platformer.tmx" "demo-tiles.tsx" "tiles.png" "sprites.tsx" "sprites.png" "level-tiles.tsx" "level-tiles.png" "backdrop.png")
+  (map basename (cdr ((@@ (downstroke tilemap) %tilemap-origin)
+                      (load-tilemap (string-append demo-dir "/maps/platformer.tmx"))))))
+
 ;;; The watched files follow the scene's map.
 (define (watched-paths game)
   (map (@@ (downstroke live) watched-path)
@@ -213,6 +226,10 @@
 (test-equal "headless, games do not watch their maps by default" '(0 "#f" "")
   (run-host "--no-auto-compile" watching-script))
 (test-equal "--watch: they do" '(0 "#t" "") (run-host "--no-auto-compile" "--watch" watching-script))
+(when (renderer-available?)
+  (test-equal "--window: they do" '(0 "#t" "") (run-host "--no-auto-compile" "--window" watching-script))
+  (test-equal "--window --no-watch: they do not" '(0 "#f" "")
+    (run-host "--no-auto-compile" "--window" "--no-watch" watching-script)))
 (test-equal "--watch and --no-watch together are refused" '(2 "" "downstroke: --watch and --no-watch exclude each other\n")
   (run-host "--watch" "--no-watch" watching-script))
 
