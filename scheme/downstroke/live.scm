@@ -138,6 +138,7 @@ of its procedures is called again."
 last looked at (watch-file!), if watch-poll-interval seconds have passed
 since the last look; else do nothing, and touch no file. The game loop calls
 it once a frame."
+  (unless (game? game) (check-game "poll-watched-files!" game))  ; every frame: no call unless refused
   (let ((live (game-live game)))
     (when (and live (or (live-maps? live) (pair? (live-files live))))
       (let ((now (get-internal-real-time)))

@@ -136,6 +136,9 @@
 (test-equal "watch-file!: not a game"
   "In procedure watch-file!: game: expected a game (make-game), got #f\n"
   (error-text (lambda () (watch-file! #f file note!))))
+(test-equal "poll-watched-files!: not a game"
+  "In procedure poll-watched-files!: game: expected a game (make-game), got 3\n"
+  (error-text (lambda () (poll-watched-files! 3))))
 (test-equal "unwatch-file!: an empty path"
   "In procedure unwatch-file!: path: expected a file name (a non-empty string), got \"\"\n"
   (error-text (lambda () (unwatch-file! game ""))))
