@@ -109,6 +109,15 @@ constexpr size_t kMaxShapePoints = 256;
 // two coordinates) far inside int64 and a ramp's slant points in int32.
 constexpr int64_t kMaxShapeReachTiles = 1;
 
+// Slanted edges of one cell shape (semantics §12): a convex polygon's upper
+// boundary (a floor shape) or lower one (a ceiling shape) has a slant per
+// edge that is neither horizontal nor vertical, kept inline in CellShape so
+// a grid's table of shapes stays plain data. The real tilesets we read draw
+// at most 10 points, so at most 4 slants on one side; 8 leaves room for a
+// rounder hill, and a polygon with more collides as its whole cell, with a
+// warning.
+constexpr int kMaxShapeSlants = 8;
+
 // Class members a Tiled project file fills into one map's properties (the
 // defaults a map leaves out). A class whose members are classes multiplies
 // at each level, so a hostile project of a few lines could ask for billions;

@@ -150,7 +150,7 @@ namespace {
 
 // Where the segment enters the solid of shape p (semantics §8, §12): the
 // least t in [0, t_end) with the point in its box and on the kept side of
-// its slant; the normal of the face it came through (for the slant, the
+// every slant; the normal of the face it came through (for the slant, the
 // signs of its outward normal). False when it does not, or when the start
 // point is inside.
 bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end, RayHit& h) {
@@ -159,18 +159,19 @@ bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end,
     const Span sx = axis_span(s.x0, dx, p.left(), p.right());
     const Span sy = axis_span(s.y0, dy, p.box_top(), p.box_bottom());
     double in = std::max({sx.in, sy.in, 0.0}), out = std::min({sx.out, sy.out, t_end});
-    bool through_slant = false;
-    const double sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;  // which side of the slant is kept
-    if (p.s.cut != Cut::None) {
+    int through = -1;  // the slant the segment came in through, or −1
+    const double sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;  // which side of the slants is kept
+    for (int i = 0; i < (p.s.cut != Cut::None ? p.lines() : 0); ++i) {
         // f(t) = sign·(run·(y − ay) − rise·(x − ax)) along the segment: the
-        // kept side is f ≥ 0, and f is linear in t.
-        const double run = p.dx, rise = p.dy;
-        const double ax = p.ox + p.s.ax, ay = p.oy + p.s.ay;
+        // kept side of slant i is f ≥ 0, and f is linear in t.
+        const Slant l = p.s.slant(i);
+        const double run = l.bx - l.ax, rise = l.by - l.ay;
+        const double ax = p.ox + l.ax, ay = p.oy + l.ay;
         const double a = sign * (run * (s.y0 - ay) - rise * (s.x0 - ax));
         const double b = sign * (run * dy - rise * dx);
         if (b > 0) {
             const double t = -a / b;
-            if (t > in) in = t, through_slant = true;
+            if (t > in) in = t, through = i;
         } else if (b < 0) {
             out = std::min(out, -a / b);
         } else if (a < 0) {
@@ -179,8 +180,9 @@ bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end,
     }
     if (!(in < out)) return false;
     h = hit_at(s, in, sx, sy, p.left(), p.right(), p.box_top(), p.box_bottom());
-    if (through_slant) {
-        h.nx = p.dy * sign > 0 ? 1 : -1;   // outward: (rise, −run) for a floor ramp
+    if (through >= 0) {
+        const Slant l = p.s.slant(through);
+        h.nx = (l.by - l.ay) * sign > 0 ? 1 : -1;  // outward: (rise, −run) for a floor ramp
         h.ny = p.s.cut == Cut::Floor ? -1 : 1;
         h.x = s.x0 + in * dx, h.y = s.y0 + in * dy;
     }

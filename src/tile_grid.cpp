@@ -99,8 +99,24 @@ bool TileGrid::solid_at(double x, double y) const {
 }
 
 double CellShape::steepness() const {
-    if (cut == Cut::None) return 0;
-    return std::fabs(static_cast<double>(by - ay)) / static_cast<double>(bx - ax);
+    double k = 0;
+    for (int i = 0; i < slants(); ++i) {
+        const Slant l = slant(i);
+        k = std::max(k, std::fabs(static_cast<double>(l.by - l.ay)) / static_cast<double>(l.bx - l.ax));
+    }
+    return k;
+}
+
+int32_t CellShape::apex() const {
+    // A floor's top climbs rightwards along a slant that rises (dy < 0), a
+    // ceiling's bottom along one that falls (dy > 0).
+    auto climbs = [&](const Slant& l) { return cut == Cut::Floor ? l.by < l.ay : l.by > l.ay; };
+    int last_climbing = -1;
+    for (int i = 0; i < slants(); ++i)
+        if (climbs(slant(i))) last_climbing = i;
+    if (last_climbing < 0) return x0;
+    if (last_climbing == slants() - 1) return x1;
+    return std::clamp(slant(last_climbing).bx, x0, x1);
 }
 
 }  // namespace ds

@@ -38,10 +38,11 @@ inline double clamp(double v, double lo, double hi) { return v < lo ? lo : hi < 
 
 struct Placed {
     const CellShape& s;
+    const ShapeGeometry& g;
     double ox, oy;  // the cell's top-left corner, col·tw and row·th
     double left_, right_, top_, bottom_;  // the box in the world
-    double ax, dx, dy, base;  // the line's first x, run and rise, and (oy + ay)·dx
-    double inv_dx;            // ShapeGeometry::inv_dx
+    double ax, dx, dy, base;  // the first line's first x, run and rise, and (oy + ay)·dx
+    double inv_dx;            // its LineGeometry::inv_dx
 
     // `shape` is one g.shape() gave: its doubles come from g's table.
     Placed(const CellShape& shape, int64_t col, int64_t row, const TileGrid& g)
@@ -50,28 +51,51 @@ struct Placed {
     Placed(uint16_t id, int64_t col, int64_t row, const TileGrid& g)
         : Placed(g.shape_at(id), g.geometry_at(id), col, row, g) {}
     Placed(const CellShape& shape, const ShapeGeometry& d, int64_t col, int64_t row, const TileGrid& g)
-        : s(shape), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()),
+        : s(shape), g(d), ox(static_cast<double>(col) * g.tile_width()), oy(static_cast<double>(row) * g.tile_height()),
           left_(ox + d.x0), right_(ox + d.x1), top_(oy + d.y0), bottom_(oy + d.y1),
-          ax(d.ax), dx(d.dx), dy(d.dy), base((oy + d.ay) * dx), inv_dx(d.inv_dx) {}
+          ax(d.line.ax), dx(d.line.dx), dy(d.line.dy), base((oy + d.line.ay) * dx), inv_dx(d.line.inv_dx) {}
 
     double left() const { return left_; }
     double right() const { return right_; }
     double box_top() const { return top_; }
     double box_bottom() const { return bottom_; }
+    // Where the top is highest (a floor shape) or the bottom lowest (a
+    // ceiling one), CellShape::apex, in the world.
+    double apex() const { return ox + g.apex; }
 
-    // The slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
+    // The first slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
     // one division (for a power-of-two run, the multiplication by 1/dx that
     // gives the same bits), so exact integers give the correctly rounded value.
     double line(double x) const {
         const double n = base + ((x - ox) - ax) * dy;
         return inv_dx != 0 ? n * inv_dx : n / dx;
     }
+    // The same for line i (0 the first), in the same order of operations.
+    double line(int i, double x) const {
+        if (i == 0) return line(x);
+        const LineGeometry& l = g.more[static_cast<size_t>(i - 1)];
+        const double n = (oy + l.ay) * l.dx + ((x - ox) - l.ax) * l.dy;
+        return l.inv_dx != 0 ? n * l.inv_dx : n / l.dx;
+    }
+    int lines() const { return 1 + g.n_more; }
+    // The line that bounds the solid at x: the lowest (greatest y) of a
+    // floor shape's lines, the highest of a ceiling shape's, the first wins
+    // a tie. A convex polygon's roof is the lowest of its edges' lines at
+    // every x, its underside the highest.
+    double bound(double x) const {
+        double v = line(x);
+        for (int i = 1; i < lines(); ++i) {
+            const double w = line(i, x);
+            if (s.cut == Cut::Floor ? v < w : w < v) v = w;
+        }
+        return v;
+    }
     // The top and bottom of the solid in the column at x (top == bottom: none).
     double top(double x) const {
-        return s.cut == Cut::Floor ? clamp(line(x), box_top(), box_bottom()) : box_top();
+        return s.cut == Cut::Floor ? clamp(bound(x), box_top(), box_bottom()) : box_top();
     }
     double bottom(double x) const {
-        return s.cut == Cut::Ceiling ? clamp(line(x), box_top(), box_bottom()) : box_bottom();
+        return s.cut == Cut::Ceiling ? clamp(bound(x), box_top(), box_bottom()) : box_bottom();
     }
 
     // The part of `span` over the shape, [a, b); false when none.
@@ -80,12 +104,12 @@ struct Placed {
         b = std::min(span.hi, right());
         return a < b;
     }
-    // The highest top (least y) over [a, b) and the lowest bottom: the line
-    // is monotonic (and so is every rounding step computing it), so the end
-    // the line rises towards gives each, b (not in the span) as the limit.
-    // One evaluation, not two.
-    double top_over(double a, double b) const { return top(dy < 0 ? b : a); }
-    double bottom_over(double a, double b) const { return bottom(dy > 0 ? b : a); }
+    // The highest top (least y) over [a, b) and the lowest bottom: the top
+    // falls (the bottom rises) away from the apex on either side, so the
+    // apex clamped to the span gives each, b (not in the span) as the limit;
+    // for a ramp that is the end its line rises towards. One evaluation.
+    double top_over(double a, double b) const { return top(clamp(apex(), a, b)); }
+    double bottom_over(double a, double b) const { return bottom(clamp(apex(), a, b)); }
     // Where a body over [a, b) meets the shape from above (its highest top)
     // and from below (its lowest bottom).
     double surface(double a, double b) const { return s.cut == Cut::Floor ? top_over(a, b) : box_top(); }
@@ -119,8 +143,8 @@ struct Placed {
     // box) and, for a ramp, on the kept side of the slant or on it.
     bool holds(double x, double y) const {
         if (!(left() <= x && x < right() && box_top() <= y && y < box_bottom())) return false;
-        if (s.cut == Cut::Floor) return y >= line(x);
-        if (s.cut == Cut::Ceiling) return y <= line(x);
+        if (s.cut == Cut::Floor) return y >= bound(x);
+        if (s.cut == Cut::Ceiling) return y <= bound(x);
         return true;
     }
     // Strict overlap with the box [span) × [top, bottom).

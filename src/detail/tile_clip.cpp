@@ -18,20 +18,26 @@ using shape_math::Span;
 // cell stops it by its shape (shape_stop).
 bool stops(uint8_t cell, bool down) { return cell == kSolidCell || (down && cell == kOneWayCell); }
 
-// Where the slanted line of p is at height y: the x with line(x) = y,
+// Where slanted line i of p is at height y: the x with line(x) = y,
 // ((y·dx − (oy + ay)·dx) / dy + ax) + ox, in that order (the reference
 // repeats it), so exact integers give the correctly rounded value.
-double line_x(const Placed& p, double y) { return ((y * p.dx - p.base) / p.dy + p.ax) + p.ox; }
+double line_x(const Placed& p, int i, double y) {
+    const Slant l = p.s.slant(i);
+    const double ax = l.ax, dx = l.bx - l.ax, dy = l.by - l.ay;
+    return ((y * dx - (p.oy + l.ay) * dx) / dy + ax) + p.ox;
+}
 
 // How far (signed as d, |result| < |d|) the box of b can move along an axis
 // before it meets the solid of shape p, or false when the move never meets
 // it (or the box overlaps it already): moving along y, the feet onto its
 // surface (a move down) or the head onto its underside (up), as the y step
 // lands (§12); moving along x, the leading face onto its near side where
-// the box spans solid there, as the x step walls, else, for a slant that
-// faces the move (a floor ramp rising, a ceiling ramp falling, the way the
-// box moves), the box's corner onto the slant: its feet for a floor ramp,
-// its head for a ceiling one. A one-way shape stops only a move down.
+// the box spans solid there, as the x step walls, else, where slants face
+// the move (a floor's rising, a ceiling's falling, the way the box moves)
+// before the apex, the box's corner onto them: its feet for a floor, its
+// head for a ceiling — the farthest of their lines at that height, as the
+// solid is on the kept side of every one. A one-way shape stops only a
+// move down.
 bool shape_stop(const Body& b, const Placed& p, bool along_x, double d, double& stop) {
     const bool fwd = d > 0;
     const double head = b.y.v, feet = (b.y + b.h).v;
@@ -48,14 +54,23 @@ bool shape_stop(const Body& b, const Placed& p, bool along_x, double d, double& 
     const bool crossed = fwd ? lead <= side && side < reach : reach < side && side <= lead;
     if (crossed && head < p.bottom(side) && feet > p.top(side)) return stop = side - lead, true;
     if (!(head < p.box_bottom() && feet > p.box_top())) return false;
-    const bool rising = fwd ? p.dy < 0 : p.dy > 0;  // the line climbs the way the box moves
-    double level;
-    if (p.s.cut == Cut::Floor && rising) level = feet;
-    else if (p.s.cut == Cut::Ceiling && !rising) level = head;
-    else return false;
-    const double x = line_x(p, level);
+    if (p.s.cut == Cut::None) return false;
+    const double level = p.s.cut == Cut::Floor ? feet : head;
+    bool facing = false;
+    double x = 0;
+    for (int i = 0; i < p.lines(); ++i) {
+        const Slant l = p.s.slant(i);
+        const bool rising = fwd ? l.by < l.ay : l.by > l.ay;  // the line climbs the way the box moves
+        if (rising != (p.s.cut == Cut::Floor)) continue;
+        const double xi = line_x(p, i, level);
+        if (!facing || (fwd ? x < xi : xi < x)) x = xi;
+        facing = true;
+    }
+    if (!facing) return false;
     const double at = fwd ? std::max(x, p.left()) : std::min(x, p.right());
-    const bool met = fwd ? lead <= at && at < reach && at < p.right() : reach < at && at <= lead && at > p.left();
+    const double apex = p.apex();
+    const bool met = fwd ? lead <= at && at < reach && at < p.right() && at < apex
+                         : reach < at && at <= lead && at > p.left() && at > apex;
     if (met) stop = at - lead;
     return met;
 }

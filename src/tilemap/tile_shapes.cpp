@@ -69,67 +69,6 @@ std::vector<Pt> simplified(const std::vector<Pt>& pts) {
     return out;
 }
 
-bool same_points(std::vector<Pt> a, std::vector<Pt> b) {
-    auto less = [](Pt p, Pt q) { return p.x != q.x ? p.x < q.x : p.y < q.y; };
-    std::sort(a.begin(), a.end(), less);
-    std::sort(b.begin(), b.end(), less);
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-    b.erase(std::unique(b.begin(), b.end()), b.end());
-    return a == b;
-}
-
-// The polygon as a box or as its box cut by its one slanted edge, or the
-// whole cell when it is neither.
-TileSolidPart classify(const std::vector<Pt>& outline, int64_t tw, int64_t th) {
-    TileSolidPart part;
-    const std::vector<Pt> pts = simplified(outline);
-    if (pts.size() < 3) return part;  // no area: the whole cell, as any other odd shape
-    int64_t x0 = pts[0].x, y0 = pts[0].y, x1 = x0, y1 = y0;
-    for (const Pt& p : pts) {
-        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    }
-    std::vector<std::pair<Pt, Pt>> slants;
-    for (size_t i = 0; i < pts.size(); ++i) {
-        const Pt a = pts[i], b = pts[(i + 1) % pts.size()];
-        if (a.x != b.x && a.y != b.y) slants.push_back({a, b});
-    }
-    const std::vector<Pt> corners = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-    CellShape s;
-    s.x0 = static_cast<int32_t>(x0), s.y0 = static_cast<int32_t>(y0);
-    s.x1 = static_cast<int32_t>(x1), s.y1 = static_cast<int32_t>(y1);
-    if (slants.empty()) {
-        if (!same_points(pts, corners)) return part;
-        if (x0 == 0 && y0 == 0 && x1 == tw && y1 == th) return part;
-        part.whole = false;
-        part.shape = s;
-        return part;
-    }
-    if (slants.size() != 1) return part;
-    Pt p = slants[0].first, q = slants[0].second;
-    if (q.x < p.x) std::swap(p, q);
-    auto on_edge = [&](Pt a) { return a.x == x0 || a.x == x1 || a.y == y0 || a.y == y1; };
-    if (!on_edge(p) || !on_edge(q)) return part;
-    // The box cut by the line through p and q has for vertices p, q and the
-    // box's corners strictly on the kept side: a floor keeps those below the
-    // line (y down, p left of q: cross > 0), a ceiling those above.
-    for (const Cut cut : {Cut::Floor, Cut::Ceiling}) {
-        std::vector<Pt> kept = {p, q};
-        for (const Pt& c : corners) {
-            const int64_t side = cross(p, q, c);
-            if (cut == Cut::Floor ? side > 0 : side < 0) kept.push_back(c);
-        }
-        if (!same_points(kept, pts)) continue;
-        s.cut = cut;
-        s.ax = static_cast<int32_t>(p.x), s.ay = static_cast<int32_t>(p.y);
-        s.bx = static_cast<int32_t>(q.x), s.by = static_cast<int32_t>(q.y);
-        part.whole = false;
-        part.shape = s;
-        return part;
-    }
-    return part;
-}
-
 // A coordinate of a clipped outline, exactly: n / d in lowest terms, d > 0.
 // Every one is a polygon point, a cell corner or where a polygon edge (a
 // line through two integer points) crosses a cell side, so n and d stay
@@ -246,11 +185,14 @@ bool convex(const std::vector<Pt>& pts, int& turn) {
 }
 
 // The part of convex outline `pts` (turning `turn`) inside the tw × th
-// cell: a box, a ramp, the whole cell or nothing (semantics §12). Its part
-// inside is the box of its axis-aligned edges cut by its slanted edge's
-// line, when it has one slanted edge: the box rounded out to whole px cuts
-// to the same part, as the slant's ends alone can lie off whole px.
-TileSolidPart clipped_part(const std::vector<Pt>& pts, int turn, int64_t tw, int64_t th, const char* what) {
+// cell: a box, a shape cut by slants on one side, the whole cell or nothing
+// (semantics §12). The part inside is the box of its axis-aligned edges cut
+// by its slanted edges' lines: the box rounded out to whole px cuts to the
+// same part, as only the slants' ends can lie off whole px, and each slant
+// keeps the rest of the rounded box out on its side. `what` names the
+// object, `reached_out` whether it reached past the tile (for the warning).
+TileSolidPart clipped_part(const std::vector<Pt>& pts, int turn, int64_t tw, int64_t th, const char* what,
+                           bool reached_out) {
     TileSolidPart part;
     std::vector<Corner> outline;
     for (size_t i = 0; i < pts.size(); ++i) {
@@ -263,39 +205,53 @@ TileSolidPart clipped_part(const std::vector<Pt>& pts, int turn, int64_t tw, int
     outline = clip_side(outline, false, th, true);
     outline = tidied(std::move(outline));
     const std::string tile = std::to_string(tw) + "x" + std::to_string(th) + " tile";
+    const std::string named =
+        reached_out ? std::string("the part of the ") + what + " inside the " + tile : std::string("the ") + what;
     if (outline.size() < 3) {
         part.whole = false, part.empty = true;
-        part.problem = std::string("the part of the ") + what + " inside the " + tile + " has no area";
+        part.problem = named + " has no area";
         return part;
     }
     Ratio x0 = outline[0].x, x1 = x0, y0 = outline[0].y, y1 = y0;
-    const Corner* slant = nullptr;
+    std::vector<Slant> slants;
+    Cut cut = Cut::None;
     for (const Corner& v : outline) {
         if (less(v.x, x0)) x0 = v.x;
         if (less(x1, v.x)) x1 = v.x;
         if (less(v.y, y0)) y0 = v.y;
         if (less(y1, v.y)) y1 = v.y;
-        if (v.from.x != v.to.x && v.from.y != v.to.y) {
-            if (slant) {
-                part.problem = std::string("the part of the ") + what + " inside the " + tile +
-                               " is neither a box nor a ramp";
-                return part;
-            }
-            slant = &v;
+        if (v.from.x == v.to.x || v.from.y == v.to.y) continue;
+        Pt p = v.from, q = v.to;
+        // The inside lies where cross(from, to, ·) has the outline's turn.
+        int kept = turn;
+        if (q.x < p.x) std::swap(p, q), kept = -kept;
+        const Cut side = kept > 0 ? Cut::Floor : Cut::Ceiling;
+        if (cut != Cut::None && side != cut) {
+            part.problem = named + " has slanted edges both on its top and on its underside";
+            return part;
         }
+        cut = side;
+        slants.push_back({static_cast<int32_t>(p.x), static_cast<int32_t>(p.y), static_cast<int32_t>(q.x),
+                          static_cast<int32_t>(q.y)});
+    }
+    if (slants.size() > static_cast<size_t>(kMaxShapeSlants)) {
+        part.problem = named + " has " + std::to_string(slants.size()) + " slanted edges on its " +
+                       (cut == Cut::Floor ? "top" : "underside") + ", more than the " +
+                       std::to_string(kMaxShapeSlants) + " a shape may have";
+        return part;
     }
     CellShape s;
     s.x0 = static_cast<int32_t>(floor_of(x0)), s.y0 = static_cast<int32_t>(floor_of(y0));
     s.x1 = static_cast<int32_t>(ceil_of(x1)), s.y1 = static_cast<int32_t>(ceil_of(y1));
-    if (!slant && s.x0 == 0 && s.y0 == 0 && s.x1 == tw && s.y1 == th) return part;
-    if (slant) {
-        Pt p = slant->from, q = slant->to;
-        // The inside lies where cross(from, to, ·) has the outline's turn.
-        int kept = turn;
-        if (q.x < p.x) std::swap(p, q), kept = -kept;
-        s.cut = kept > 0 ? Cut::Floor : Cut::Ceiling;
-        s.ax = static_cast<int32_t>(p.x), s.ay = static_cast<int32_t>(p.y);
-        s.bx = static_cast<int32_t>(q.x), s.by = static_cast<int32_t>(q.y);
+    if (slants.empty() && s.x0 == 0 && s.y0 == 0 && s.x1 == tw && s.y1 == th) return part;
+    if (!slants.empty()) {
+        // Left to right along the boundary they make: a convex outline's
+        // edges on one side follow each other along x.
+        std::sort(slants.begin(), slants.end(), [](const Slant& a, const Slant& b) { return a.ax < b.ax; });
+        s.cut = cut;
+        s.ax = slants[0].ax, s.ay = slants[0].ay, s.bx = slants[0].bx, s.by = slants[0].by;
+        s.n_more = static_cast<uint8_t>(slants.size() - 1);
+        std::copy(slants.begin() + 1, slants.end(), s.more.begin());
     }
     part.whole = false;
     part.shape = s;
@@ -351,14 +307,14 @@ TileSolidPart tile_solid_part(const std::vector<MapObject>& objects, int tile_w,
     }
     const std::vector<Pt> outline = simplified(pts);
     if (outline.size() < 3) return no_area(std::string("a ") + what + " whose points lie on one line has no area");
-    if (outside.empty()) return classify(pts, tile_w, tile_h);
     int turn = 0;
     if (!convex(outline, turn)) {
-        part.problem = "collision point " + outside + " lies outside the " + tile +
-                       " and the polygon is not convex, so its part inside is not read";
+        part.problem = outside.empty() ? std::string("the ") + what + " is not convex"
+                                       : "collision point " + outside + " lies outside the " + tile +
+                                             " and the polygon is not convex, so its part inside is not read";
         return part;
     }
-    return clipped_part(outline, turn, tile_w, tile_h, what);
+    return clipped_part(outline, turn, tile_w, tile_h, what, !outside.empty());
 }
 
 }  // namespace ds

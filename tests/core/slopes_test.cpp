@@ -12,6 +12,7 @@
 #include "support.hpp"
 #include "tiles.hpp"
 #include "detail/placed_shape.hpp"
+#include "detail/tile_clip.hpp"
 
 using namespace dst;
 using ds::CellShape;
@@ -28,11 +29,20 @@ CellShape ramp(int x0, int y0, int x1, int y1, Cut cut, int ax, int ay, int bx, 
 }
 CellShape part_box(int x0, int y0, int x1, int y1) { return ramp(x0, y0, x1, y1, Cut::None, 0, 0, 0, 0); }
 
+// A pentagon: 8 px walls under a 45° roof peaking at (8, 0); or, upside
+// down, an underside with its lowest point at (8, 16).
+CellShape house(bool upside_down) {
+    CellShape s = upside_down ? ramp(0, 0, 16, 16, Cut::Ceiling, 0, 8, 8, 16) : ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
+    s.n_more = 1;
+    s.more[0] = upside_down ? ds::Slant{8, 16, 16, 8} : ds::Slant{8, 0, 16, 8};
+    return s;
+}
+
 // '/' 45° up to the right, '\' 45° up to the left; 'a' 'b' the lower and
 // upper tiles of a 1:2 ramp up to the right, 'd' 'c' the same up to the
 // left; 'v' a 45° ceiling ramp (the '/' tile flipped vertically), '^' its
 // mirror; '_' a half-height box at the bottom, '-' a 4 px ledge at the top;
-// 'o' a one-way '/'.
+// 'o' a one-way '/'; 'p' a house, 'u' one upside down.
 CellShape shape_of(char ch) {
     switch (ch) {
         case '/': return ramp(0, 0, 16, 16, Cut::Floor, 0, 16, 16, 0);
@@ -46,6 +56,8 @@ CellShape shape_of(char ch) {
         case '_': return part_box(0, 8, 16, 16);
         case '-': return part_box(0, 0, 16, 4);
         case 'o': return ramp(0, 0, 16, 16, Cut::Floor, 0, 16, 16, 0, true);
+        case 'p': return house(false);
+        case 'u': return house(true);
         default: FAIL("no shape for " << ch); return {};
     }
 }
@@ -450,6 +462,95 @@ TEST_CASE("rays: ceiling ramps, part-tile boxes, one-way shapes") {
     CHECK(down[0].ny == -1);
     // 'o' at (3, 1) is one-way: rays pass.
     CHECK(ray(g, 56, 0, 56, 47).empty());
+}
+
+// ---- convex polygons: a house's roof and an upside-down house's underside.
+// 'p' at (2, 1): x 32–48, y 16–32, walls up to y 24, roof y = 56 − x up to
+// the peak (40, 16), then y = x − 24. 'u' at (2, 1): underside y = x − 8 down
+// to (40, 32), then y = 72 − x.
+
+TEST_CASE("landing on a roof: on its peak, and on either slope at the point of the span nearest the peak") {
+    const ds::TileGrid g = shaped_grid({"....", "..p.", "####"});
+    auto land = [&](double x) {
+        Body b = box(x, 16, 8, 8);  // fell 20 px from feet at 4
+        b.vy = I(20);
+        CHECK(ds::resolve_tile_collisions_y(b, &g, ds::CollisionMode::Swept));
+        CHECK_EXACT(b.vy, 0);
+        return b.y;
+    };
+    CHECK_EXACT(land(36), 8);   // over 36–44: the peak, 16
+    CHECK_EXACT(land(30), 10);  // over 32–38: the left slope at 38, 18
+    CHECK_EXACT(land(42), 10);  // over 42–48: the right slope at 42, 18
+    CHECK_EXACT(land(45), 13);  // over 45–48: 21
+}
+
+TEST_CASE("a roof's wall stops a body beside it; its slope lifts one above the wall's top") {
+    const ds::TileGrid g = shaped_grid({"....", "..p.", "####"});
+    Body wall = box(26, 16, 8, 16);  // moved right 4, feet on the floor at 32
+    wall.vx = I(4);
+    CHECK(ds::resolve_tile_collisions_x(wall, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(wall.x, 24);
+    CHECK_EXACT(wall.vx, 0);
+    Body up = box(28, 8, 8, 16);  // feet at 24, the wall's top; lead now at 36: roof 20
+    up.vx = I(4);
+    ds::resolve_tile_collisions_x(up, &g, ds::CollisionMode::Swept);
+    CHECK_EXACT(up.x, 28);
+    CHECK_EXACT(up.vx, 4);
+    CHECK_EXACT(up.y, 4);
+    // Pushed (§4) with feet at 17, a px below the peak: the corner meets the
+    // roof at x = 39.
+    CHECK_EXACT(ds::clipped_push(box(20, 1, 8, 16), true, I(12), g), 11);
+    CHECK_EXACT(ds::clipped_push(box(20, -1, 8, 16), true, I(30), g), 30);   // over the peak
+    CHECK_EXACT(ds::clipped_push(box(60, 1, 8, 16), true, I(-30), g), -19);  // from the right: to x = 41
+}
+
+TEST_CASE("walking over a roof between two half-height boxes: on the ground every frame") {
+    // '_' at x 32–48 and 64–80 (top 24), 'p' at x 48–64: roof 72 − x to
+    // the peak (56, 16), then x − 40.
+    Walker w({"......", ".._p_.", "######"}, walker(30, 8));
+    auto ground = [](double x) {
+        if (x < 48 || x >= 64) return 24.0;
+        return std::max(72 - x, x - 40);
+    };
+    for (int f = 0; f < 22; ++f) {
+        w.step(2);
+        const double x = w.body().x.v;
+        CAPTURE(x);
+        CHECK_EXACT(w.body().x, 32 + 2 * f);
+        CHECK_EXACT(w.body().y, ground(std::clamp(56.0, x, x + 8)) - 16);
+        CHECK(w.body().on_ground);
+    }
+    CHECK_EXACT(w.body().y, 8);
+}
+
+TEST_CASE("a jump into an underside stops the head on its lowest point over the span") {
+    const ds::TileGrid g = shaped_grid({"....", "..u.", "...."});
+    auto bump = [&](double x) {
+        Body b = box(x, 20, 8, 8);  // rose 20 px from its head at 40
+        b.vy = I(-20);
+        CHECK(ds::resolve_tile_collisions_y(b, &g, ds::CollisionMode::Swept));
+        return b.y;
+    };
+    CHECK_EXACT(bump(36), 32);  // over 36–44: the lowest point, (40, 32)
+    CHECK_EXACT(bump(42), 30);  // over 42–48: 72 − 42
+    CHECK_EXACT(bump(28), 28);  // over 32–36: 36 − 8
+}
+
+TEST_CASE("rays hit a roof's slopes with their normals") {
+    const ds::TileGrid g = shaped_grid({"....", "..p.", "...."});
+    auto left = ray(g, 36, 0, 36, 64);
+    REQUIRE(left.size() == 1);
+    CHECK(left[0].y == 20);
+    CHECK(left[0].nx == -1);
+    CHECK(left[0].ny == -1);
+    auto right = ray(g, 44, 0, 44, 64);
+    REQUIRE(right.size() == 1);
+    CHECK(right[0].y == 20);
+    CHECK(right[0].nx == 1);
+    CHECK(right[0].ny == -1);
+    CHECK(ray(g, 33, 16, 33, 22).empty());  // above the roof, inside the cell
+    CHECK(g.solid_at(40, 16));
+    CHECK_FALSE(g.solid_at(35, 20));
 }
 
 }  // TEST_SUITE

@@ -102,8 +102,6 @@ TEST_CASE("anything else is the whole cell, as before shapes were read") {
     rotated.rotation = 45;
     CHECK(whole({rotated}));
     CHECK(whole({rect(0, 8, 16, 8), rect(0, 0, 4, 4)}));                            // two objects
-    CHECK(whole({polygon({{0, 16}, {8, 8}, {16, 16}})}));                            // two slants
-    CHECK(whole({polygon({{0, 16}, {16, 16}, {16, 0}, {8, 8}, {0, 8}})}));           // not convex
     CHECK(whole({polygon({{2, 14}, {14, 14}, {14, 2}, {2, 14}})}) == false);         // a small triangle is a ramp
     MapObject line = polygon({{0, 16}, {16, 0}});
     line.shape = ObjectShape::Polyline;
@@ -156,12 +154,55 @@ TEST_CASE("shapes reaching past the tile that do not fit: the whole cell, with t
     CHECK(star.whole);
     CHECK(star.problem == "collision point (20, 16) lies outside the 16x16 tile and the polygon is not convex, so "
                           "its part inside is not read");
-    const ds::TileSolidPart roof = ds::tile_solid_part({polygon({{-8, 16}, {8, 0}, {24, 16}})}, 16, 16, 0);
-    CHECK(roof.whole);
-    CHECK(roof.problem == "the part of the collision polygon inside the 16x16 tile is neither a box nor a ramp");
+    const ds::TileSolidPart diamond = ds::tile_solid_part({polygon({{-4, 8}, {8, -4}, {20, 8}, {8, 20}})}, 16, 16, 0);
+    CHECK(diamond.whole);
+    CHECK(diamond.problem ==
+          "the part of the collision polygon inside the 16x16 tile has slanted edges both on its top and on its underside");
     const ds::TileSolidPart far = ds::tile_solid_part({polygon({{0, 16}, {33, 16}, {33, 0}})}, 16, 16, 0);
     CHECK(far.whole);
     CHECK(far.problem == "collision point (33, 16) lies more than a tile outside the 16x16 tile");
+}
+
+TEST_CASE("convex polygons with several slants on one side: a roof or an underside, left to right") {
+    // A peak: two slants meeting at (8, 8); the apex is where they meet.
+    CellShape peak = ramp(0, 8, 16, 16, Cut::Floor, 0, 16, 8, 8);
+    peak.n_more = 1, peak.more[0] = {8, 8, 16, 16};
+    CHECK(shape_of(polygon({{0, 16}, {8, 8}, {16, 16}})) == peak);
+    CHECK(peak.apex() == 8);
+    CHECK(peak.steepness() == 1.0);
+    // A pentagon (a house): walls 8 px high, a roof to (8, 0), drawn either way round.
+    CellShape house = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
+    house.n_more = 1, house.more[0] = {8, 0, 16, 8};
+    CHECK(shape_of(polygon({{0, 16}, {0, 8}, {8, 0}, {16, 8}, {16, 16}})) == house);
+    CHECK(shape_of(polygon({{16, 16}, {16, 8}, {8, 0}, {0, 8}, {0, 16}})) == house);
+    // A hill with a flat top and 1:2 and 2:1 sides: apex at the top's left end.
+    CellShape hill = ramp(0, 4, 16, 16, Cut::Floor, 0, 12, 4, 4);
+    hill.n_more = 1, hill.more[0] = {10, 4, 16, 16};
+    CHECK(shape_of(polygon({{0, 16}, {0, 12}, {4, 4}, {10, 4}, {16, 16}})) == hill);
+    CHECK(hill.apex() == 4);
+    CHECK(hill.steepness() == 2.0);
+    // Turned upside down: an underside, its lowest point the apex.
+    CellShape under = ramp(0, 0, 16, 16, Cut::Ceiling, 0, 8, 8, 16);
+    under.n_more = 1, under.more[0] = {8, 16, 16, 8};
+    CHECK(shape_of(polygon({{0, 16}, {0, 8}, {8, 0}, {16, 8}, {16, 16}}), V) == under);
+    CHECK(under.apex() == 8);
+    // A roof peaking above the tile: its part inside keeps the drawn lines,
+    // and the apex is the drawn peak's x.
+    CellShape clipped = ramp(0, 0, 16, 16, Cut::Floor, -8, 16, 8, 0);
+    clipped.n_more = 1, clipped.more[0] = {8, 0, 24, 16};
+    CHECK(shape_of(polygon({{-8, 16}, {8, 0}, {24, 16}})) == clipped);
+    CellShape tall = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, -8);
+    tall.n_more = 1, tall.more[0] = {8, -8, 16, 8};
+    CHECK(shape_of(polygon({{0, 16}, {0, 8}, {8, -8}, {16, 8}, {16, 16}})) == tall);
+    CHECK(tall.apex() == 8);
+    // Slants on both sides, or not convex: the whole cell, with the reason.
+    const ds::TileSolidPart diamond = ds::tile_solid_part({polygon({{8, 0}, {16, 8}, {8, 16}, {0, 8}})}, 16, 16, 0);
+    CHECK(diamond.whole);
+    CHECK(diamond.problem == "the collision polygon has slanted edges both on its top and on its underside");
+    const ds::TileSolidPart notch =
+        ds::tile_solid_part({polygon({{0, 16}, {16, 16}, {16, 0}, {8, 8}, {0, 8}})}, 16, 16, 0);
+    CHECK(notch.whole);
+    CHECK(notch.problem == "the collision polygon is not convex");
 }
 
 const char* kShapedTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
