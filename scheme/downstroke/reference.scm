@@ -406,7 +406,8 @@ exact when the position and size were."
 ;;; ---------------------------------------------------------------- shaped cells (§12)
 ;;; A cell as (tilemap-cell-shape tm col row) gives it: #f, 'solid, 'one-way,
 ;;; or a shape #(x0 y0 x1 y1 cut ax ay bx by one-way?) in tile px, CUT one of
-;;; box floor ceiling. The core computes every quantity of a shape in doubles
+;;; box floor ceiling, with an 11th slot listing further slants ((ax ay bx by)
+;;; ...) for a convex polygon cut by several. The core computes every quantity of a shape in doubles
 ;;; in one order of operations (src/detail/placed_shape.hpp); these do the
 ;;; same on flonums, so both get the same bits. Whole cells keep §4's rules,
 ;;; so a map without shapes is stepped as before.
@@ -425,12 +426,42 @@ exact when the position and size were."
 (define (p-box-top p) (+ (vector-ref p 2) (p-ref p 1)))
 (define (p-box-bottom p) (+ (vector-ref p 2) (p-ref p 3)))
 
+(define (shape-slants s)
+  "S's slanted lines, left to right, each (ax ay bx by)."
+  (cons (list (vector-ref s 5) (vector-ref s 6) (vector-ref s 7) (vector-ref s 8))
+        (if (> (vector-length s) 10) (vector-ref s 10) '())))
+(define (p-slants p) (shape-slants (vector-ref p 0)))
+
+(define (p-line-of p l x)
+  "Slant L's y at X: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx."
+  (apply (lambda (ax ay bx by)
+           (let ((ox (vector-ref p 1)) (oy (vector-ref p 2)) (dx (- bx ax)) (dy (- by ay)))
+             (/ (+ (* (+ oy ay) dx) (* (- (- x ox) ax) dy)) dx)))
+         l))
+
 (define (p-line p x)
-  "The slant's y at X: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx."
-  (let* ((ox (vector-ref p 1)) (oy (vector-ref p 2))
-         (ax (p-ref p 5)) (ay (p-ref p 6))
-         (dx (- (p-ref p 7) ax)) (dy (- (p-ref p 8) ay)))
-    (/ (+ (* (+ oy ay) dx) (* (- (- x ox) ax) dy)) dx)))
+  "The y at X of the line bounding the solid: the lowest of a floor shape's
+slants (greatest y), the highest of a ceiling shape's, the first of a tie."
+  (let ((floor? (eq? (p-cut p) 'floor)))
+    (let loop ((ls (cdr (p-slants p))) (v (p-line-of p (car (p-slants p)) x)))
+      (if (null? ls)
+          v
+          (let ((w (p-line-of p (car ls) x)))
+            (loop (cdr ls) (if (if floor? (< v w) (< w v)) w v)))))))
+
+(define (shape-apex s)
+  "Where (tile px) a floor shape's top is highest, a ceiling shape's bottom
+lowest: x1 when every slant climbs that way rightwards, x0 when none does,
+else the right end of the last that does (within [x0, x1])."
+  (let* ((slants (shape-slants s)) (n (length slants))
+         (climbs? (lambda (l) (if (eq? (cut-of s) 'floor) (< (list-ref l 3) (list-ref l 1))
+                                  (> (list-ref l 3) (list-ref l 1)))))
+         (last (let loop ((i 0) (ls slants) (last #f))
+                 (if (null? ls) last (loop (+ i 1) (cdr ls) (if (climbs? (car ls)) i last))))))
+    (cond ((not last) (vector-ref s 0))
+          ((= last (- n 1)) (vector-ref s 2))
+          (else (max (vector-ref s 0) (min (vector-ref s 2) (list-ref (list-ref slants last) 2)))))))
+(define (p-apex p) (+ (vector-ref p 1) (shape-apex (vector-ref p 0))))
 
 (define (clamp v lo hi) (cond ((< v lo) lo) ((< hi v) hi) (else v)))
 
@@ -445,13 +476,13 @@ exact when the position and size were."
         (b (if (< (p-right p) hi) (p-right p) hi)))
     (and (< a b) (cons a b))))
 
-(define (p-rise p) (- (p-ref p 8) (p-ref p 6)))
 (define (p-top-over p ab)
-  "The highest top over [a, b): at the end the line rises towards (b as the
-limit), the line being straight."
-  (p-top p (if (< (p-rise p) 0) (cdr ab) (car ab))))
+  "The highest top over [a, b): at the apex clamped to [a, b] (b as the
+limit), the top falling away from the apex on either side; for a ramp, the
+end its line rises towards."
+  (p-top p (clamp (p-apex p) (car ab) (cdr ab))))
 (define (p-bottom-over p ab)
-  (p-bottom p (if (> (p-rise p) 0) (cdr ab) (car ab))))
+  (p-bottom p (clamp (p-apex p) (car ab) (cdr ab))))
 (define (p-surface p ab) (if (eq? (p-cut p) 'floor) (p-top-over p ab) (p-box-top p)))
 (define (p-underside p ab) (if (eq? (p-cut p) 'ceiling) (p-bottom-over p ab) (p-box-bottom p)))
 (define (p-solid-over? p ab)
@@ -881,20 +912,21 @@ itself: not eq?, no equal #:id) (§4)."
 down. A shaped cell stops it by its shape (shape-stop)."
   (or (eq? cell 'solid) (and down? (eq? cell 'one-way))))
 
-(define (line-x p y)
-  "Where shape P's slant is at height Y: ((y·dx − (oy + ay)·dx) / dy + ax) + ox."
-  (let* ((ox (vector-ref p 1)) (oy (vector-ref p 2))
-         (ax (p-ref p 5)) (ay (p-ref p 6))
-         (dx (fl (- (p-ref p 7) ax))) (dy (fl (- (p-ref p 8) ay))))
-    (+ (+ (/ (- (* y dx) (* (+ oy ay) dx)) dy) ax) ox)))
+(define (line-x p l y)
+  "Where slant L of shape P is at height Y: ((y·dx − (oy + ay)·dx) / dy + ax) + ox."
+  (apply (lambda (ax ay bx by)
+           (let ((ox (vector-ref p 1)) (oy (vector-ref p 2)) (dx (fl (- bx ax))) (dy (fl (- by ay))))
+             (+ (+ (/ (- (* y dx) (* (+ oy ay) dx)) dy) ax) ox)))
+         l))
 
 (define (shape-stop b p x-axis? d)
   "How far (signed as D, a flonum) box B moves along an axis before it meets
 the solid of placed shape P, or #f: along y the feet onto its surface (down)
 or the head onto its underside (up); along x the leading face onto its near
-side where the box spans solid there, else the box's corner onto a slant
-facing the move (the feet for a floor ramp, the head for a ceiling one). A
-one-way shape stops only a move down."
+side where the box spans solid there, else the box's corner onto the slants
+facing the move before the apex (the feet for a floor, the head for a
+ceiling), the farthest of their lines at that height. A one-way shape stops
+only a move down."
   (let* ((fwd? (> d 0)) (d (fl d))
          (head (fl (y b))) (feet (fl (num+ (y b) (h b))))
          (lo (fl (x b))) (hi (fl (num+ (x b) (w b)))))
@@ -915,18 +947,24 @@ one-way shape stops only a move down."
          ((and crossed (< head (p-bottom p side)) (> feet (p-top p side))) (- side lead))
          ((not (and (< head (p-box-bottom p)) (> feet (p-box-top p)))) #f)
          (else
-          (let* ((rising (if fwd? (< (p-rise p) 0) (> (p-rise p) 0)))
-                 (level (cond ((and (eq? (p-cut p) 'floor) rising) feet)
-                              ((and (eq? (p-cut p) 'ceiling) (not rising)) head)
-                              (else #f))))
-            (and level
-                 (let* ((lx (line-x p level))
-                        (at (if fwd?
-                                (if (< lx (p-left p)) (p-left p) lx)
-                                (if (< (p-right p) lx) (p-right p) lx))))
+          (let* ((floor? (eq? (p-cut p) 'floor))
+                 (level (if floor? feet head))
+                 (lx (and (not (eq? (p-cut p) 'box))
+                          (fold (lambda (l x)
+                                  (let ((rising (if fwd? (< (list-ref l 3) (list-ref l 1))
+                                                    (> (list-ref l 3) (list-ref l 1)))))
+                                    (if (eq? rising floor?)
+                                        (let ((xi (line-x p l level)))
+                                          (if (or (not x) (if fwd? (< x xi) (< xi x))) xi x))
+                                        x)))
+                                #f (p-slants p)))))
+            (and lx
+                 (let ((at (if fwd?
+                               (if (< lx (p-left p)) (p-left p) lx)
+                               (if (< (p-right p) lx) (p-right p) lx))))
                    (and (if fwd?
-                            (and (<= lead at) (< at reach) (< at (p-right p)))
-                            (and (< reach at) (<= at lead) (> at (p-left p))))
+                            (and (<= lead at) (< at reach) (< at (p-right p)) (< at (p-apex p)))
+                            (and (< reach at) (<= at lead) (> at (p-left p)) (> at (p-apex p))))
                         (- at lead))))))))))))
 
 

@@ -479,6 +479,35 @@
   (list (tilemap-steepest-ramp (shaped ramp45)) (tilemap-steepest-ramp (shaped))))
 (test-equal "tilemap-solid-at? by shape: above the slope, under it" '(#f #t)
   (let ((m (shaped ramp45))) (list (tilemap-solid-at? m 20 4) (tilemap-solid-at? m 28 12))))
+;; A convex polygon cut by several slants on one side (§12): a house, 8 px
+;; walls under a 45° roof peaking at (8, 0); in cell (1, 0) of this map its
+;; roof is y = 24 − x up to (24, 0), then x − 24.
+(define house '(2 . (polygon (0 . 16) (0 . 8) (8 . 0) (16 . 8) (16 . 16))))
+(define house-map (make-tilemap 3 2 16 16 #(0 2 0 1 1 1) '(1) '() (list house)))
+(test-equal "tilemap-cell-shape: a polygon cut by two slants has their list in an 11th slot"
+  '(#(0 0 16 16 floor 0 8 8 0 #f ((8 0 16 8))) #(0 0 16 16 ceiling 0 8 8 16 #f ((8 16 16 8))) 1.0)
+  (list (tilemap-cell-shape house-map 1 0)
+        (tilemap-cell-shape (make-tilemap 1 1 16 16 #(#x40000002) '() '() (list house)) 0 0)
+        (tilemap-steepest-ramp house-map)))
+(test-equal "tilemap-solid-at? by a roof: at the peak, beside it above the slope" '(#t #f #t)
+  (list (tilemap-solid-at? house-map 24 0) (tilemap-solid-at? house-map 19 4) (tilemap-solid-at? house-map 19 6)))
+;; Falling 8 × 8 bodies land on the roof where it is highest under them:
+;; over [20, 28) the peak (feet 0), over [14, 22) the left slope at 22 (2),
+;; over [27, 35) the right slope at 27 (3); natively and in the reference.
+(for-each
+ (lambda (step name)
+   (let ((landed (map (lambda (x)
+                        (let loop ((s (make-scene #:entities (list (list #:x x #:y -40 #:width 8 #:height 8 #:gravity? #t))
+                                                  #:tilemap house-map))
+                                   (i 0))
+                          (if (= i 30)
+                              (let ((e (car (scene-entities s))))
+                                (list (entity-ref e #:y) (entity-ref e #:on-ground?)))
+                              (loop (step s 16) (+ i 1)))))
+                      '(20 14 27))))
+     (test-equal (string-append name ": bodies land on a roof's peak and slopes")
+       '((-8 #t) (-6 #t) (-5 #t)) landed)))
+ (list step-scene reference-step-scene) '("native" "reference"))
 (test-equal "make-tilemap: a polygon of 2 points"
   "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 2 points (3 at least make a shape)\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . 1))))))))
