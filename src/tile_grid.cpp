@@ -107,6 +107,8 @@ double CellShape::steepness() const {
     return k;
 }
 
+// The apex of a shape (semantics §12): where its surface over any span is
+// read, clamped to the span.
 int32_t CellShape::apex() const {
     // A floor's top climbs rightwards along a slant that rises (dy < 0), a
     // ceiling's bottom along one that falls (dy > 0).

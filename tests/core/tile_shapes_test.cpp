@@ -205,6 +205,47 @@ TEST_CASE("convex polygons with several slants on one side: a roof or an undersi
     CHECK(notch.problem == "the collision polygon is not convex");
 }
 
+const char* kPolygonTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.10" orientation="orthogonal" width="4" height="1" tilewidth="16" tileheight="16">
+ <tileset firstgid="1" name="roofs" tilewidth="16" tileheight="16" tilecount="3" columns="3">
+  <tile id="0"><objectgroup><object id="1" x="0" y="8"><polygon points="0,8 0,0 8,-8 16,0 16,8"/></object></objectgroup></tile>
+  <tile id="1"><objectgroup><object id="1" x="8" y="0"><polygon points="0,0 8,8 0,16 -8,8"/></object></objectgroup></tile>
+  <tile id="2"><objectgroup><object id="1" x="0" y="0"><polygon points="0,16 16,16 16,0 8,8 0,8"/></object></objectgroup></tile>
+ </tileset>
+ <layer id="1" name="ground" width="4" height="1">
+  <data encoding="csv">1,1073741825,2,3</data>
+ </layer>
+</map>)";
+
+TEST_CASE("a loaded map: a house and an upside-down one collide as drawn; a diamond and a notch warn") {
+    const ds::Tilemap m = ds::parse_tilemap(kPolygonTmx, "roofs.tmx");
+    const ds::TileGrid g = m.solid_grid();
+    CellShape house = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
+    house.n_more = 1, house.more[0] = {8, 0, 16, 8};
+    CellShape under = ramp(0, 0, 16, 16, Cut::Ceiling, 0, 8, 8, 16);
+    under.n_more = 1, under.more[0] = {8, 16, 16, 8};
+    REQUIRE(g.shape(0, 0) != nullptr);
+    CHECK(*g.shape(0, 0) == house);
+    REQUIRE(g.shape(1, 0) != nullptr);
+    CHECK(*g.shape(1, 0) == under);  // flipped vertically
+    CHECK(g.cell(2, 0) == ds::kSolidCell);
+    CHECK(g.cell(3, 0) == ds::kSolidCell);
+    CHECK(m.warnings == std::vector<std::string>{
+        "roofs.tmx: tileset 'roofs', tile 1: the collision polygon has slanted edges both on its top and on its "
+        "underside; its cells are solid whole",
+        "roofs.tmx: tileset 'roofs', tile 2: the collision polygon is not convex; its cells are solid whole"});
+}
+
+TEST_CASE("a polygon with more slants on one side than a shape may have is the whole cell") {
+    // A bowl-shaped hill in a 32 × 64 tile: ten slants on its top.
+    const ds::TileSolidPart round = ds::tile_solid_part(
+        {polygon({{0, 64}, {1, 48}, {2, 40}, {4, 32}, {8, 28}, {16, 26}, {24, 28}, {28, 32}, {30, 40}, {31, 48},
+                  {32, 64}})},
+        32, 64, 0);
+    CHECK(round.whole);
+    CHECK(round.problem == "the collision polygon has 10 slanted edges on its top, more than the 8 a shape may have");
+}
+
 const char* kShapedTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
 <map version="1.10" orientation="orthogonal" width="4" height="2" tilewidth="16" tileheight="16">
  <tileset firstgid="1" name="ramps" tilewidth="16" tileheight="16" tilecount="6" columns="6">

@@ -508,6 +508,13 @@
      (test-equal (string-append name ": bodies land on a roof's peak and slopes")
        '((-8 #t) (-6 #t) (-5 #t)) landed)))
  (list step-scene reference-step-scene) '("native" "reference"))
+(test-equal "make-tilemap: a polygon with slants on its top and its underside, one that is not convex"
+  '("In procedure make-tilemap: shapes: the shape of gid 1: the collision polygon has slanted edges both on its top and on its underside\n"
+    "In procedure make-tilemap: shapes: the shape of gid 1: the collision polygon is not convex\n")
+  (let ((refused (lambda (points)
+                   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() (list (cons 1 (cons 'polygon points)))))))))
+    (map refused '(((8 . 0) (16 . 8) (8 . 16) (0 . 8))
+                   ((0 . 16) (16 . 16) (16 . 0) (8 . 8) (0 . 8))))))
 (test-equal "make-tilemap: a polygon of 2 points"
   "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 2 points (3 at least make a shape)\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . 1))))))))
