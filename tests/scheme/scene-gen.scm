@@ -51,8 +51,10 @@
 ;;;   top of the floors and platforms, under ceilings and sprinkled anywhere,
 ;;;   gids 3–12 (shape-gids: 45°, 1:2 and 2:1 ramp pieces, a half-height box, a
 ;;;   4 px ledge, a small triangle, a one-way ramp), each with random flip bits
-;;;   (horizontal, vertical: a ceiling ramp, diagonal); tile edits on such maps
-;;;   may put ramps too.
+;;;   (horizontal, vertical: a ceiling ramp, diagonal), some drawn past their
+;;;   tile (gids 13–16) and some convex polygons with several slants (gids
+;;;   17–21: a house, a peak, a three-slant roof, ones reaching past the
+;;;   tile; each its own stream); tile edits on such maps may put ramps too.
 ;;; - Push-apart against the map (semantics §4), in about 1 map in 3 (its own
 ;;;   stream, map-pushers): boxes spawned inside solid and shaped cells, a
 ;;;   squeezed stack landing on a floor, two boxes pushed into a wall.
@@ -220,9 +222,9 @@
     (list cols rows (car ts) (cdr ts) (make-cells r cols rows))))
 
 ;;; ---------------------------------------------------------------- ramps (§12)
-;;; The shapes of gids 3–12 in a TW × TH tile, as make-tilemap takes them.
+;;; The shapes of gids 3–21 in a TW × TH tile, as make-tilemap takes them.
 (define (shape-gids tw th)
-  (let ((hw (quotient tw 2)) (hh (quotient th 2)))
+  (let ((hw (quotient tw 2)) (hh (quotient th 2)) (qw (quotient tw 4)) (qh (quotient th 4)))
     `((3 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0)))                  ; a whole-tile ramp
       (4 . (polygon (0 . ,th) (,tw . ,th) (,tw . ,hh)))                ; 1:2, lower
       (5 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0) (0 . ,hh)))        ; 1:2, upper
@@ -237,7 +239,13 @@
       (13 . (polygon (0 . ,(+ th hh)) (,(+ tw hw) . ,(+ th hh)) (,(+ tw hw) . 0))) ; past right and bottom
       (14 . (polygon (0 . ,th) (,(+ tw hw) . ,th) (,(+ tw hw) . 0)))   ; past right: slant ends off whole px
       (15 . (rect ,(- hw) ,(- hh) ,tw ,th))                            ; a box past left and top
-      (16 . (polygon (,(- hw) . ,(- hh)) (,tw . ,(- hh)) (,(- hw) . ,th)))))) ; a ceiling ramp past left and top
+      (16 . (polygon (,(- hw) . ,(- hh)) (,tw . ,(- hh)) (,(- hw) . ,th))) ; a ceiling ramp past left and top
+      ;; Convex polygons cut by several slants on one side (§12).
+      (17 . (polygon (0 . ,th) (0 . ,hh) (,hw . 0) (,tw . ,hh) (,tw . ,th)))  ; a house
+      (18 . (polygon (0 . ,th) (,hw . ,hh) (,tw . ,th)))                       ; a peak
+      (19 . (polygon (0 . ,th) (,qw . ,hh) (,hw . ,qh) (,tw . ,th)))           ; three slants
+      (20 . (polygon (0 . ,th) (0 . ,hh) (,hw . ,(- hh)) (,tw . ,hh) (,tw . ,th))) ; peaking above the tile
+      (21 . (polygon (,(- hw) . ,th) (,hw . 0) (,(+ tw hw) . ,th))))))        ; slopes past left and right
 
 (define ramp-one-way-gids '(11))
 
@@ -256,12 +264,19 @@
   (+ (wpick r '((30 . 3) (12 . 4) (12 . 5) (6 . 6) (6 . 7) (8 . 8) (6 . 9) (5 . 10) (10 . 11) (5 . 12)))
      (flip-bits r)))
 
+;;; A shape cell's gid, or in about one in six (a draw from R3, a stream of
+;;; its own) a convex polygon cut by several slants (gids 17–21), same flips.
+(define (polygonal r3 gid)
+  (if (chance r3 1 6)
+      (logior (logand gid #xE0000000) (pick r3 '(17 18 19 20 21)))
+      gid))
+
 ;;; In about 2 maps in 5, ramps: on the empty cells just above solid ones (on
 ;;; floors and platforms, and pieces of ramps two tiles long), under solid ones,
 ;;; and a few anywhere. A stream of its own, salted by the seed: the other maps
 ;;; and every draw of the scene stay as they were.
 (define (add-ramps! seed cols rows cells)
-  (let ((r (make-rng seed 7919)) (r2 (make-rng seed 7927)))
+  (let ((r (make-rng seed 7919)) (r2 (make-rng seed 7927)) (r3 (make-rng seed 7933)))
     (when (chance r 2 5)
       (let ((solid? (lambda (c row) (and (< -1 c cols) (< -1 row rows)
                                          (eqv? 1 (vector-ref cells (+ c (* cols row)))))))
@@ -271,11 +286,11 @@
             (let ((i (+ c (* cols row))))
               (when (eqv? 0 (vector-ref cells i))
                 (cond ((and (solid? c (+ row 1)) (chance r density 10))
-                       (vector-set! cells i (reaching r2 (ramp-gid r))))
+                       (vector-set! cells i (polygonal r3 (reaching r2 (ramp-gid r)))))
                       ((and (solid? c (- row 1)) (chance r 1 6))
-                       (vector-set! cells i (logior #x40000000 (reaching r2 (ramp-gid r)))))
+                       (vector-set! cells i (logior #x40000000 (polygonal r3 (reaching r2 (ramp-gid r))))))
                       ((chance r 1 40)
-                       (vector-set! cells i (reaching r2 (ramp-gid r)))))))))))))
+                       (vector-set! cells i (polygonal r3 (reaching r2 (ramp-gid r))))))))))))))
 
 (define (ramped? spec)
   (and spec (let ((v (list-ref spec 4)))
