@@ -96,8 +96,8 @@ constexpr int kMaxPropertyDepth = 32;
 constexpr int kMaxJsonDepth = 4 * kMaxGroupDepth;
 
 // Points of one collision polygon (a tileset tile's shape): the engine
-// collides a shape that simplifies to a box, or a box cut by one slant (at
-// most 5 corners), and the real tilesets we read draw at most 10 points;
+// collides a convex polygon (at most kMaxShapeSlants slants on a side), and
+// the real tilesets we read draw at most 10 points;
 // 256 leaves room for outlines drawn with many points along their edges,
 // while a forged polygon of 10^6 points is refused as its tileset is read.
 constexpr size_t kMaxShapePoints = 256;

@@ -19,9 +19,10 @@ struct TileSolidPart {
     CellShape shape;
     // Why the objects collide as nothing (a rectangle or polygon with no
     // area, or no area inside the tile) or as the whole cell although they
-    // tried to be a shape (a polygon reaching past the tile that is not
-    // convex, or whose part inside is neither a box nor a ramp): the loader
-    // warns with this text. Empty otherwise.
+    // tried to be a shape (a polygon that is not convex, or whose part
+    // inside has slanted edges on both its top and its underside, or more
+    // than kMaxShapeSlants): the loader warns with this text. Empty
+    // otherwise.
     std::string problem;
 };
 
@@ -30,12 +31,12 @@ struct TileSolidPart {
 // text, a tile, a rotated object) is the whole cell. Coordinates are rounded
 // to whole px; `flips` are the raw gid's flip bits (kFlipDiagonal first, then
 // kFlipHorizontal, then kFlipVertical, as Tiled turns a tile). A rectangle or
-// polygon filling the tile is the whole cell; a polygon that is its bounding
-// box cut by one slanted edge (a triangle or trapezoid with a horizontal and
-// a vertical side) is a ramp; any other polygon is the whole cell. A
-// rectangle or convex polygon reaching past the tile (by at most
-// kMaxShapeReachTiles) is clipped to the tile's square, exactly, and its
-// part inside is read by the same rule; a shape with no area, or none
+// convex polygon is clipped to the tile's square, exactly (it may reach past
+// it by at most kMaxShapeReachTiles): its part inside filling the tile is
+// the whole cell; with no slanted edge it is a part-tile box; with slanted
+// edges all on its top (or all on its underside) it is its bounding box cut
+// by each edge's line (one edge: a ramp); with slanted edges on both, or a
+// polygon that is not convex, the whole cell. A shape with no area, or none
 // inside the tile, is nothing.
 TileSolidPart tile_solid_part(const std::vector<MapObject>& objects, int tile_w, int tile_h, uint32_t flips);
 
