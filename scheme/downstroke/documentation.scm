@@ -103,6 +103,7 @@
     (current-display . "A parameter: what the running game draws into (its window or off-screen picture), or #f outside game-run!; draw-rect and the other draw- procedures draw there.")
     ;; (downstroke engine)
     (game-paused? . "Whether GAME is paused (game-paused-set!): its ticks then read input and call the paused: hook and render:, and step nothing.")
+    (once . "(once FORM …) evaluates the FORMs when the script first runs, and not when reload-script! (or --watch) evaluates the script again: load-sound, add-frame-hook!, whatever must happen once a game. Its value is the last FORM's, unspecified in a reload. A definition that keeps its first value is written (define-once NAME VALUE).")
     ;; (downstroke history)
     (frame-ring? . "Whether OBJ is a frame ring (made by make-frame-ring).")
     ;; (downstroke live)

@@ -19,6 +19,7 @@
 ;;;   (downstroke costs)       engine-stats and the collector
 ;;;   (downstroke misspelt-keys) slips of engine keys
 ;;;   (downstroke script-arguments) what the script was started with
+;;;   (downstroke script-reload) the script evaluated again in the running game
 ;;; docs/engine.org, "make-game" and "A complete game".
 (define-module (downstroke engine)
   #:use-module (downstroke native)
@@ -32,6 +33,7 @@
   #:use-module (downstroke sound)
   #:use-module (downstroke costs)
   #:use-module (downstroke script-arguments)
+  #:use-module ((downstroke script-reload) #:select (reload-script! once script-reloading?))
   #:use-module (downstroke hook-errors)
   #:use-module ((downstroke live) #:select (game-watch-maps! watch-default))
   #:use-module (downstroke frame-hooks)
@@ -55,7 +57,8 @@
                strict-games frame-pacing hook-error-reporter hook-time-limit main-script? script-number-argument engine-stats
                gc-space-divisor set-gc-space-divisor!
                game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log
-               input-held-actions input-log->script record-input read-input-script))
+               input-held-actions input-log->script record-input read-input-script
+               reload-script! once))
 
 
 ;; A hook's Scheme stack, in bytes. Guile grows its stack on demand without
@@ -179,9 +182,16 @@ closing the window quits); or drawn off-screen into PNG files with
 `downstroke --capture DIR'.
 
 Games run one after another: game-run! while a game is running (from its
-hooks, or from a REPL served into it) is an error."
+hooks, or from a REPL served into it) is an error. While the script is
+evaluated again (reload-script!), game-run! runs nothing and returns the
+running game (GAME when none runs): the game goes on where it was."
   (check-game "game-run!" game)
   (check-frames frames)
+  (if (script-reloading?)
+      (or (current-game) game)
+      (run-game! game frames)))
+
+(define (run-game! game frames)
   ;; One frame loop at a time: game-run! from a hook or a REPL evaluation of
   ;; a running game would nest a loop in its frame, and again in that one's.
   (when (current-game)

@@ -10,7 +10,7 @@
   #:use-module ((downstroke world) #:select (scene?))
   #:use-module (downstroke arity)
   #:export (%make-game game? game-title game-width game-height game-frame-delay
-            game-scene %game-scene-set! game-update %game-update-set! game-render
+            game-scene %game-scene-set! game-update %game-update-set! game-render %game-render-set!
             game-engine-update %game-engine-update-set!
             game-collision-mode %game-collision-mode-set! game-substeps %game-substeps-set!
             game-push-rule
@@ -22,7 +22,7 @@
             game-display game-debug-draw? %game-debug-draw-set!
             %game-input-log %game-input-log-set! game-stack-limit
             game-pause-when-unfocused? game-interpolate? game-strict? game-slips-warned
-            game-bindings game-paused? %game-paused-set! game-paused-update
+            game-bindings game-paused? %game-paused-set! game-paused-update %game-paused-update-set!
             game-paused-ticks game-paused-ticks-set! game-pause-marks game-pause-marks-set!
             game-live game-live-set!
             check-game check-scene-or-false check-hook-or-false
@@ -44,7 +44,7 @@
   (frame-delay game-frame-delay)
   (scene game-scene %game-scene-set!)
   (update game-update %game-update-set!)
-  (render game-render)
+  (render game-render %game-render-set!)  ; set only by a script's reload (script-reload.scm)
   (engine-update game-engine-update %game-engine-update-set!)
   (collision-mode game-collision-mode %game-collision-mode-set!)
   (push-rule game-push-rule %game-push-rule-set!)
@@ -68,7 +68,7 @@
   (slips-warned game-slips-warned)  ; the misspelt keys warned of, a hash table: once each
   (bindings game-bindings)          ; a <bindings> of its input map, or #f when it is not known
   (paused game-paused? %game-paused-set!)      ; game-paused-set!: ticks run the paused: hook, not a frame
-  (paused-update game-paused-update)          ; (game dt) called in each paused tick, or #f
+  (paused-update game-paused-update %game-paused-update-set!)  ; (game dt) called in each paused tick, or #f
   ;; Ticks spent paused so far: the input clock (input-clock) counts them.
   (paused-ticks game-paused-ticks game-paused-ticks-set!)
   ;; A bounded log of (frame . the ticks paused before the pause at that

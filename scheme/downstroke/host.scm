@@ -8,7 +8,7 @@
   #:use-module (ice-9 format)
   #:use-module ((rnrs bytevectors) #:select (string->utf8 utf8->string bytevector->u8-list u8-list->bytevector))
   #:use-module ((srfi srfi-1) #:select (any find))
-  #:export (main script-interfaces use-script-environment!))
+  #:export (main script-interfaces use-script-environment! load-script))
 
 ;;; What a script run by `downstroke' (and its REPL) sees without importing
 ;;; anything: the engine, and the list and multiple-value tools Scheme game
@@ -262,6 +262,8 @@
         (save-module-excursion
          (lambda ()
            (set-current-module (use-script-environment! (resolve-module '(guile-user))))
+           ;; Before the load, inside which the game runs and may reload it.
+           ((@ (downstroke script-reload) script-loaded!) path (current-module) compile?)
            (load-script path compile?)))
         0)
       (lambda (key . args)

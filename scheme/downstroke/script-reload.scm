@@ -1,0 +1,163 @@
+;; SPDX-License-Identifier: MIT
+;;; (downstroke script-reload) — a game's script evaluated again in the
+;;; running game: its new definitions take effect at the next frame, and
+;;; the game record, its scene and its history stay. docs/repl.org, "Live
+;;; editing".
+;;;
+;;; The script is loaded again as the host loaded it (compiled, in the
+;;; module it ran in), so every top-level form runs again; the ones that
+;;; must not are written in (once …) or define-once. A game-run! reached
+;;; again starts nothing (engine.scm). A hook the game was made with that
+;;; was the value of one of the script's top-level names is re-pointed to
+;;; that name's new value; a name that held the running game holds it
+;;; again. A reload that fails puts every top-level name of the script's
+;;; module back as it was, and reports the error as a failing hook's is.
+(define-module (downstroke script-reload)
+  #:use-module ((srfi srfi-1) #:select (find filter-map))
+  #:use-module (downstroke game)
+  #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter))
+  #:export (reload-script! once script-reloading? script-loaded! script-file script-files))
+
+;; #t while a script is being evaluated again: (once …) skips its forms and
+;; game-run! starts nothing.
+(define script-reloading? (make-parameter #f))
+
+(define-syntax-rule (once form form* ...)
+  ;; Documented in (downstroke documentation): a macro has no docstring.
+  (if (script-reloading?) *unspecified* (begin form form* ...)))
+
+;;; The script the host runs: one a process. (file module compile?), or #f.
+(define the-script #f)
+
+(define (script-loaded! file module compile?)
+  ;; FILE (a canonical path) is the game's script, loaded into MODULE,
+  ;; compiled when COMPILE? (the host's --no-auto-compile makes it #f).
+  (set! the-script (list file module compile?)))
+
+(define (script-file)
+  "The file of the script the host is running (its canonical path), or #f."
+  (and the-script (car the-script)))
+
+(define (script-files)
+  "The files a reload evaluates again: the script, then the files it loads
+by a literal name, each once; () when no script runs."
+  (if the-script ((@ (downstroke script-source) loaded-files) (car the-script)) '()))
+
+;;; ---------------------------------------------------------------- the names kept
+
+(define (module-bindings module)
+  ;; ((name variable bound? . value) …) of MODULE's own top-level names.
+  (let ((acc '()))
+    (module-for-each (lambda (name var)
+                       (set! acc (cons (cons* name var (variable-bound? var)
+                                              (and (variable-bound? var) (variable-ref var)))
+                                       acc)))
+                     module)
+    acc))
+
+(define (restore-bindings! module kept)
+  ;; MODULE's names as KEPT (module-bindings) had them: a name the failed
+  ;; reload added is removed, one it changed is set back.
+  (let ((added '()))
+    (module-for-each (lambda (name var) (unless (assq name kept) (set! added (cons name added))))
+                     module)
+    (for-each (lambda (name) (module-remove! module name)) added))
+  (for-each (lambda (entry)
+              (let ((name (car entry)) (var (cadr entry)) (bound? (caddr entry)) (value (cdddr entry)))
+                (unless (eq? (module-local-variable module name) var)
+                  (module-add! module name var))
+                (if bound? (variable-set! var value) (variable-unset! var))))
+            kept))
+
+;;; ---------------------------------------------------------------- re-pointing
+;;; The game's hooks are procedure values in its record: a hook given as
+;;; update: update holds the procedure `update' had when the game was made,
+;;; which a new (define (update …)) does not change. A hook called through
+;;; its name, update: (lambda (g dt) (update g dt)), needs nothing.
+
+;; (what getter setter): the hooks a reload re-points, with the name
+;; check-hook-or-false gives each.
+(define hook-slots
+  (list (list 'update game-update %game-update-set!)
+        (list 'render game-render %game-render-set!)
+        (list 'engine-update game-engine-update %game-engine-update-set!)
+        (list 'paused game-paused-update %game-paused-update-set!)))
+
+(define (names-holding value kept)
+  ;; The names KEPT (module-bindings) bound to VALUE itself.
+  (filter-map (lambda (entry) (and (caddr entry) (eq? (cdddr entry) value) (car entry))) kept))
+
+(define (hook-names game kept)
+  ;; ((slot name …) …): for each hook of GAME, the script's names that held it.
+  (if game
+      (filter-map (lambda (slot)
+                    (let ((hook ((cadr slot) game)))
+                      (and (procedure? hook)
+                           (let ((names (names-holding hook kept)))
+                             (and (pair? names) (cons slot names))))))
+                  hook-slots)
+      '()))
+
+(define (re-point! game module held game-names)
+  ;; Each hook in HELD (hook-names) set to the new value of the first of its
+  ;; names the reload gave a new procedure, all checked before any is set;
+  ;; each of GAME-NAMES set back to GAME where the reload bound it to
+  ;; another game.
+  (let ((changes
+         (filter-map (lambda (entry)
+                       (let* ((slot (car entry)) (old ((cadr slot) game))
+                              (new (find (lambda (value) (and (procedure? value) (not (eq? value old))))
+                                         (map (lambda (name) (module-ref module name #f)) (cdr entry)))))
+                         (and new (cons slot new))))
+                     held)))
+    (for-each (lambda (change) (check-hook-or-false "reload-script!" (car (car change)) (cdr change)))
+              changes)
+    (for-each (lambda (change) ((caddr (car change)) game (cdr change))) changes))
+  (for-each (lambda (name)
+              (let ((var (module-local-variable module name)))
+                (when (and var (variable-bound? var) (game? (variable-ref var))
+                           (not (eq? (variable-ref var) game)))
+                  (variable-set! var game))))
+            game-names))
+
+;;; ---------------------------------------------------------------- reloading
+
+(define (report-to-warning-port text)
+  (display text (current-warning-port))
+  (force-output (current-warning-port)))
+
+(define* (reload-script! #:optional (game (current-game)))
+  "Evaluate the game's script (the FILE.scm downstroke runs, with the files
+it loads) again in the module it runs in: new definitions take effect at the
+next frame; GAME (by default the running game), its scene and history stay.
+Forms in (once …) and define-once are not run again, and game-run! starts
+nothing. GAME's hooks (update:, render:, engine-update:, paused:) that were
+the value of a top-level name of the script are set to that name's new
+value. An error while reloading puts every top-level name back as it was,
+is reported as a failing hook's is (on the warning port; in a served game,
+to the REPL too) and the game runs on. Returns #t when it reloaded, #f when
+it failed."
+  (when game (check-game "reload-script!" game))
+  (unless the-script
+    (scm-error 'misc-error "reload-script!"
+               "no script to reload: only a script run by downstroke (downstroke FILE.scm) can be reloaded"
+               '() #f))
+  (let* ((file (car the-script)) (module (cadr the-script)) (compile? (caddr the-script))
+         (kept (module-bindings module))
+         (held (hook-names game kept))
+         (game-names (if game (names-holding game kept) '())))
+    (parameterize ((hook-error-reporter (or (hook-error-reporter) report-to-warning-port))
+                   (script-reloading? #t))
+      (call-reporting
+       (lambda ()
+         (format #f "reloading ~a raised an error; its old definitions stay, and the game runs on" file))
+       (lambda ()
+         (save-module-excursion
+          (lambda ()
+            (set-current-module module)
+            ((@ (downstroke host) load-script) file compile?)))
+         (when game (re-point! game module held game-names))
+         #t)
+       (lambda ()
+         (restore-bindings! module kept)
+         #f)))))
