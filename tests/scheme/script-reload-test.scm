@@ -1,0 +1,192 @@
+;; SPDX-License-Identifier: MIT
+;;; A game's script evaluated again under the running game (reload-script!):
+;;; the next frame runs the new procedures, the game, its scene and history
+;;; stay; (once …) and define-once are not run again; a broken script
+;;; leaves the old definitions, says why, and the game runs on.
+(use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 textual-ports) (downstroke)
+             ((downstroke game) #:select (current-game))
+             ((downstroke script-reload) #:select (script-loaded!)))
+
+(load "support.scm")
+
+(test-begin "script-reload")
+
+(define dir (mkdtemp (string-append (or (getenv "TMPDIR") "/tmp") "/ds-reload-XXXXXX")))
+(define script (string-append dir "/game.scm"))
+
+(define (write-script! text)
+  (call-with-output-file script (lambda (port) (display text port))))
+
+;; The first lines of every version: a count of the script's evaluations,
+;; and one of its (once …) forms' runs.
+(define counting
+  "(define-once runs 0)
+(set! runs (+ runs 1))
+(define-once once-runs 0)
+(once (set! once-runs (+ once-runs 1)))
+")
+
+(define (updating version)
+  ;; An update leaving one entity that says which version ran it, in which frame.
+  (format #f "(define (update game dt)
+  (game-scene-set! game (update-scene (game-scene game)
+                                      entities: (list (list #:id 'a #:frame (game-frame game) #:version '~a)))))
+" version))
+
+(define (script-module)
+  ;; A script's module, as the host makes guile-user one.
+  (let ((m ((@ (downstroke host) use-script-environment!) (make-fresh-user-module))))
+    (set-module-declarative?! m #f)
+    m))
+
+(define (run-script! text)
+  ;; TEXT written as the script and run as the host runs one; its module.
+  (write-script! text)
+  (let ((m (script-module)))
+    (save-module-excursion
+     (lambda ()
+       (set-current-module m)
+       (script-loaded! script m #t)
+       ((@ (downstroke host) load-script) script #t)))
+    m))
+
+(define (versions game)
+  ;; (frame version) of the frames GAME's history holds, oldest first, and
+  ;; of its scene now.
+  (map (lambda (scene)
+         (let ((e (car (scene-entities scene))))
+           (list (entity-ref e #:frame) (entity-ref e #:version))))
+       (append (reverse (filter-map (lambda (entry) (and (pair? (scene-entities (cdr entry))) (cdr entry)))
+                                    (game-history game)))
+               (list (game-scene game)))))
+
+(define (reload-at! frame game edit)
+  ;; A frame hook that, at the start of FRAME, saves the script as (EDIT)
+  ;; makes it and reloads it: the author saving in an editor. Its result is
+  ;; (reload-result).
+  (let ((result 'not-reached))
+    (add-frame-hook! (lambda ()
+                       (when (and (eq? (current-game) game) (= (game-frame game) frame)
+                                  (eq? result 'not-reached))
+                         (write-script! (edit))
+                         (set! result (reload-script!)))))
+    (lambda () result)))
+
+;;; ---------------------------------------------------------------- a new procedure
+(define m (run-script! (string-append counting (updating "old") "
+(define game (make-game scene: (make-scene entities: '()) update: update history: 20))
+")))
+(define game (module-ref m 'game))
+(define old-update (game-update game))
+(define reload-result
+  (reload-at! 5 game (lambda () (string-append counting (updating "new") "
+(define game (make-game scene: (make-scene entities: '()) update: update history: 20))
+"))))
+(game-run! game frames: 10)
+
+(test-equal "the reload says it reloaded" #t (reload-result))
+(test-equal "the frames before it ran the old update, the frames from it on the new one"
+  '((0 old) (1 old) (2 old) (3 old) (4 old) (5 new) (6 new) (7 new) (8 new) (9 new))
+  (versions game))
+(test-assert "the game's update: is the script's new update"
+  (and (eq? (game-update game) (module-ref m 'update)) (not (eq? (game-update game) old-update))))
+(test-assert "the script's `game' is the running game again, not the one its reload made"
+  (eq? (module-ref m 'game) game))
+(test-equal "the script ran twice, its (once …) form once" '(2 1)
+  (list (module-ref m 'runs) (module-ref m 'once-runs)))
+(test-equal "the running game went on to its end" 10 (game-frame game))
+(test-equal "rewinding past the reload finds the scenes the old update made"
+  '(3 (2 old))
+  (begin (game-rewind! game 7)
+         (let ((e (car (scene-entities (game-scene game)))))
+           (list (game-frame game) (list (entity-ref e #:frame) (entity-ref e #:version))))))
+(test-equal "… and stepping on from there runs the new one: the procedures are the script's now"
+  '(4 (3 new))
+  (begin (game-run! game frames: 4)
+         (let ((e (car (scene-entities (game-scene game)))))
+           (list (game-frame game) (list (entity-ref e #:frame) (entity-ref e #:version))))))
+
+;;; ---------------------------------------------------------------- game-run! in the script
+;;; As a game's script is written: it runs the game itself, and the reload
+;;; comes inside that run. Its game-run!, reached again, starts no second
+;;; loop (it would be refused: a game is running) and returns the running game.
+(define m2 (run-script! (string-append counting (updating "old") "
+(define-once game (make-game scene: (make-scene entities: '()) update: update history: 20))
+(once (add-frame-hook!
+       (lambda ()
+         (when (and (= (game-frame game) 4) (eq? reloaded 'not-reached))
+           (set! reloaded (reload-script!))))))
+(define-once reloaded 'not-reached)
+(define ran (game-run! game frames: 8))
+(define frame-ran (game-frame ran))
+")))
+(define game2 (module-ref m2 'game))
+(test-equal "the reload inside the script's own run reloaded" #t (module-ref m2 'reloaded))
+(test-equal "the game ran to its end once" 8 (game-frame game2))
+(test-assert "game-run! returned the running game" (eq? (module-ref m2 'ran) game2))
+;; The reload saw the game at frame 4; the first load's frame-ran, 8, was
+;; set after the run returned.
+(test-equal "… and the first load's game-run! returned after the reload's" 8 (module-ref m2 'frame-ran))
+(test-equal "its (once …) ran once" '(2 1) (list (module-ref m2 'runs) (module-ref m2 'once-runs)))
+
+;;; ---------------------------------------------------------------- a broken script
+(define (broken-reload version-text)
+  ;; GAME of a fresh script reloaded at frame 5 from VERSION-TEXT: (result
+  ;; versions warning-text module game).
+  (let* ((m (run-script! (string-append counting (updating "old") "
+(define game (make-game scene: (make-scene entities: '()) update: update history: 20))
+")))
+         (game (module-ref m 'game))
+         (result (reload-at! 5 game (lambda () version-text)))
+         (warnings (call-with-output-string
+                    (lambda (port)
+                      (parameterize ((current-warning-port port))
+                        (game-run! game frames: 10))))))
+    (list (result) (versions game) warnings m game)))
+
+(define all-old '((0 old) (1 old) (2 old) (3 old) (4 old) (5 old) (6 old) (7 old) (8 old) (9 old)))
+(define report-head
+  (string-append "downstroke: reloading " script " raised an error; its old definitions stay, and the game runs on:\n"))
+
+(define top-level-error
+  (broken-reload (string-append counting (updating "new") "(define added 1)\n(car '())\n")))
+(test-equal "an error at the top level: the reload says it failed" #f (first top-level-error))
+(test-equal "… every frame ran the old update" all-old (second top-level-error))
+(test-assert "… the report says which script and that the game runs on"
+  (string-prefix? report-head (third top-level-error)))
+(test-assert "… and ends with the error"
+  (string-suffix? "In procedure car: Wrong type argument in position 1 (expecting pair): ()\n"
+                  (third top-level-error)))
+(test-equal "… the names it had redefined are back, the one it added gone, its counts as before"
+  '(#t #f 1 1)
+  (let ((m (fourth top-level-error)))
+    (list (eq? (module-ref m 'update) (game-update (fifth top-level-error)))
+          (module-defined? m 'added) (module-ref m 'runs) (module-ref m 'once-runs))))
+
+(define unreadable (broken-reload (string-append counting (updating "new") "(define (oops")))
+(test-equal "a script that cannot be read: the reload says it failed" #f (first unreadable))
+(test-equal "… the game ran on with the old update" all-old (second unreadable))
+(test-assert "… the report names the script and ends with the reader's error, at its place"
+  (and (string-prefix? report-head (third unreadable))
+       (string-suffix? (string-append script ":8:14: unexpected end of input while searching for: )\n")
+                       (third unreadable))))
+
+(define wrong-arity
+  (broken-reload (string-append counting "(define (update game) 'one-argument)\n"
+                                "(define game (make-game scene: (make-scene entities: '()) history: 20))\n")))
+(test-equal "an update of the wrong arity is refused: the reload failed" #f (first wrong-arity))
+(test-equal "… and the old update stays" all-old (second wrong-arity))
+(test-assert "… said as make-game says it"
+  (string-suffix? (string-append "In procedure reload-script!: update: expected a procedure of (game dt), got update, a procedure of (game), at "
+                                 script ":5:0\n")
+                  (third wrong-arity)))
+
+;;; ---------------------------------------------------------------- bad calls
+(test-equal "reload-script! of something not a game is refused, naming it"
+  "In procedure reload-script!: game: expected a game (make-game), got nope\n"
+  (error-text (lambda () (reload-script! 'nope))))
+
+(delete-file script)
+(rmdir dir)
+
+(test-end "script-reload")
