@@ -526,6 +526,47 @@ In procedure frame hook: the hook ran past the 2 s limit (--repl-timeout): inter
   (run-joined "--no-auto-compile" "--repl-server" (string-append dir "/flonum.sock") flonum-script))
 (delete-file flonum-script)
 
+;;; reload-script! from the REPL: the served game's script, saved with a new
+;;; update, evaluated again in the running game; a broken one reported to
+;;; the client, the game running on. The script runs its game in (once …):
+;;; a reload must not print "ready" again, nor exit.
+(define reload-script (string-append dir "/reloaded.scm"))
+(define (write-reloaded! version)
+  (call-with-output-file reload-script
+    (lambda (p)
+      (format p "(define (update game dt)
+  (game-scene-set! game (update-scene (game-scene game) entities: (list (list #:id 'box #:version '~a)))))
+(define-once game (make-game frame-delay: 16 scene: (make-scene entities: '()) update: update))
+(once (display \"ready\\n\") (force-output) (game-run! game frames: 3000) (display \"timeout\\n\") (exit 3))
+" version))))
+(define (version-now c)
+  (value c "(entity-ref (car (scene-entities (game-scene game))) #:version)"))
+(write-reloaded! "old")
+(define reload-path (string-append dir "/reload.sock"))
+(define reloading (let ((g (open-pipe* OPEN_READ host "--repl-server" reload-path reload-script)))
+                    (read-line g)       ; "ready"
+                    g))
+(define r (open-client reload-path))
+(test-equal "a served game runs its script's update" 'old (version-now r))
+(write-reloaded! "new")
+(test-equal "(reload-script!) from the REPL reloads it" "#t\n" (answer r "(reload-script!)"))
+(test-equal "… and the next frames run the new update" 'new (version-now r))
+(call-with-output-file reload-script (lambda (p) (display "(define (update game dt) (car '()))\n(car '())\n" p)))
+(define reload-report (begin (send! r "(reload-script!)") (read-until r prompt)))
+(test-assert "a broken script's reload is reported to the client, and fails"
+  (and (string-contains reload-report
+                        (string-append "downstroke: reloading " reload-script
+                                       " raised an error; its old definitions stay, and the game runs on:\n"))
+       (string-contains reload-report "In procedure car: Wrong type argument in position 1 (expecting pair): ()\n")
+       (string-suffix? "#f\n" (string-drop-right reload-report (string-length prompt)))))
+(define frame-after-reload (value r "(game-frame game)"))
+(usleep 100000)
+(test-assert "… and the game runs on with the update it had"
+  (and (< frame-after-reload (value r "(game-frame game)")) (eq? 'new (version-now r))))
+(test-equal "the reloaded game ends by itself (exit 0)" 0 (stop-served reloading r))
+(close-port r)
+(delete-file reload-script)
+
 ;;; Options, and the game without a server.
 (test-assert "--help documents --repl-timeout"
   (string-contains (cdr (run-joined "--help")) "--repl-timeout S"))
