@@ -33,7 +33,7 @@
   #:use-module (downstroke sound)
   #:use-module (downstroke costs)
   #:use-module (downstroke script-arguments)
-  #:use-module ((downstroke script-reload) #:select (reload-script! once script-reloading?))
+  #:use-module ((downstroke script-reload) #:select (reload-script! game-watch-script! once script-reloading?))
   #:use-module (downstroke hook-errors)
   #:use-module ((downstroke live) #:select (game-watch-maps! watch-default))
   #:use-module (downstroke frame-hooks)
@@ -58,7 +58,7 @@
                gc-space-divisor set-gc-space-divisor!
                game-debug-draw? game-debug-draw-set! game-capture game-pixel game-input-log
                input-held-actions input-log->script record-input read-input-script
-               reload-script! once))
+               reload-script! game-watch-script! once))
 
 
 ;; A hook's Scheme stack, in bytes. Guile grows its stack on demand without

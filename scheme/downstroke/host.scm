@@ -441,9 +441,10 @@ Runs FILE.scm with (downstroke) imported, or a REPL when no file is given.
                       the steps dropped after stalls so far
   --debug             start with the debug overlay on (F1 toggles it in a window)
   --watch             reload a running game's map when it or a file it reads
-                      (a tileset, a template, a picture) changes on disk:
-                      on by default with --window, --repl-server and
-                      --repl-port
+                      (a tileset, a template, a picture) changes on disk,
+                      and FILE.scm into the running game when it, a file it
+                      loads or a module from its folder is saved: on by
+                      default with --window, --repl-server and --repl-port
   --no-watch          do not
   --capture DIR       headless, and draw every frame off-screen into
                       DIR/NNNNNN.png (NNNNNN: the frame number)

@@ -4,19 +4,25 @@
 ;;; the game record, its scene and its history stay. docs/repl.org, "Live
 ;;; editing".
 ;;;
-;;; The script is loaded again as the host loaded it (compiled, in the
-;;; module it ran in), so every top-level form runs again; the ones that
-;;; must not are written in (once …) or define-once. A game-run! reached
+;;; The modules from the script's folder are loaded again, then the script
+;;; as the host loaded it (compiled, in the module it ran in), so every
+;;; top-level form runs again; the ones that must not are written in
+;;; (once …) or define-once. A game-run! reached
 ;;; again starts nothing (engine.scm). A hook the game was made with that
 ;;; was the value of one of the script's top-level names is re-pointed to
 ;;; that name's new value; a name that held the running game holds it
 ;;; again. A reload that fails puts every top-level name of the script's
-;;; module back as it was, and reports the error as a failing hook's is.
+;;; module and of those modules back as it was, and reports the error as a
+;;; failing hook's is. game-watch-script! reloads it when one of its files
+;;; changes on disk, through (downstroke live).
 (define-module (downstroke script-reload)
   #:use-module ((srfi srfi-1) #:select (find filter-map))
   #:use-module (downstroke game)
   #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter))
-  #:export (reload-script! once script-reloading? script-loaded! script-file script-files))
+  #:use-module ((downstroke live) #:select (watch-file! unwatch-file!))
+  #:use-module ((downstroke frame-hooks) #:select (add-frame-hook!))
+  #:export (reload-script! game-watch-script! watch-every-game! once script-reloading? script-loaded!
+            script-file script-files))
 
 ;; #t while a script is being evaluated again: (once …) skips its forms and
 ;; game-run! starts nothing.
@@ -39,9 +45,30 @@
   (and the-script (car the-script)))
 
 (define (script-files)
-  "The files a reload evaluates again: the script, then the files it loads
-by a literal name, each once; () when no script runs."
-  (if the-script ((@ (downstroke script-source) loaded-files) (car the-script)) '()))
+  "The files a reload evaluates again: the script, the files it loads by a
+literal name, and the files of the modules from its folder (or a folder in
+it) that are loaded; () when no script runs."
+  (if the-script
+      (append ((@ (downstroke script-source) loaded-files) (car the-script))
+              (map cdr (folder-modules)))
+      '()))
+
+(define (all-modules)
+  ;; Every module Guile has loaded, from the root of its module tree.
+  (let walk ((m (resolve-module '() #f)) (acc '()))
+    (hash-fold (lambda (name sub acc) (walk sub (cons sub acc))) acc (module-submodules m))))
+
+(define (folder-modules)
+  ;; ((module . file) …): the loaded modules whose file is in the script's
+  ;; folder or a folder in it — the game's own modules, used by the script
+  ;; (use-modules) with its folder on the load path.
+  (let ((folder (string-append (dirname (car the-script)) "/")))
+    (filter-map (lambda (m)
+                  (let* ((name (module-filename m))
+                         (found (and (string? name) (%search-load-path name)))
+                         (file (and found (false-if-exception (canonicalize-path found)))))
+                    (and file (string-prefix? folder file) (cons m file))))
+                (all-modules))))
 
 ;;; ---------------------------------------------------------------- the names kept
 
@@ -143,21 +170,71 @@ it failed."
                "no script to reload: only a script run by downstroke (downstroke FILE.scm) can be reloaded"
                '() #f))
   (let* ((file (car the-script)) (module (cadr the-script)) (compile? (caddr the-script))
-         (kept (module-bindings module))
-         (held (hook-names game kept))
-         (game-names (if game (names-holding game kept) '())))
+         (modules (folder-modules))
+         ;; ((module . its bindings) …), the script's module first.
+         (kept (map (lambda (m) (cons m (module-bindings m))) (cons module (map car modules))))
+         (held (hook-names game (cdar kept)))
+         (game-names (if game (names-holding game (cdar kept)) '())))
+    (define (load-in! m file)
+      (save-module-excursion
+       (lambda ()
+         (set-current-module m)
+         ((@ (downstroke host) load-script) file compile?))))
     (parameterize ((hook-error-reporter (or (hook-error-reporter) report-to-warning-port))
                    (script-reloading? #t))
       (call-reporting
        (lambda ()
          (format #f "reloading ~a raised an error; its old definitions stay, and the game runs on" file))
        (lambda ()
-         (save-module-excursion
-          (lambda ()
-            (set-current-module module)
-            ((@ (downstroke host) load-script) file compile?)))
+         ;; The modules first: the script's top level may call them.
+         (for-each (lambda (entry) (load-in! (car entry) (cdr entry))) modules)
+         (load-in! module file)
          (when game (re-point! game module held game-names))
          #t)
        (lambda ()
-         (restore-bindings! module kept)
+         (for-each (lambda (entry) (restore-bindings! (car entry) (cdr entry))) kept)
          #f)))))
+
+;;; ---------------------------------------------------------------- watching
+
+;; game → the procedure its script's files are watched with (watch-file!
+;; takes the same procedure twice as one registration).
+(define watching (make-weak-key-hash-table))
+
+(define (watch-files! game on-change)
+  ;; Every file of the script watched; after a reload there may be new ones.
+  (for-each (lambda (file) (watch-file! game file on-change)) (script-files)))
+
+(define (game-watch-script! game on?)
+  "With ON? true, reload GAME's script (reload-script!) between two frames
+each time it, a file it loads by a literal name, or a module from its folder
+changes on disk (a look at them at most once a second, see (downstroke
+live)); with ON? #f, stop. `downstroke --watch' turns it on for every game
+the script runs (the default in a window and in a served game). Does
+nothing when no script runs (a script run by downstroke)."
+  (check-game "game-watch-script!" game)
+  (let ((on-change (hashq-ref watching game)))
+    (cond ((and on? (not on-change) the-script)
+           (let ((on-change (lambda (path)
+                              (reload-script! game)
+                              (when (hashq-ref watching game)
+                                (watch-files! game (hashq-ref watching game))))))
+             (hashq-set! watching game on-change)
+             (watch-files! game on-change)))
+          ((and (not on?) on-change)
+           (hashq-remove! watching game)
+           (for-each (lambda (file) (unwatch-file! game file)) (script-files))))
+    *unspecified*))
+
+;; The games watch-every-game!'s frame hook has turned watching on for:
+;; each once, so that one turned off (game-watch-script! game #f) stays off.
+(define offered (make-weak-key-hash-table))
+
+(define (watch-every-game!)
+  ;; The host's --watch: every game the script runs from now on watches it,
+  ;; from its first frame. A frame hook, which sees each running game.
+  (add-frame-hook! (lambda ()
+                     (let ((game (current-game)))
+                       (when (and game (not (hashq-ref offered game)))
+                         (hashq-set! offered game #t)
+                         (game-watch-script! game #t))))))

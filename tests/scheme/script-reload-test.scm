@@ -5,7 +5,8 @@
 ;;; leaves the old definitions, says why, and the game runs on.
 (use-modules (srfi srfi-64) (srfi srfi-1) (ice-9 textual-ports) (downstroke)
              ((downstroke game) #:select (current-game))
-             ((downstroke script-reload) #:select (script-loaded!)))
+             ((downstroke script-reload) #:select (script-loaded!))
+             ((downstroke live) #:select (watch-poll-interval)))
 
 (load "support.scm")
 
@@ -15,7 +16,13 @@
 (define script (string-append dir "/game.scm"))
 
 (define (write-script! text)
-  (call-with-output-file script (lambda (port) (display text port))))
+  ;; As most editors save: a new file renamed over the old one.
+  (let ((new (string-append script ".new")))
+    (call-with-output-file new (lambda (port) (display text port)))
+    (rename-file new script)))
+
+;; The watcher looks at every poll, not once a second: a test need not wait.
+(watch-poll-interval 0)
 
 ;; The first lines of every version: a count of the script's evaluations,
 ;; and one of its (once …) forms' runs.
@@ -60,17 +67,15 @@
                                     (game-history game)))
                (list (game-scene game)))))
 
-(define (reload-at! frame game edit)
+(define (save-at! frame game edit)
   ;; A frame hook that, at the start of FRAME, saves the script as (EDIT)
-  ;; makes it and reloads it: the author saving in an editor. Its result is
-  ;; (reload-result).
-  (let ((result 'not-reached))
+  ;; makes it: the author saving in an editor. The game watches it, and
+  ;; reloads it in the same poll, before the frame's step.
+  (let ((saved? #f))
     (add-frame-hook! (lambda ()
-                       (when (and (eq? (current-game) game) (= (game-frame game) frame)
-                                  (eq? result 'not-reached))
-                         (write-script! (edit))
-                         (set! result (reload-script!)))))
-    (lambda () result)))
+                       (when (and (eq? (current-game) game) (= (game-frame game) frame) (not saved?))
+                         (set! saved? #t)
+                         (write-script! (edit)))))))
 
 ;;; ---------------------------------------------------------------- a new procedure
 (define m (run-script! (string-append counting (updating "old") "
@@ -78,13 +83,14 @@
 ")))
 (define game (module-ref m 'game))
 (define old-update (game-update game))
-(define reload-result
-  (reload-at! 5 game (lambda () (string-append counting (updating "new") "
+(game-watch-script! game #t)
+(save-at! 5 game (lambda () (string-append counting (updating "new") "
 (define game (make-game scene: (make-scene entities: '()) update: update history: 20))
-"))))
-(game-run! game frames: 10)
+")))
+(define reload-warnings
+  (call-with-output-string (lambda (port) (parameterize ((current-warning-port port)) (game-run! game frames: 10)))))
 
-(test-equal "the reload says it reloaded" #t (reload-result))
+(test-equal "the reload under the running game said nothing" "" reload-warnings)
 (test-equal "the frames before it ran the old update, the frames from it on the new one"
   '((0 old) (1 old) (2 old) (3 old) (4 old) (5 new) (6 new) (7 new) (8 new) (9 new))
   (versions game))
@@ -105,6 +111,14 @@
   (begin (game-run! game frames: 4)
          (let ((e (car (scene-entities (game-scene game)))))
            (list (game-frame game) (list (entity-ref e #:frame) (entity-ref e #:version))))))
+
+(game-watch-script! game #f)
+(write-script! (string-append counting (updating "unwatched")))
+(game-run! game frames: 6)
+(test-equal "a game that stopped watching its script runs on with the update it had"
+  '(5 new)
+  (let ((e (car (scene-entities (game-scene game)))))
+    (list (entity-ref e #:frame) (entity-ref e #:version))))
 
 ;;; ---------------------------------------------------------------- game-run! in the script
 ;;; As a game's script is written: it runs the game itself, and the reload
@@ -131,18 +145,19 @@
 
 ;;; ---------------------------------------------------------------- a broken script
 (define (broken-reload version-text)
-  ;; GAME of a fresh script reloaded at frame 5 from VERSION-TEXT: (result
-  ;; versions warning-text module game).
+  ;; GAME of a fresh script, watched, saved at frame 5 as VERSION-TEXT:
+  ;; (versions warning-text module game).
   (let* ((m (run-script! (string-append counting (updating "old") "
 (define game (make-game scene: (make-scene entities: '()) update: update history: 20))
 ")))
-         (game (module-ref m 'game))
-         (result (reload-at! 5 game (lambda () version-text)))
-         (warnings (call-with-output-string
-                    (lambda (port)
-                      (parameterize ((current-warning-port port))
-                        (game-run! game frames: 10))))))
-    (list (result) (versions game) warnings m game)))
+         (game (module-ref m 'game)))
+    (game-watch-script! game #t)
+    (save-at! 5 game (lambda () version-text))
+    (let ((warnings (call-with-output-string
+                     (lambda (port)
+                       (parameterize ((current-warning-port port))
+                         (game-run! game frames: 10))))))
+      (list (versions game) warnings m game))))
 
 (define all-old '((0 old) (1 old) (2 old) (3 old) (4 old) (5 old) (6 old) (7 old) (8 old) (9 old)))
 (define report-head
@@ -150,43 +165,116 @@
 
 (define top-level-error
   (broken-reload (string-append counting (updating "new") "(define added 1)\n(car '())\n")))
-(test-equal "an error at the top level: the reload says it failed" #f (first top-level-error))
-(test-equal "… every frame ran the old update" all-old (second top-level-error))
+(test-equal "an error at the top level: every frame ran the old update" all-old (first top-level-error))
 (test-assert "… the report says which script and that the game runs on"
-  (string-prefix? report-head (third top-level-error)))
+  (string-prefix? report-head (second top-level-error)))
 (test-assert "… and ends with the error"
   (string-suffix? "In procedure car: Wrong type argument in position 1 (expecting pair): ()\n"
-                  (third top-level-error)))
+                  (second top-level-error)))
 (test-equal "… the names it had redefined are back, the one it added gone, its counts as before"
   '(#t #f 1 1)
-  (let ((m (fourth top-level-error)))
-    (list (eq? (module-ref m 'update) (game-update (fifth top-level-error)))
+  (let ((m (third top-level-error)))
+    (list (eq? (module-ref m 'update) (game-update (fourth top-level-error)))
           (module-defined? m 'added) (module-ref m 'runs) (module-ref m 'once-runs))))
 
 (define unreadable (broken-reload (string-append counting (updating "new") "(define (oops")))
-(test-equal "a script that cannot be read: the reload says it failed" #f (first unreadable))
-(test-equal "… the game ran on with the old update" all-old (second unreadable))
+(test-equal "a script that cannot be read: the game ran on with the old update" all-old (first unreadable))
 (test-assert "… the report names the script and ends with the reader's error, at its place"
-  (and (string-prefix? report-head (third unreadable))
+  (and (string-prefix? report-head (second unreadable))
        (string-suffix? (string-append script ":8:14: unexpected end of input while searching for: )\n")
-                       (third unreadable))))
+                       (second unreadable))))
 
 (define wrong-arity
   (broken-reload (string-append counting "(define (update game) 'one-argument)\n"
                                 "(define game (make-game scene: (make-scene entities: '()) history: 20))\n")))
-(test-equal "an update of the wrong arity is refused: the reload failed" #f (first wrong-arity))
-(test-equal "… and the old update stays" all-old (second wrong-arity))
+(test-equal "an update of the wrong arity is refused: the old update stays" all-old (first wrong-arity))
 (test-assert "… said as make-game says it"
   (string-suffix? (string-append "In procedure reload-script!: update: expected a procedure of (game dt), got update, a procedure of (game), at "
                                  script ":5:0\n")
-                  (third wrong-arity)))
+                  (second wrong-arity)))
+
+;;; ---------------------------------------------------------------- downstroke --watch
+;;; The host itself, headless with --watch: the script saves a new version
+;;; of itself at frame 1 (as its author would), and the host's watcher,
+;;; looking once a second, reloads it; the new update ends the game.
+(define watched-script (string-append dir "/watched.scm"))
+(define (watched-version update-body)
+  (format #f "(define (update game dt) ~a)
+(define-once game (make-game update: update))
+(once
+ (add-frame-hook!
+  (lambda ()
+    (when (= (game-frame game) 1)
+      (call-with-output-file (string-append (current-filename*) \".new\")
+        (lambda (port) (display edited port)))
+      (rename-file (string-append (current-filename*) \".new\") (current-filename*)))))
+ (game-run! game frames: 100000000)
+ (display \"not reloaded\\n\"))
+" update-body))
+(call-with-output-file watched-script
+  (lambda (port)
+    (display (string-append "(define (current-filename*) " (format #f "~s" watched-script) ")\n"
+                            (format #f "(define edited ~s)\n"
+                                    (string-append "(define (current-filename*) " (format #f "~s" watched-script) ")\n"
+                                                   "(define edited \"\")\n"
+                                                   (watched-version "(format #t \"reloaded, frame ~a~%\" (game-frame game)) (exit 0)")))
+                            (watched-version "#t"))
+             port)))
+(define host (readlink "/proc/self/exe"))
+(define (host-output . args)
+  ;; (exit-status . stdout) of the host run with ARGS.
+  (let* ((out (string-append dir "/out"))
+         (status (system (string-append (string-join (map (lambda (a) (string-append "'" a "'")) (cons host args)) " ")
+                                        " >" out))))
+    (cons (status:exit-val status) (call-with-input-file out get-string-all))))
+(define watched-run (host-output "--watch" "--timeout" "30" watched-script))
+(test-assert "downstroke --watch: a script saved under its running headless game is reloaded within a second or so"
+  (and (= 0 (car watched-run)) (string-prefix? "reloaded, frame " (cdr watched-run))))
+
+;;; ---------------------------------------------------------------- a module from the game's folder
+;;; The script uses a module of its own, found on the load path through the
+;;; script's folder: saving the module reloads it, then the script. Last:
+;;; the folder stays on the load path, and Guile then names the files in it
+;;; relative to it (game.scm:8:14 in an error).
+(define module-file (string-append dir "/reload-test/versions.scm"))
+(mkdir (dirname module-file))
+(define (write-module! version)
+  (let ((new (string-append module-file ".new")))
+    (call-with-output-file new
+      (lambda (port)
+        (format port "(define-module (reload-test versions) #:export (edition))\n(define (edition) '~a)\n" version)))
+    (rename-file new module-file)))
+(write-module! "old")
+(define m3 (run-script! (string-append counting "
+(eval-when (expand load eval) (add-to-load-path (dirname (current-filename))))
+(use-modules (reload-test versions))
+(define (update game dt)
+  (game-scene-set! game (update-scene (game-scene game)
+                                      entities: (list (list #:id 'a #:frame (game-frame game) #:version (edition))))))
+(define game (make-game scene: (make-scene entities: '()) update: update history: 20))
+")))
+(define game3 (module-ref m3 'game))
+(game-watch-script! game3 #t)
+(let ((saved? #f))
+  (add-frame-hook! (lambda ()
+                     (when (and (eq? (current-game) game3) (= (game-frame game3) 3) (not saved?))
+                       (set! saved? #t)
+                       (write-module! "new")))))
+(game-run! game3 frames: 6)
+(test-equal "saving a module the script uses from its folder: the next frame runs its new code"
+  '((0 old) (1 old) (2 old) (3 new) (4 new) (5 new))
+  (versions game3))
+(test-equal "… and the script was evaluated again after it" 2 (module-ref m3 'runs))
+(game-watch-script! game3 #f)
+(delete-file module-file)
+(rmdir (dirname module-file))
 
 ;;; ---------------------------------------------------------------- bad calls
 (test-equal "reload-script! of something not a game is refused, naming it"
   "In procedure reload-script!: game: expected a game (make-game), got nope\n"
   (error-text (lambda () (reload-script! 'nope))))
 
-(delete-file script)
+(for-each delete-file (list script watched-script (string-append dir "/out")))
 (rmdir dir)
 
 (test-end "script-reload")
