@@ -33,7 +33,7 @@
   #:use-module (downstroke sound)
   #:use-module (downstroke costs)
   #:use-module (downstroke script-arguments)
-  #:use-module ((downstroke script-reload) #:select (reload-script! game-watch-script! once script-reloading?))
+  #:use-module ((downstroke script-reload) #:select (reload-script! game-watch-script! once script-reloading? arm-script-watch!))
   #:use-module (downstroke hook-errors)
   #:use-module ((downstroke live) #:select (game-watch-maps! watch-default))
   #:use-module (downstroke frame-hooks)
@@ -198,6 +198,7 @@ running game (GAME when none runs): the game goes on where it was."
     (scm-error 'misc-error "game-run!"
                "a game is already running (~A): game-run! cannot start a game from inside a running game's hooks or REPL; run games one after another"
                (list (if (eq? (current-game) game) "this one" (game-title (current-game)))) #f))
+  (arm-script-watch! game)
   (parameterize ((current-game game)
                  (current-display (game-display game)))
     (case (display-mode)

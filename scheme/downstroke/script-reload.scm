@@ -20,8 +20,7 @@
   #:use-module (downstroke game)
   #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter))
   #:use-module ((downstroke live) #:select (watch-file! unwatch-file!))
-  #:use-module ((downstroke frame-hooks) #:select (add-frame-hook!))
-  #:export (reload-script! game-watch-script! watch-every-game! once script-reloading? script-loaded!
+  #:export (reload-script! game-watch-script! watch-every-game! arm-script-watch! once script-reloading? script-loaded!
             script-file script-files))
 
 ;; #t while a script is being evaluated again: (once …) skips its forms and
@@ -226,15 +225,21 @@ nothing when no script runs (a script run by downstroke)."
            (for-each (lambda (file) (unwatch-file! game file)) (script-files))))
     *unspecified*))
 
-;; The games watch-every-game!'s frame hook has turned watching on for:
-;; each once, so that one turned off (game-watch-script! game #f) stays off.
-(define offered (make-weak-key-hash-table))
+;; #t: every game run from now on watches its script (the host's --watch).
+;; game-run! arms each game as it starts (arm-script-watch!), not a frame
+;; hook: a frame hook, even one that does nothing, costs each frame about
+;; 0.5 M instructions in its stack bound (measured, docs/repl.org).
+(define watch-every-game? #f)
 
 (define (watch-every-game!)
-  ;; The host's --watch: every game the script runs from now on watches it,
-  ;; from its first frame. A frame hook, which sees each running game.
-  (add-frame-hook! (lambda ()
-                     (let ((game (current-game)))
-                       (when (and game (not (hashq-ref offered game)))
-                         (hashq-set! offered game #t)
-                         (game-watch-script! game #t))))))
+  (set! watch-every-game? #t))
+
+;; The games arm-script-watch! has turned watching on for: each once, so
+;; that one turned off (game-watch-script! game #f) stays off.
+(define offered (make-weak-key-hash-table))
+
+(define (arm-script-watch! game)
+  ;; Called by game-run! as GAME starts.
+  (when (and watch-every-game? (not (hashq-ref offered game)))
+    (hashq-set! offered game #t)
+    (game-watch-script! game #t)))
