@@ -48,7 +48,7 @@
 (for-each
  (lambda (option)
    (test-assert (string-append "--help lists " option) (string-contains (second help) option)))
- '("--window" "--scale" "--debug" "--capture" "--repl-server" "--repl-port" "--repl-timeout"
+ '("--window" "--scale" "--debug" "--watch" "--no-watch" "--capture" "--repl-server" "--repl-port" "--repl-timeout"
    "--frames N" "--timeout S" "--no-auto-compile" "--version" "--help" "new DIR" "test [--junit FILE]" "DOWNSTROKE_BACKTRACE=full"))
 (test-equal "--version prints the project's version" '(0 "downstroke 0.1.0\n" "") (run "--version"))
 (test-equal "an unknown option is refused with the usage, on stderr" '(2 "")
