@@ -7,7 +7,7 @@
   #:use-module ((system vm vm) #:select (call-with-stack-overflow-handler))
   #:use-module (downstroke error-text)
   #:use-module (downstroke game)
-  #:export (call-bounded call-reporting hook-error-reporter hook-time-limit step-or-pause!))
+  #:export (call-bounded call-reporting hook-error-reporter hook-time-limit step-or-pause! retry-failed-frame!))
 
 (define (call-bounded game what thunk)
   ;; (THUNK) with at most the game's stack-limit of stack: past it, a
@@ -30,7 +30,8 @@
 ;;; its author is working in. The host then sets hook-error-reporter (a
 ;;; procedure taking the report's text); a failing frame hook is removed,
 ;;; and a failing frame leaves the game paused on it, as it started, until
-;;; a hook or the scene is replaced (from the REPL), when it runs again.
+;;; a hook or the scene is replaced (from the REPL), or the script is
+;;; reloaded, when it runs again.
 
 (define hook-error-reporter (make-parameter #f))
 
@@ -42,6 +43,12 @@
 
 ;; game → what it failed with: its hooks and scene then (see game-levers)
 (define paused-on (make-object-property))
+
+(define (retry-failed-frame! game)
+  ;; GAME, paused on a failing frame, runs it again at its next tick: its
+  ;; code has changed in a way the levers do not show (a reload of the
+  ;; script, script-reload.scm, redefining a procedure a hook calls by name).
+  (set! (paused-on game) #f))
 
 (define (game-levers game)
   (list (game-engine-update game) (game-update game) (game-render game) (game-scene game)

@@ -18,7 +18,7 @@
 (define-module (downstroke script-reload)
   #:use-module ((srfi srfi-1) #:select (find filter-map))
   #:use-module (downstroke game)
-  #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter))
+  #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter retry-failed-frame!))
   #:use-module ((downstroke live) #:select (watch-file! unwatch-file!))
   #:export (reload-script! game-watch-script! watch-every-game! arm-script-watch! once script-reloading? script-loaded!
             script-file script-files))
@@ -188,7 +188,11 @@ it failed."
          ;; The modules first: the script's top level may call them.
          (for-each (lambda (entry) (load-in! (car entry) (cdr entry))) modules)
          (load-in! module file)
-         (when game (re-point! game module held game-names))
+         (when game
+           (re-point! game module held game-names)
+           ;; A served game paused on a failing hook tries again: the new
+           ;; code may be the fix.
+           (retry-failed-frame! game))
          #t)
        (lambda ()
          (for-each (lambda (entry) (restore-bindings! (car entry) (cdr entry))) kept)

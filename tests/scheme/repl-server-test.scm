@@ -529,21 +529,22 @@ In procedure frame hook: the hook ran past the 2 s limit (--repl-timeout): inter
 ;;; reload-script! from the REPL: the served game's script, saved with a new
 ;;; update, evaluated again in the running game; a broken one reported to
 ;;; the client, the game running on. The script runs its game in (once …):
-;;; a reload must not print "ready" again, nor exit.
+;;; a reload must not print "ready" again, nor exit. Served without
+;;; watching (--no-watch): the reloads are the REPL's alone. Its update:
+;;; calls `update' by name, as a script written for the REPL does.
 (define reload-script (string-append dir "/reloaded.scm"))
-(define (write-reloaded! version)
+(define* (write-reloaded! version #:optional (body "(game-scene-set! game (update-scene (game-scene game) entities: (list (list #:id 'box #:version '~a))))"))
   (call-with-output-file reload-script
     (lambda (p)
-      (format p "(define (update game dt)
-  (game-scene-set! game (update-scene (game-scene game) entities: (list (list #:id 'box #:version '~a)))))
-(define-once game (make-game frame-delay: 16 scene: (make-scene entities: '()) update: update))
+      (format p "(define (update game dt) ~a)
+(define-once game (make-game frame-delay: 16 scene: (make-scene entities: '()) update: (lambda (g dt) (update g dt))))
 (once (display \"ready\\n\") (force-output) (game-run! game frames: 3000) (display \"timeout\\n\") (exit 3))
-" version))))
+" (format #f body version)))))
 (define (version-now c)
   (value c "(entity-ref (car (scene-entities (game-scene game))) #:version)"))
 (write-reloaded! "old")
 (define reload-path (string-append dir "/reload.sock"))
-(define reloading (let ((g (open-pipe* OPEN_READ host "--repl-server" reload-path reload-script)))
+(define reloading (let ((g (open-pipe* OPEN_READ host "--no-watch" "--repl-server" reload-path reload-script)))
                     (read-line g)       ; "ready"
                     g))
 (define r (open-client reload-path))
@@ -563,6 +564,23 @@ In procedure frame hook: the hook ran past the 2 s limit (--repl-timeout): inter
 (usleep 100000)
 (test-assert "… and the game runs on with the update it had"
   (and (< frame-after-reload (value r "(game-frame game)")) (eq? 'new (version-now r))))
+;; A reload that brings a failing update pauses the game on its frame, as a
+;; failing hook does; the reload that fixes it lets the frame run again,
+;; though no lever changed (update: calls the new update by name).
+(write-reloaded! "" "(car '())")
+(test-equal "a script whose update fails reloads" "#t\n" (answer r "(reload-script!)"))
+(define paused-report (read-until r "(expecting pair): ()\n"))
+(define paused-frame (report-frame paused-report))
+(test-assert "… and its first frame fails and pauses the game, reported"
+  (and (string-contains paused-report "downstroke: a hook raised an error in frame ")
+       (exact-integer? paused-frame)))
+(usleep 100000)
+(test-equal "the game stays on that frame" paused-frame (value r "(game-frame game)"))
+(write-reloaded! "fixed")
+(test-equal "the reload of the fix" "#t\n" (answer r "(reload-script!)"))
+(usleep 100000)
+(test-assert "… lets the failed frame run again, and the game go on with the fix"
+  (and (< paused-frame (value r "(game-frame game)")) (eq? 'fixed (version-now r))))
 (test-equal "the reloaded game ends by itself (exit 0)" 0 (stop-served reloading r))
 (close-port r)
 (delete-file reload-script)
