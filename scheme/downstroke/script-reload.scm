@@ -16,7 +16,7 @@
 ;;; failing hook's is. game-watch-script! reloads it when one of its files
 ;;; changes on disk, through (downstroke live).
 (define-module (downstroke script-reload)
-  #:use-module ((srfi srfi-1) #:select (find filter-map))
+  #:use-module ((srfi srfi-1) #:select (find filter-map remove))
   #:use-module (downstroke game)
   #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter retry-failed-frame!))
   #:use-module ((downstroke live) #:select (watch-file! unwatch-file!))
@@ -148,6 +148,28 @@ it) that are loaded; () when no script runs."
 
 ;;; ---------------------------------------------------------------- reloading
 
+(define (inside? dir folder)
+  ;; Whether FOLDER is DIR or in it (both canonical).
+  (or (string=? dir folder) (string-prefix? (string-append dir "/") folder)))
+
+(define (with-files-named-whole folder thunk)
+  ;; (THUNK) with no folder holding FOLDER on the load path. Guile names a
+  ;; file it loads from under a load-path folder relative to that folder,
+  ;; and (current-filename) canonicalizes the name against the working
+  ;; folder: #f when the game runs from elsewhere. The first load came
+  ;; before the script put its folder on the load path (add-to-load-path,
+  ;; for its modules); a reload comes after. The folders are put back
+  ;; after, in front, unless the script put them back itself.
+  (let* ((held? (lambda (entry)
+                  (let ((dir (false-if-exception (canonicalize-path entry))))
+                    (and dir (inside? dir folder)))))
+         (taken (filter held? %load-path)))
+    (dynamic-wind
+      (lambda () (set! %load-path (remove held? %load-path)))
+      thunk
+      (lambda ()
+        (set! %load-path (append (remove (lambda (e) (member e %load-path)) taken) %load-path))))))
+
 (define (report-to-warning-port text)
   (display text (current-warning-port))
   (force-output (current-warning-port)))
@@ -168,6 +190,7 @@ it failed."
     (scm-error 'misc-error "reload-script!"
                "no script to reload: only a script run by downstroke (downstroke FILE.scm) can be reloaded"
                '() #f))
+  (set! reloaded-stamps (map (lambda (f) (cons f (file-stamp f))) (script-files)))
   (let* ((file (car the-script)) (module (cadr the-script)) (compile? (caddr the-script))
          (modules (folder-modules))
          ;; ((module . its bindings) …), the script's module first.
@@ -185,9 +208,11 @@ it failed."
        (lambda ()
          (format #f "reloading ~a raised an error; its old definitions stay, and the game runs on" file))
        (lambda ()
-         ;; The modules first: the script's top level may call them.
-         (for-each (lambda (entry) (load-in! (car entry) (cdr entry))) modules)
-         (load-in! module file)
+         (with-files-named-whole (dirname file)
+           (lambda ()
+             ;; The modules first: the script's top level may call them.
+             (for-each (lambda (entry) (load-in! (car entry) (cdr entry))) modules)
+             (load-in! module file)))
          (when game
            (re-point! game module held game-names)
            ;; A served game paused on a failing hook tries again: the new
@@ -199,6 +224,21 @@ it failed."
          #f)))))
 
 ;;; ---------------------------------------------------------------- watching
+
+;; ((file . stamp) …): the script's files as the last reload found them as
+;; it began. Two files saved together (a module and the script) are two
+;; changes in one look of the watcher: the second finds its file as the
+;; reload for the first read it, and reloads nothing.
+(define reloaded-stamps '())
+
+(define (file-stamp file)
+  ;; What an edit of FILE changes (as (downstroke live) looks), or #f.
+  (let ((st (stat file #f)))
+    (and st (list (stat:dev st) (stat:ino st) (stat:size st) (stat:mtime st) (stat:mtimensec st)))))
+
+(define (read-by-last-reload? file)
+  (let ((stamp (file-stamp file)))
+    (and stamp (equal? stamp (assoc-ref reloaded-stamps file)))))
 
 ;; game → the procedure its script's files are watched with (watch-file!
 ;; takes the same procedure twice as one registration).
@@ -219,7 +259,8 @@ nothing when no script runs (a script run by downstroke)."
   (let ((on-change (hashq-ref watching game)))
     (cond ((and on? (not on-change) the-script)
            (let ((on-change (lambda (path)
-                              (reload-script! game)
+                              (unless (read-by-last-reload? path)
+                                (reload-script! game))
                               (when (hashq-ref watching game)
                                 (watch-files! game (hashq-ref watching game))))))
              (hashq-set! watching game on-change)

@@ -233,9 +233,10 @@
 
 ;;; ---------------------------------------------------------------- a module from the game's folder
 ;;; The script uses a module of its own, found on the load path through the
-;;; script's folder: saving the module reloads it, then the script. Last:
-;;; the folder stays on the load path, and Guile then names the files in it
-;;; relative to it (game.scm:8:14 in an error).
+;;; script's folder: saving the module reloads it, then the script. The
+;;; folder is then on the load path, and the reload still finds
+;;; (current-filename), though the test runs from another folder. Last:
+;;; the folder stays on the load path.
 (define module-file (string-append dir "/reload-test/versions.scm"))
 (mkdir (dirname module-file))
 (define (write-module! version)
@@ -245,14 +246,15 @@
         (format port "(define-module (reload-test versions) #:export (edition))\n(define (edition) '~a)\n" version)))
     (rename-file new module-file)))
 (write-module! "old")
-(define m3 (run-script! (string-append counting "
+(define module-user (string-append counting "
 (eval-when (expand load eval) (add-to-load-path (dirname (current-filename))))
 (use-modules (reload-test versions))
 (define (update game dt)
   (game-scene-set! game (update-scene (game-scene game)
                                       entities: (list (list #:id 'a #:frame (game-frame game) #:version (edition))))))
 (define game (make-game scene: (make-scene entities: '()) update: update history: 20))
-")))
+"))
+(define m3 (run-script! module-user))
 (define game3 (module-ref m3 'game))
 (game-watch-script! game3 #t)
 (let ((saved? #f))
@@ -265,6 +267,21 @@
   '((0 old) (1 old) (2 old) (3 new) (4 new) (5 new))
   (versions game3))
 (test-equal "… and the script was evaluated again after it" 2 (module-ref m3 'runs))
+
+;; Saved together, the module and the script are two changes in one look:
+;; one reload reads both. The script, changed, is compiled again: its
+;; (current-filename) must name it though its folder is on the load path.
+(let ((saved? #f))
+  (add-frame-hook! (lambda ()
+                     (when (and (eq? (current-game) game3) (= (game-frame game3) 7) (not saved?))
+                       (set! saved? #t)
+                       (write-module! "newer")
+                       (write-script! (string-append module-user "\n;; saved again\n"))))))
+(game-run! game3 frames: 9)
+(test-equal "a module and the script saved together: the next frame runs the new code"
+  '((6 new) (7 newer) (8 newer))
+  (list-tail (versions game3) 6))
+(test-equal "… after one reload, not two" 3 (module-ref m3 'runs))
 (game-watch-script! game3 #f)
 (delete-file module-file)
 (rmdir (dirname module-file))
