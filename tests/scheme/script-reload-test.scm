@@ -231,6 +231,17 @@
 (test-assert "downstroke --watch: a script saved under its running headless game is reloaded within a second or so"
   (and (= 0 (car watched-run)) (string-prefix? "reloaded, frame " (cdr watched-run))))
 
+;; The plain REPL (downstroke with no script) has nothing to reload.
+(define repl-answer
+  (let ((in (string-append dir "/in")) (out (string-append dir "/out")))
+    (call-with-output-file in (lambda (port) (display "(reload-script!)\n" port)))
+    (system (string-append "'" host "' <'" in "' >'" out "' 2>&1"))
+    (delete-file in)
+    (call-with-input-file out get-string-all)))
+(test-assert "(reload-script!) with no script is refused, saying why"
+  (string-contains repl-answer
+                   "In procedure reload-script!: no script to reload: only a script run by downstroke (downstroke FILE.scm) can be reloaded\n"))
+
 ;;; ---------------------------------------------------------------- a module from the game's folder
 ;;; The script uses a module of its own, found on the load path through the
 ;;; script's folder: saving the module reloads it, then the script. The
