@@ -7,11 +7,10 @@
 ;;; The modules from the script's folder are loaded again, then the script
 ;;; as the host loaded it (compiled, in the module it ran in), so every
 ;;; top-level form runs again; the ones that must not are written in
-;;; (once …) or define-once. A game-run! reached
-;;; again starts nothing (engine.scm). A hook the game was made with that
-;;; was the value of one of the script's top-level names is re-pointed to
-;;; that name's new value; a name that held the running game holds it
-;;; again. A reload that fails puts every top-level name of the script's
+;;; (once …) or define-once. A game-run! reached again starts nothing
+;;; (engine.scm). A hook the game was made with that was the value of one
+;;; of the script's top-level names is re-pointed to that name's new
+;;; value; a name that held the running game holds it again. A reload that fails puts every top-level name of the script's
 ;;; module and of those modules back as it was, and reports the error as a
 ;;; failing hook's is. game-watch-script! reloads it when one of its files
 ;;; changes on disk, through (downstroke live).
@@ -20,8 +19,8 @@
   #:use-module (downstroke game)
   #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter retry-failed-frame!))
   #:use-module ((downstroke live) #:select (watch-file! unwatch-file!))
-  #:export (reload-script! game-watch-script! watch-every-game! arm-script-watch! once script-reloading? script-loaded!
-            script-file script-files))
+  #:export (reload-script! game-watch-script! watch-every-game! arm-script-watch! once script-reloading?
+            script-loaded! script-files))
 
 ;; #t while a script is being evaluated again: (once …) skips its forms and
 ;; game-run! starts nothing.
@@ -38,10 +37,6 @@
   ;; FILE (a canonical path) is the game's script, loaded into MODULE,
   ;; compiled when COMPILE? (the host's --no-auto-compile makes it #f).
   (set! the-script (list file module compile?)))
-
-(define (script-file)
-  "The file of the script the host is running (its canonical path), or #f."
-  (and the-script (car the-script)))
 
 (define (script-files)
   "The files a reload evaluates again: the script, the files it loads by a
