@@ -293,6 +293,25 @@
   '((6 new) (7 newer) (8 newer))
   (list-tail (versions game3) 6))
 (test-equal "… after one reload, not two" 3 (module-ref m3 'runs))
+
+;; A module that fails to load again: its old definitions stay too.
+(let ((saved? #f))
+  (add-frame-hook! (lambda ()
+                     (when (and (eq? (current-game) game3) (= (game-frame game3) 10) (not saved?))
+                       (set! saved? #t)
+                       (let ((new (string-append module-file ".new")))
+                         (call-with-output-file new
+                           (lambda (port)
+                             (display "(define-module (reload-test versions) #:export (edition))\n(define (edition) 'broken)\n(car '())\n" port)))
+                         (rename-file new module-file))))))
+(define module-warnings
+  (call-with-output-string (lambda (port) (parameterize ((current-warning-port port)) (game-run! game3 frames: 12)))))
+(test-equal "a module that fails to reload: the game runs on with its old code"
+  '((10 newer) (11 newer))
+  (list-tail (versions game3) 10))
+(test-assert "… and the failure is reported, naming the script"
+  (and (string-prefix? report-head module-warnings)
+       (string-suffix? "In procedure car: Wrong type argument in position 1 (expecting pair): ()\n" module-warnings)))
 (game-watch-script! game3 #f)
 (delete-file module-file)
 (rmdir (dirname module-file))
