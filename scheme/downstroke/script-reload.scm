@@ -171,15 +171,16 @@ it) that are loaded; () when no script runs."
 
 (define* (reload-script! #:optional (game (current-game)))
   "Evaluate the game's script (the FILE.scm downstroke runs, with the files
-it loads) again in the module it runs in: new definitions take effect at the
-next frame; GAME (by default the running game), its scene and history stay.
+it loads) again in the module it runs in, after loading again the modules
+from its folder it uses: new definitions take effect at the next frame;
+GAME (by default the running game), its scene and history stay.
 Forms in (once …) and define-once are not run again, and game-run! starts
 nothing. GAME's hooks (update:, render:, engine-update:, paused:) that were
 the value of a top-level name of the script are set to that name's new
-value. An error while reloading puts every top-level name back as it was,
-is reported as a failing hook's is (on the warning port; in a served game,
-to the REPL too) and the game runs on. Returns #t when it reloaded, #f when
-it failed."
+value. An error while reloading puts every top-level name of the script and
+of those modules back as it was, is reported as a failing hook's is (on the
+warning port; in a served game, to the REPL too) and the game runs on.
+Returns #t when it reloaded, #f when it failed."
   (when game (check-game "reload-script!" game))
   (unless the-script
     (scm-error 'misc-error "reload-script!"
