@@ -107,7 +107,7 @@
     ;; (downstroke history)
     (frame-ring? . "Whether OBJ is a frame ring (made by make-frame-ring).")
     ;; (downstroke live)
-    (watch-default . "A parameter, #f by default: whether games made from now on watch their maps' files (game-watch-maps!). The host sets it from --watch, which is on by default with --window, --repl-server and --repl-port (--no-watch turns it off).")
+    (watch-default . "A parameter, #f by default: whether games made from now on watch their maps' files (game-watch-maps!), and games run from now on their script (game-watch-script!). The host sets it from --watch, which is on by default with --window, --repl-server and --repl-port (--no-watch turns it off).")
     (watch-poll-interval . "A parameter, 1 by default: the least time, in seconds, between two looks (a stat of each) at a game's watched files (watch-file!); the frames between look at none. 0 looks in every frame, as tests do.")))
 
 (define (export-names module-name)

@@ -18,8 +18,8 @@
   #:use-module ((srfi srfi-1) #:select (find filter-map remove))
   #:use-module (downstroke game)
   #:use-module ((downstroke hook-errors) #:select (call-reporting hook-error-reporter retry-failed-frame!))
-  #:use-module ((downstroke live) #:select (watch-file! unwatch-file!))
-  #:export (reload-script! game-watch-script! watch-every-game! arm-script-watch! once script-reloading?
+  #:use-module ((downstroke live) #:select (watch-file! unwatch-file! watch-default))
+  #:export (reload-script! game-watch-script! arm-script-watch! once script-reloading?
             script-loaded! script-files))
 
 ;; #t while a script is being evaluated again: (once …) skips its forms and
@@ -266,14 +266,11 @@ nothing when no script runs (a script run by downstroke)."
            (for-each (lambda (file) (unwatch-file! game file)) (script-files))))
     *unspecified*))
 
-;; #t: every game run from now on watches its script (the host's --watch).
-;; game-run! arms each game as it starts (arm-script-watch!), not a frame
-;; hook: a frame hook, even one that does nothing, costs each frame about
-;; 0.5 M instructions in its stack bound (measured, docs/repl.org).
-(define watch-every-game? #f)
-
-(define (watch-every-game!)
-  (set! watch-every-game? #t))
+;; Games run while watch-default is true (the host's --watch, shared with
+;; the maps' watching) watch their script: game-run! arms each as it starts
+;; (arm-script-watch!), not a frame hook: a frame hook, even one that does
+;; nothing, costs each frame about 0.5 M instructions in its stack bound
+;; (measured, docs/repl.org).
 
 ;; The games arm-script-watch! has turned watching on for: each once, so
 ;; that one turned off (game-watch-script! game #f) stays off.
@@ -281,6 +278,6 @@ nothing when no script runs (a script run by downstroke)."
 
 (define (arm-script-watch! game)
   ;; Called by game-run! as GAME starts.
-  (when (and watch-every-game? (not (hashq-ref offered game)))
+  (when (and (watch-default) (not (hashq-ref offered game)))
     (hashq-set! offered game #t)
     (game-watch-script! game #t)))
