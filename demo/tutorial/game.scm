@@ -187,8 +187,11 @@
              input-map: (append (default-input-map) '((pause "P")))
              update: update render: render paused: paused input-script: input-script))
 
-(when (main-script? "game.scm")
-  (let ((game (game-run! (new-game) frames: (if (eq? (display-mode) 'window) #f 600))))
-    (format #t "frame ~a: ~a, ~a coins~a~%" (game-frame game)
-            (entity-ref (player-of game) #:level) (entity-ref (player-of game) #:coins)
-            (if (entity-ref (player-of game) #:won? #f) ", won" ""))))
+;; once: a save of game.scm while it plays (next section) reads the
+;; definitions above again into the running game, but does not run this.
+(once
+ (when (main-script? "game.scm")
+   (let ((game (game-run! (new-game) frames: (if (eq? (display-mode) 'window) #f 600))))
+     (format #t "frame ~a: ~a, ~a coins~a~%" (game-frame game)
+             (entity-ref (player-of game) #:level) (entity-ref (player-of game) #:coins)
+             (if (entity-ref (player-of game) #:won? #f) ", won" "")))))

@@ -111,9 +111,12 @@
              scene: (make-scene entities: (start-entities) tilemap: level camera-target: 'player)
              update: update render: render input-script: input-script))
 
-(when (main-script? "game.scm")
-  ;; In a window: until the player quits; headless: 300 frames (5 s).
-  (let ((game (game-run! (new-game) frames: (if (eq? (display-mode) 'window) #f 300))))
-    (format #t "frame ~a: ~a coins, the player at (~a, ~a)~%"
-            (game-frame game) (entity-ref (player-of game) #:coins)
-            (entity-ref (player-of game) #:x) (entity-ref (player-of game) #:y))))
+;; Run once: saving this file while the game runs (downstroke --window
+;; watches it) reads the definitions above again into the running game.
+(once
+ (when (main-script? "game.scm")
+   ;; In a window: until the player quits; headless: 300 frames (5 s).
+   (let ((game (game-run! (new-game) frames: (if (eq? (display-mode) 'window) #f 300))))
+     (format #t "frame ~a: ~a coins, the player at (~a, ~a)~%"
+             (game-frame game) (entity-ref (player-of game) #:coins)
+             (entity-ref (player-of game) #:x) (entity-ref (player-of game) #:y)))))
