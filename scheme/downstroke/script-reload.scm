@@ -227,10 +227,9 @@ Returns #t when it reloaded, #f when it failed."
 ;; reload for the first read it, and reloads nothing.
 (define reloaded-stamps '())
 
-(define (file-stamp file)
-  ;; What an edit of FILE changes (as (downstroke live) looks), or #f.
-  (let ((st (stat file #f)))
-    (and st (list (stat:dev st) (stat:ino st) (stat:size st) (stat:mtime st) (stat:mtimensec st)))))
+;; What an edit of a file changes, or #f: the stamp (downstroke live)
+;; compares, so that a file this reload read is not reloaded again.
+(define file-stamp (@@ (downstroke live) file-stamp))
 
 (define (read-by-last-reload? file)
   (let ((stamp (file-stamp file)))
