@@ -19,26 +19,29 @@ SCM cut_symbol(Cut cut) {
     return cut == Cut::Floor ? floor : cut == Cut::Ceiling ? ceiling : box;
 }
 
+// Slants as a list of lists (ax ay bx by), in order.
+SCM slant_list(const Slant* ls, int n) {
+    SCM out = SCM_EOL;
+    for (int i = n - 1; i >= 0; --i)
+        out = scm_cons(scm_list_4(scm_from_int32(ls[i].ax), scm_from_int32(ls[i].ay), scm_from_int32(ls[i].bx),
+                                  scm_from_int32(ls[i].by)),
+                       out);
+    return out;
+}
+
 // A box or a ramp is the 10 slots it has always been; a polygon cut by
-// several slants adds an 11th, the further slants as lists (ax ay bx by).
+// several slants adds an 11th, the further slants as lists (ax ay bx by),
+// and one slanted on its underside too a 12th, the underside's slants.
 SCM shape_vector(const CellShape& s) {
-    SCM v = scm_c_make_vector(s.n_more > 0 ? 11 : 10, SCM_BOOL_F);
+    SCM v = scm_c_make_vector(s.two_sided() ? 12 : s.n_more > 0 ? 11 : 10, SCM_BOOL_F);
     const int32_t nums[] = {s.x0, s.y0, s.x1, s.y1};
     for (size_t i = 0; i < 4; ++i) scm_c_vector_set_x(v, i, scm_from_int32(nums[i]));
     scm_c_vector_set_x(v, 4, cut_symbol(s.cut));
     const int32_t line[] = {s.ax, s.ay, s.bx, s.by};
     for (size_t i = 0; i < 4; ++i) scm_c_vector_set_x(v, 5 + i, scm_from_int32(line[i]));
     scm_c_vector_set_x(v, 9, scm_from_bool(s.one_way));
-    if (s.n_more > 0) {
-        SCM more = SCM_EOL;
-        for (int i = s.n_more - 1; i >= 0; --i) {
-            const Slant& l = s.more[static_cast<size_t>(i)];
-            more = scm_cons(scm_list_4(scm_from_int32(l.ax), scm_from_int32(l.ay), scm_from_int32(l.bx),
-                                       scm_from_int32(l.by)),
-                            more);
-        }
-        scm_c_vector_set_x(v, 10, more);
-    }
+    if (s.n_more > 0 || s.two_sided()) scm_c_vector_set_x(v, 10, slant_list(s.more.data(), s.n_more));
+    if (s.two_sided()) scm_c_vector_set_x(v, 11, slant_list(s.under.data(), s.n_under));
     return v;
 }
 
@@ -73,7 +76,9 @@ void register_tilemap_shape_procedures() {
         "in tile px: the box [x0, x1) x [y0, y1), cut 'box, or 'floor (what lies below the line "
         "through (ax, ay) and (bx, by)) or 'ceiling (what lies above it). A convex polygon cut by "
         "several slants on one side has an 11th slot, its further slants left to right, each (ax ay bx by): "
-        "it keeps what lies on the kept side of every one.");
+        "it keeps what lies on the kept side of every one. One slanted on its underside too is a 'floor "
+        "shape with a 12th slot, its underside's slants left to right: it keeps also what lies above "
+        "every one of those.");
     define_procedure<1, 0, 0, tilemap_steepest_ramp>("tilemap-steepest-ramp",
         "(tilemap-steepest-ramp tm): the greatest |dy/dx| among the ramps the map's cells have had, "
         "as a flonum (0.0 for none): a walking body snaps down a ramp by at most |vx| times it.");

@@ -378,9 +378,9 @@ void register_tilemap_procedures() {
         "one-way-gids are one-way platforms (solid from above only); shapes gives gids a collision "
         "shape in tile px, as a list of (gid . (rect x y w h)) or (gid . (polygon (x . y) ...)), "
         "read as Tiled's collision editor's (a shaped gid in one-way-gids is a one-way shape; a shape "
-        "drawn past the tile is its part inside it; a convex polygon collides as drawn when its slanted "
-        "edges are all on its top or all on its underside, and one that is not convex, or has slanted "
-        "edges on both, is refused, as a shape with no area is).");
+        "drawn past the tile is its part inside it; a convex polygon collides as drawn, its slanted "
+        "edges on its top, its underside or both, and one that is not convex is refused, as a shape "
+        "with no area is).");
     define_procedure<1, 0, 0, tilemap_p>("tilemap?", "(tilemap? obj): whether obj is a tilemap.");
     define_procedure<1, 0, 0, tilemap_width>("tilemap-width", "(tilemap-width tm): the map's width in cells.");
     define_procedure<1, 0, 0, tilemap_height>("tilemap-height", "(tilemap-height tm): the map's height in cells.");

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The solid part of a cell that is not the whole cell (semantics §12): a
 // part-tile box, a ramp — a box cut by one slanted line — or a box cut by
-// several slanted lines on one side (a convex polygon's roof or underside).
+// several slanted lines on one side (a convex polygon's roof or underside)
+// or on both (a diamond, an octagon).
 // Plain data, in whole px from the cell's top-left corner, so a grid keeps
 // one small table of them and every rule reads the same numbers the
 // reference does.
@@ -42,9 +43,16 @@ struct DOWNSTROKE_API CellShape {
     // box or a ramp.
     uint8_t n_more = 0;
     std::array<Slant, kMaxShapeSlants - 1> more{};
+    // The underside's slanted lines, left to right, of a floor shape whose
+    // polygon is slanted below too (a diamond): it keeps what also lies
+    // above every one of them. None for every other shape.
+    uint8_t n_under = 0;
+    std::array<Slant, kMaxShapeSlants> under{};
 
     bool ramp() const { return cut != Cut::None; }
     int slants() const { return cut == Cut::None ? 0 : 1 + n_more; }
+    // Slanted both on its top and on its underside.
+    bool two_sided() const { return n_under > 0; }
     // The i-th slanted line, 0 ≤ i < slants(), left to right.
     Slant slant(int i) const { return i == 0 ? Slant{ax, ay, bx, by} : more[static_cast<size_t>(i - 1)]; }
     // The greatest |dy/dx| of its slants: 1 for 45°, 0.5 for 1:2, 2 for 2:1;
@@ -55,6 +63,10 @@ struct DOWNSTROKE_API CellShape {
     // climbs that way rightwards, x0 when every one climbs leftwards, else
     // the right end of the last slant that climbs rightwards.
     int32_t apex() const;
+    // Where a two-sided shape's bottom is lowest, as apex() says for a
+    // ceiling shape's slants, read from its underside's; apex() for a
+    // ceiling shape, x0 for any other.
+    int32_t under_apex() const;
     bool operator==(const CellShape&) const = default;
 };
 
@@ -84,11 +96,17 @@ struct ShapeGeometry {
     double apex = 0;                        // CellShape::apex()
     int n_more = 0;                         // further slants, for a polygon
     std::array<LineGeometry, kMaxShapeSlants - 1> more{};
+    double under_apex = 0;                  // CellShape::under_apex()
+    int n_under = 0;                        // the underside's slants, for a two-sided shape
+    std::array<LineGeometry, kMaxShapeSlants> under{};
 
     static ShapeGeometry of(const CellShape& s) {
         const auto d = [](int32_t v) { return static_cast<double>(v); };
-        ShapeGeometry g{d(s.x0), d(s.y0), d(s.x1), d(s.y1), LineGeometry::of(s.slant(0)), d(s.apex()), s.n_more, {}};
+        ShapeGeometry g{d(s.x0), d(s.y0), d(s.x1), d(s.y1), LineGeometry::of(s.slant(0)), d(s.apex()), s.n_more, {},
+                        d(s.under_apex()), s.n_under, {}};
         for (int i = 0; i < s.n_more; ++i) g.more[static_cast<size_t>(i)] = LineGeometry::of(s.more[static_cast<size_t>(i)]);
+        for (int i = 0; i < s.n_under; ++i)
+            g.under[static_cast<size_t>(i)] = LineGeometry::of(s.under[static_cast<size_t>(i)]);
         return g;
     }
 };

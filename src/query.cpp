@@ -160,11 +160,15 @@ bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end,
     const Span sy = axis_span(s.y0, dy, p.box_top(), p.box_bottom());
     double in = std::max({sx.in, sy.in, 0.0}), out = std::min({sx.out, sy.out, t_end});
     int through = -1;  // the slant the segment came in through, or −1
-    const double sign = p.s.cut == Cut::Floor ? 1.0 : -1.0;  // which side of the slants is kept
-    for (int i = 0; i < (p.s.cut != Cut::None ? p.lines() : 0); ++i) {
+    // The slants in turn, a two-sided shape's underside after its top's.
+    const int n_top = p.s.cut != Cut::None ? p.lines() : 0, n = n_top + p.under_lines();
+    auto slant = [&](int i) { return i < n_top ? p.s.slant(i) : p.s.under[static_cast<size_t>(i - n_top)]; };
+    auto kept_below = [&](int i) { return i < n_top && p.s.cut == Cut::Floor; };  // a top's slant
+    for (int i = 0; i < n; ++i) {
         // f(t) = sign·(run·(y − ay) − rise·(x − ax)) along the segment: the
         // kept side of slant i is f ≥ 0, and f is linear in t.
-        const Slant l = p.s.slant(i);
+        const double sign = kept_below(i) ? 1.0 : -1.0;  // which side of the slant is kept
+        const Slant l = slant(i);
         const double run = l.bx - l.ax, rise = l.by - l.ay;
         const double ax = p.ox + l.ax, ay = p.oy + l.ay;
         const double a = sign * (run * (s.y0 - ay) - rise * (s.x0 - ax));
@@ -181,9 +185,10 @@ bool ray_into_shape(const shape_math::Placed& p, const Segment& s, double t_end,
     if (!(in < out)) return false;
     h = hit_at(s, in, sx, sy, p.left(), p.right(), p.box_top(), p.box_bottom());
     if (through >= 0) {
-        const Slant l = p.s.slant(through);
+        const Slant l = slant(through);
+        const double sign = kept_below(through) ? 1.0 : -1.0;
         h.nx = (l.by - l.ay) * sign > 0 ? 1 : -1;  // outward: (rise, −run) for a floor ramp
-        h.ny = p.s.cut == Cut::Floor ? -1 : 1;
+        h.ny = kept_below(through) ? -1 : 1;
         h.x = s.x0 + in * dx, h.y = s.y0 + in * dy;
     }
     return true;

@@ -104,21 +104,43 @@ double CellShape::steepness() const {
         const Slant l = slant(i);
         k = std::max(k, std::fabs(static_cast<double>(l.by - l.ay)) / static_cast<double>(l.bx - l.ax));
     }
+    for (int i = 0; i < n_under; ++i) {
+        const Slant& l = under[static_cast<size_t>(i)];
+        k = std::max(k, std::fabs(static_cast<double>(l.by - l.ay)) / static_cast<double>(l.bx - l.ax));
+    }
     return k;
 }
+
+namespace {
+
+// Where along [x0, x1] a run of slants, left to right, is highest (`floor`:
+// a top) or lowest (a bottom): x1 when every slant climbs that way
+// rightwards, x0 when none does, else the right end of the last that does.
+template <typename SlantAt>
+int32_t apex_of(SlantAt slant, int n, bool floor, int32_t x0, int32_t x1) {
+    // A floor's top climbs rightwards along a slant that rises (dy < 0), a
+    // ceiling's bottom along one that falls (dy > 0).
+    auto climbs = [&](const Slant& l) { return floor ? l.by < l.ay : l.by > l.ay; };
+    int last_climbing = -1;
+    for (int i = 0; i < n; ++i)
+        if (climbs(slant(i))) last_climbing = i;
+    if (last_climbing < 0) return x0;
+    if (last_climbing == n - 1) return x1;
+    return std::clamp(slant(last_climbing).bx, x0, x1);
+}
+
+}  // namespace
 
 // The apex of a shape (semantics §12): where its surface over any span is
 // read, clamped to the span.
 int32_t CellShape::apex() const {
-    // A floor's top climbs rightwards along a slant that rises (dy < 0), a
-    // ceiling's bottom along one that falls (dy > 0).
-    auto climbs = [&](const Slant& l) { return cut == Cut::Floor ? l.by < l.ay : l.by > l.ay; };
-    int last_climbing = -1;
-    for (int i = 0; i < slants(); ++i)
-        if (climbs(slant(i))) last_climbing = i;
-    if (last_climbing < 0) return x0;
-    if (last_climbing == slants() - 1) return x1;
-    return std::clamp(slant(last_climbing).bx, x0, x1);
+    return apex_of([&](int i) { return slant(i); }, slants(), cut == Cut::Floor, x0, x1);
+}
+
+// The same for a two-sided shape's underside (§12).
+int32_t CellShape::under_apex() const {
+    if (cut == Cut::Ceiling) return apex();
+    return apex_of([&](int i) { return under[static_cast<size_t>(i)]; }, n_under, false, x0, x1);
 }
 
 }  // namespace ds

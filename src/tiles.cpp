@@ -135,8 +135,12 @@ struct XMove {
 };
 
 // Whether a move along y could push a box over [top, bottom) into solid
-// shape p, which it does not overlap and does not climb.
-bool could_meet(const Placed& p, double top) { return p.s.cut != Cut::Floor || top >= p.box_bottom(); }
+// shape p, which it does not overlap and does not climb: a floor shape only
+// from below its box, unless its underside is slanted (a two-sided shape
+// beside the box may reach under a lifted head).
+bool could_meet(const Placed& p, double top) {
+    return p.s.cut != Cut::Floor || p.s.two_sided() || top >= p.box_bottom();
+}
 
 // What the ramps of one column, scanned at the box's present rows, would
 // do to it: lift it onto the highest floor ramp top it overlaps over its
@@ -163,11 +167,11 @@ struct Climb {
             k.one_way_below = k.one_way_below || !b.drop_through;  // a lift may bring the feet above it
             return;
         }
-        if (head < p.box_bottom() && feet > t) {
+        if (head < under && feet > t) {
             k.up = true;
             if (t < k.new_feet) k.new_feet = t;
         }
-        m.unsure = m.unsure || (!sh.one_way && head >= p.box_bottom());
+        m.unsure = m.unsure || (!sh.one_way && head >= under);
     } else if (!sh.one_way) {
         k.ceilings = true;
         m.unsure = true;

@@ -407,7 +407,8 @@ exact when the position and size were."
 ;;; A cell as (tilemap-cell-shape tm col row) gives it: #f, 'solid, 'one-way,
 ;;; or a shape #(x0 y0 x1 y1 cut ax ay bx by one-way?) in tile px, CUT one of
 ;;; box floor ceiling, with an 11th slot listing further slants ((ax ay bx by)
-;;; ...) for a convex polygon cut by several. The core computes every quantity of a shape in doubles
+;;; ...) for a convex polygon cut by several, and a 12th listing the
+;;; underside's slants of a floor shape slanted below too (two-sided). The core computes every quantity of a shape in doubles
 ;;; in one order of operations (src/detail/placed_shape.hpp); these do the
 ;;; same on flonums, so both get the same bits. Whole cells keep §4's rules,
 ;;; so a map without shapes is stepped as before.
@@ -431,6 +432,11 @@ exact when the position and size were."
   (cons (list (vector-ref s 5) (vector-ref s 6) (vector-ref s 7) (vector-ref s 8))
         (if (> (vector-length s) 10) (vector-ref s 10) '())))
 (define (p-slants p) (shape-slants (vector-ref p 0)))
+(define (shape-under s)
+  "A two-sided shape's underside slants, left to right; '() for any other."
+  (if (> (vector-length s) 11) (vector-ref s 11) '()))
+(define (p-under p) (shape-under (vector-ref p 0)))
+(define (two-sided? p) (pair? (p-under p)))
 
 (define (p-line-of p l x)
   "Slant L's y at X: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx."
@@ -449,26 +455,46 @@ slants (greatest y), the highest of a ceiling shape's, the first of a tie."
           (let ((w (p-line-of p (car ls) x)))
             (loop (cdr ls) (if (if floor? (< v w) (< w v)) w v)))))))
 
-(define (shape-apex s)
-  "Where (tile px) a floor shape's top is highest, a ceiling shape's bottom
+(define (p-under-line p x)
+  "The y at X of the line bounding a two-sided shape from below: the highest
+of its underside's slants, the first of a tie."
+  (let loop ((ls (cdr (p-under p))) (v (p-line-of p (car (p-under p)) x)))
+    (if (null? ls)
+        v
+        (let ((w (p-line-of p (car ls) x)))
+          (loop (cdr ls) (if (< w v) w v))))))
+
+(define (slants-apex s slants floor?)
+  "Where (tile px) SLANTS, left to right, are highest (FLOOR?: a top) or
 lowest: x1 when every slant climbs that way rightwards, x0 when none does,
 else the right end of the last that does (within [x0, x1])."
-  (let* ((slants (shape-slants s)) (n (length slants))
-         (climbs? (lambda (l) (if (eq? (cut-of s) 'floor) (< (list-ref l 3) (list-ref l 1))
+  (let* ((n (length slants))
+         (climbs? (lambda (l) (if floor? (< (list-ref l 3) (list-ref l 1))
                                   (> (list-ref l 3) (list-ref l 1)))))
          (last (let loop ((i 0) (ls slants) (last #f))
                  (if (null? ls) last (loop (+ i 1) (cdr ls) (if (climbs? (car ls)) i last))))))
     (cond ((not last) (vector-ref s 0))
           ((= last (- n 1)) (vector-ref s 2))
           (else (max (vector-ref s 0) (min (vector-ref s 2) (list-ref (list-ref slants last) 2)))))))
+(define (shape-apex s)
+  "Where (tile px) a floor shape's top is highest, a ceiling shape's bottom lowest."
+  (slants-apex s (shape-slants s) (eq? (cut-of s) 'floor)))
+(define (shape-under-apex s)
+  "Where (tile px) a shape's bottom is lowest: a ceiling shape's apex, a
+two-sided shape's underside's."
+  (if (eq? (cut-of s) 'ceiling) (shape-apex s) (slants-apex s (shape-under s) #f)))
 (define (p-apex p) (+ (vector-ref p 1) (shape-apex (vector-ref p 0))))
+(define (p-under-apex p) (+ (vector-ref p 1) (shape-under-apex (vector-ref p 0))))
 
 (define (clamp v lo hi) (cond ((< v lo) lo) ((< hi v) hi) (else v)))
 
 (define (p-top p x)
   (if (eq? (p-cut p) 'floor) (clamp (p-line p x) (p-box-top p) (p-box-bottom p)) (p-box-top p)))
 (define (p-bottom p x)
-  (if (eq? (p-cut p) 'ceiling) (clamp (p-line p x) (p-box-top p) (p-box-bottom p)) (p-box-bottom p)))
+  (cond ((eq? (p-cut p) 'ceiling) (clamp (p-line p x) (p-box-top p) (p-box-bottom p)))
+        ((two-sided? p) (clamp (p-under-line p x) (p-box-top p) (p-box-bottom p)))
+        (else (p-box-bottom p))))
+(define (p-slanted-below? p) (or (eq? (p-cut p) 'ceiling) (two-sided? p)))
 
 (define (p-over p lo hi)
   "The part [a, b) of the span [LO, HI) over the shape, as (a . b), or #f."
@@ -482,12 +508,12 @@ limit), the top falling away from the apex on either side; for a ramp, the
 end its line rises towards."
   (p-top p (clamp (p-apex p) (car ab) (cdr ab))))
 (define (p-bottom-over p ab)
-  (p-bottom p (clamp (p-apex p) (car ab) (cdr ab))))
+  (p-bottom p (clamp (if (eq? (p-cut p) 'ceiling) (p-apex p) (p-under-apex p)) (car ab) (cdr ab))))
 (define (p-surface p ab) (if (eq? (p-cut p) 'floor) (p-top-over p ab) (p-box-top p)))
-(define (p-underside p ab) (if (eq? (p-cut p) 'ceiling) (p-bottom-over p ab) (p-box-bottom p)))
+(define (p-underside p ab) (if (p-slanted-below? p) (p-bottom-over p ab) (p-box-bottom p)))
 (define (p-solid-over? p ab)
   (case (p-cut p)
-    ((floor) (< (p-top-over p ab) (p-box-bottom p)))
+    ((floor) (< (p-top-over p ab) (p-underside p ab)))
     ((ceiling) (> (p-bottom-over p ab) (p-box-top p)))
     (else #t)))
 
@@ -496,7 +522,7 @@ end its line rises towards."
   (let ((ab (p-over p lo hi)))
     (and ab (p-solid-over? p ab)
          (case (p-cut p)
-           ((floor) (and (< top (p-box-bottom p)) (> bottom (p-top-over p ab))))
+           ((floor) (and (< top (p-underside p ab)) (> bottom (p-top-over p ab))))
            ((ceiling) (and (> bottom (p-box-top p)) (< top (p-bottom-over p ab))))
            (else (and (< top (p-box-bottom p)) (> bottom (p-box-top p))))))))
 
@@ -600,7 +626,7 @@ squeezed."
                                         (or (flag e #:drop-through?)
                                             (not (enters-from-above? p fwd? lead0 feet))))
                              (let ((t (p-top-over p ab)))
-                               (when (and (< head (p-box-bottom p)) (> feet t))
+                               (when (and (< head (p-underside p ab)) (> feet t))
                                  (set! up #t)
                                  (when (< t new-feet) (set! new-feet t)))))
                            (unless (one-way-shape? cell)
@@ -919,14 +945,38 @@ down. A shaped cell stops it by its shape (shape-stop)."
              (+ (+ (/ (- (* y dx) (* (+ oy ay) dx)) dy) ax) ox)))
          l))
 
+(define (corner-stop p slants floor? level apex fwd? lead reach)
+  "Where a box moving along x from LEAD to REACH meets, with its corner at
+height LEVEL, the SLANTS of one side of P (a top's when FLOOR?) that face
+the move before APEX: the farthest of their lines at that height, as the
+distance from LEAD; #f when none faces it or the box does not get there."
+  (let ((lx (fold (lambda (l x)
+                    (let ((rising (if fwd? (< (list-ref l 3) (list-ref l 1))
+                                      (> (list-ref l 3) (list-ref l 1)))))
+                      (if (eq? rising floor?)
+                          (let ((xi (line-x p l level)))
+                            (if (or (not x) (if fwd? (< x xi) (< xi x))) xi x))
+                          x)))
+                  #f slants)))
+    (and lx
+         (let ((at (if fwd?
+                       (if (< lx (p-left p)) (p-left p) lx)
+                       (if (< (p-right p) lx) (p-right p) lx))))
+           (and (if fwd?
+                    (and (<= lead at) (< at reach) (< at (p-right p)) (< at apex))
+                    (and (< reach at) (<= at lead) (> at (p-left p)) (> at apex)))
+                (- at lead))))))
+
 (define (shape-stop b p x-axis? d)
   "How far (signed as D, a flonum) box B moves along an axis before it meets
 the solid of placed shape P, or #f: along y the feet onto its surface (down)
 or the head onto its underside (up); along x the leading face onto its near
 side where the box spans solid there, else the box's corner onto the slants
 facing the move before the apex (the feet for a floor, the head for a
-ceiling), the farthest of their lines at that height. A one-way shape stops
-only a move down."
+ceiling), the farthest of their lines at that height; a two-sided shape's
+feet onto its top's when no lower than the near side's top, head onto its
+underside's when no higher than that side's bottom, the nearer. A one-way
+shape stops only a move down."
   (let* ((fwd? (> d 0)) (d (fl d))
          (head (fl (y b))) (feet (fl (num+ (y b) (h b))))
          (lo (fl (x b))) (hi (fl (num+ (x b) (w b)))))
@@ -946,26 +996,18 @@ only a move down."
         (cond
          ((and crossed (< head (p-bottom p side)) (> feet (p-top p side))) (- side lead))
          ((not (and (< head (p-box-bottom p)) (> feet (p-box-top p)))) #f)
+         ((eq? (p-cut p) 'box) #f)
+         ((not (two-sided? p))
+          (let ((floor? (eq? (p-cut p) 'floor)))
+            (corner-stop p (p-slants p) floor? (if floor? feet head) (p-apex p) fwd? lead reach)))
          (else
-          (let* ((floor? (eq? (p-cut p) 'floor))
-                 (level (if floor? feet head))
-                 (lx (and (not (eq? (p-cut p) 'box))
-                          (fold (lambda (l x)
-                                  (let ((rising (if fwd? (< (list-ref l 3) (list-ref l 1))
-                                                    (> (list-ref l 3) (list-ref l 1)))))
-                                    (if (eq? rising floor?)
-                                        (let ((xi (line-x p l level)))
-                                          (if (or (not x) (if fwd? (< x xi) (< xi x))) xi x))
-                                        x)))
-                                #f (p-slants p)))))
-            (and lx
-                 (let ((at (if fwd?
-                               (if (< lx (p-left p)) (p-left p) lx)
-                               (if (< (p-right p) lx) (p-right p) lx))))
-                   (and (if fwd?
-                            (and (<= lead at) (< at reach) (< at (p-right p)) (< at (p-apex p)))
-                            (and (< reach at) (<= at lead) (> at (p-left p)) (> at (p-apex p))))
-                        (- at lead))))))))))))
+          (let ((by-feet (and (<= feet (p-top p side))
+                              (corner-stop p (p-slants p) #t feet (p-apex p) fwd? lead reach)))
+                (by-head (and (>= head (p-bottom p side))
+                              (corner-stop p (p-under p) #f head (p-under-apex p) fwd? lead reach))))
+            (if (and by-feet (or (not by-head) (<= (abs by-feet) (abs by-head))))
+                by-feet
+                by-head)))))))))
 
 
 (define (clipped-push b x-axis? d tm)

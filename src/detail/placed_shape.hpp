@@ -62,6 +62,8 @@ struct Placed {
     // Where the top is highest (a floor shape) or the bottom lowest (a
     // ceiling one), CellShape::apex, in the world.
     double apex() const { return ox + g.apex; }
+    // Where the bottom is lowest, CellShape::under_apex, in the world.
+    double under_apex() const { return ox + g.under_apex; }
 
     // The first slanted line's y at world x: ((oy + ay)·dx + ((x − ox) − ax)·dy) / dx,
     // one division (for a power-of-two run, the multiplication by 1/dx that
@@ -78,6 +80,14 @@ struct Placed {
         return l.inv_dx != 0 ? n * l.inv_dx : n / l.dx;
     }
     int lines() const { return 1 + g.n_more; }
+    // A two-sided shape's underside line i at world x, in the same order
+    // of operations.
+    double under_line(int i, double x) const {
+        const LineGeometry& l = g.under[static_cast<size_t>(i)];
+        const double n = (oy + l.ay) * l.dx + ((x - ox) - l.ax) * l.dy;
+        return l.inv_dx != 0 ? n * l.inv_dx : n / l.dx;
+    }
+    int under_lines() const { return g.n_under; }
     // The line that bounds the solid at x: the lowest (greatest y) of a
     // floor shape's lines, the highest of a ceiling shape's, the first wins
     // a tie. A convex polygon's roof is the lowest of its edges' lines at
@@ -90,12 +100,22 @@ struct Placed {
         }
         return v;
     }
-    // The top and bottom of the solid in the column at x (top == bottom: none).
+    // The line that bounds a two-sided shape's solid from below at x: the
+    // highest of its underside's, the first wins a tie.
+    double under_bound(double x) const {
+        double v = under_line(0, x);
+        for (int i = 1; i < under_lines(); ++i) v = std::min(v, under_line(i, x));
+        return v;
+    }
+    // Whether the bottom is slanted: a ceiling shape's, a two-sided one's.
+    bool slanted_below() const { return s.cut == Cut::Ceiling || g.n_under > 0; }
+    // The top and bottom of the solid in the column at x (top ≥ bottom: none).
     double top(double x) const {
         return s.cut == Cut::Floor ? clamp(bound(x), box_top(), box_bottom()) : box_top();
     }
     double bottom(double x) const {
-        return s.cut == Cut::Ceiling ? clamp(bound(x), box_top(), box_bottom()) : box_bottom();
+        if (s.cut == Cut::Ceiling) return clamp(bound(x), box_top(), box_bottom());
+        return g.n_under > 0 ? clamp(under_bound(x), box_top(), box_bottom()) : box_bottom();
     }
 
     // The part of `span` over the shape, [a, b); false when none.
@@ -109,17 +129,21 @@ struct Placed {
     // apex clamped to the span gives each, b (not in the span) as the limit;
     // for a ramp that is the end its line rises towards. One evaluation.
     double top_over(double a, double b) const { return top(clamp(apex(), a, b)); }
-    double bottom_over(double a, double b) const { return bottom(clamp(apex(), a, b)); }
+    double bottom_over(double a, double b) const {
+        return bottom(clamp(s.cut == Cut::Ceiling ? apex() : under_apex(), a, b));
+    }
     // Where a body over [a, b) meets the shape from above (its highest top)
     // and from below (its lowest bottom).
     double surface(double a, double b) const { return s.cut == Cut::Floor ? top_over(a, b) : box_top(); }
-    double underside(double a, double b) const { return s.cut == Cut::Ceiling ? bottom_over(a, b) : box_bottom(); }
+    double underside(double a, double b) const { return slanted_below() ? bottom_over(a, b) : box_bottom(); }
     // surface() and underside() over [a, b) at once (one pair of line
     // evaluations), and whether [a, b) holds solid (solid_over).
     bool extent(double a, double b, double& surface_y, double& underside_y) const {
         switch (s.cut) {
             case Cut::Floor:
-                surface_y = top_over(a, b), underside_y = box_bottom();
+                // A two-sided shape is convex: a box across [a, b) meets it
+                // exactly when it meets [highest top, lowest bottom] there.
+                surface_y = top_over(a, b), underside_y = g.n_under > 0 ? bottom_over(a, b) : box_bottom();
                 return surface_y < underside_y;
             case Cut::Ceiling:
                 surface_y = box_top(), underside_y = bottom_over(a, b);
@@ -133,7 +157,7 @@ struct Placed {
     // of its slant can be empty.
     bool solid_over(double a, double b) const {
         switch (s.cut) {
-            case Cut::Floor: return top_over(a, b) < box_bottom();
+            case Cut::Floor: return top_over(a, b) < (g.n_under > 0 ? bottom_over(a, b) : box_bottom());
             case Cut::Ceiling: return bottom_over(a, b) > box_top();
             case Cut::None: break;
         }
@@ -143,7 +167,7 @@ struct Placed {
     // box) and, for a ramp, on the kept side of the slant or on it.
     bool holds(double x, double y) const {
         if (!(left() <= x && x < right() && box_top() <= y && y < box_bottom())) return false;
-        if (s.cut == Cut::Floor) return y >= bound(x);
+        if (s.cut == Cut::Floor) return y >= bound(x) && (g.n_under == 0 || y <= under_bound(x));
         if (s.cut == Cut::Ceiling) return y <= bound(x);
         return true;
     }

@@ -18,13 +18,38 @@ using shape_math::Span;
 // cell stops it by its shape (shape_stop).
 bool stops(uint8_t cell, bool down) { return cell == kSolidCell || (down && cell == kOneWayCell); }
 
-// Where slanted line i of p is at height y: the x with line(x) = y,
+// Where slanted line l of p is at height y: the x with line(x) = y,
 // ((y·dx − (oy + ay)·dx) / dy + ax) + ox, in that order (the reference
 // repeats it), so exact integers give the correctly rounded value.
-double line_x(const Placed& p, int i, double y) {
-    const Slant l = p.s.slant(i);
+double line_x(const Placed& p, Slant l, double y) {
     const double ax = l.ax, dx = l.bx - l.ax, dy = l.by - l.ay;
     return ((y * dx - (p.oy + l.ay) * dx) / dy + ax) + p.ox;
+}
+
+// Where a box moving along x from `lead` to `reach` meets, with its corner
+// at height `level`, the slants of one side of p (its top's when `floor`,
+// its bottom's else) that face the move before `apex`: the farthest of
+// their lines at that height, as the solid is on the kept side of every
+// one. False when none faces it or the box does not get there.
+template <typename SlantAt>
+bool corner_stop(const Placed& p, SlantAt slant, int n, bool floor, double level, double apex, bool fwd,
+                 double lead, double reach, double& stop) {
+    bool facing = false;
+    double x = 0;
+    for (int i = 0; i < n; ++i) {
+        const Slant l = slant(i);
+        const bool rising = fwd ? l.by < l.ay : l.by > l.ay;  // the line climbs the way the box moves
+        if (rising != floor) continue;
+        const double xi = line_x(p, l, level);
+        if (!facing || (fwd ? x < xi : xi < x)) x = xi;
+        facing = true;
+    }
+    if (!facing) return false;
+    const double at = fwd ? std::max(x, p.left()) : std::min(x, p.right());
+    const bool met = fwd ? lead <= at && at < reach && at < p.right() && at < apex
+                         : reach < at && at <= lead && at > p.left() && at > apex;
+    if (met) stop = at - lead;
+    return met;
 }
 
 // How far (signed as d, |result| < |d|) the box of b can move along an axis
@@ -36,8 +61,10 @@ double line_x(const Placed& p, int i, double y) {
 // the move (a floor's rising, a ceiling's falling, the way the box moves)
 // before the apex, the box's corner onto them: its feet for a floor, its
 // head for a ceiling — the farthest of their lines at that height, as the
-// solid is on the kept side of every one. A one-way shape stops only a
-// move down.
+// solid is on the kept side of every one. A two-sided shape has both: its
+// feet onto the top's slants when they are no lower than the near side's
+// top, its head onto the underside's when no higher than that side's
+// bottom, the nearer of the two. A one-way shape stops only a move down.
 bool shape_stop(const Body& b, const Placed& p, bool along_x, double d, double& stop) {
     const bool fwd = d > 0;
     const double head = b.y.v, feet = (b.y + b.h).v;
@@ -55,24 +82,20 @@ bool shape_stop(const Body& b, const Placed& p, bool along_x, double d, double& 
     if (crossed && head < p.bottom(side) && feet > p.top(side)) return stop = side - lead, true;
     if (!(head < p.box_bottom() && feet > p.box_top())) return false;
     if (p.s.cut == Cut::None) return false;
-    const double level = p.s.cut == Cut::Floor ? feet : head;
-    bool facing = false;
-    double x = 0;
-    for (int i = 0; i < p.lines(); ++i) {
-        const Slant l = p.s.slant(i);
-        const bool rising = fwd ? l.by < l.ay : l.by > l.ay;  // the line climbs the way the box moves
-        if (rising != (p.s.cut == Cut::Floor)) continue;
-        const double xi = line_x(p, i, level);
-        if (!facing || (fwd ? x < xi : xi < x)) x = xi;
-        facing = true;
-    }
-    if (!facing) return false;
-    const double at = fwd ? std::max(x, p.left()) : std::min(x, p.right());
-    const double apex = p.apex();
-    const bool met = fwd ? lead <= at && at < reach && at < p.right() && at < apex
-                         : reach < at && at <= lead && at > p.left() && at > apex;
-    if (met) stop = at - lead;
-    return met;
+    auto main_slant = [&](int i) { return p.s.slant(i); };
+    const bool floor = p.s.cut == Cut::Floor;
+    if (!p.s.two_sided())
+        return corner_stop(p, main_slant, p.lines(), floor, floor ? feet : head, p.apex(), fwd, lead, reach, stop);
+    double by_feet = 0, by_head = 0;
+    const bool feet_met = feet <= p.top(side) &&
+                          corner_stop(p, main_slant, p.lines(), true, feet, p.apex(), fwd, lead, reach, by_feet);
+    const bool head_met =
+        head >= p.bottom(side) &&
+        corner_stop(p, [&](int i) { return p.s.under[static_cast<size_t>(i)]; }, p.under_lines(), false, head,
+                    p.under_apex(), fwd, lead, reach, by_head);
+    if (feet_met && (!head_met || std::fabs(by_feet) <= std::fabs(by_head))) return stop = by_feet, true;
+    if (head_met) return stop = by_head, true;
+    return false;
 }
 
 }  // namespace

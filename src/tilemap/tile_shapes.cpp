@@ -185,7 +185,7 @@ bool convex(const std::vector<Pt>& pts, int& turn) {
 }
 
 // The part of convex outline `pts` (turning `turn`) inside the tw × th
-// cell: a box, a shape cut by slants on one side, the whole cell or nothing
+// cell: a box, a shape cut by slants on one side or both, the whole cell or nothing
 // (semantics §12). The part inside is the box of its axis-aligned edges cut
 // by its slanted edges' lines: the box rounded out to whole px cuts to the
 // same part, as only the slants' ends can lie off whole px, and each slant
@@ -213,8 +213,7 @@ TileSolidPart clipped_part(const std::vector<Pt>& pts, int turn, int64_t tw, int
         return part;
     }
     Ratio x0 = outline[0].x, x1 = x0, y0 = outline[0].y, y1 = y0;
-    std::vector<Slant> slants;
-    Cut cut = Cut::None;
+    std::vector<Slant> tops, bottoms;  // the slanted edges on its top and on its underside
     for (const Corner& v : outline) {
         if (less(v.x, x0)) x0 = v.x;
         if (less(x1, v.x)) x1 = v.x;
@@ -225,33 +224,40 @@ TileSolidPart clipped_part(const std::vector<Pt>& pts, int turn, int64_t tw, int
         // The inside lies where cross(from, to, ·) has the outline's turn.
         int kept = turn;
         if (q.x < p.x) std::swap(p, q), kept = -kept;
-        const Cut side = kept > 0 ? Cut::Floor : Cut::Ceiling;
-        if (cut != Cut::None && side != cut) {
-            part.problem = named + " has slanted edges both on its top and on its underside";
+        (kept > 0 ? tops : bottoms)
+            .push_back({static_cast<int32_t>(p.x), static_cast<int32_t>(p.y), static_cast<int32_t>(q.x),
+                        static_cast<int32_t>(q.y)});
+    }
+    for (const auto* side : {&tops, &bottoms}) {
+        if (side->size() > static_cast<size_t>(kMaxShapeSlants)) {
+            part.problem = named + " has " + std::to_string(side->size()) + " slanted edges on its " +
+                           (side == &tops ? "top" : "underside") + ", more than the " +
+                           std::to_string(kMaxShapeSlants) + " a shape may have";
             return part;
         }
-        cut = side;
-        slants.push_back({static_cast<int32_t>(p.x), static_cast<int32_t>(p.y), static_cast<int32_t>(q.x),
-                          static_cast<int32_t>(q.y)});
     }
-    if (slants.size() > static_cast<size_t>(kMaxShapeSlants)) {
-        part.problem = named + " has " + std::to_string(slants.size()) + " slanted edges on its " +
-                       (cut == Cut::Floor ? "top" : "underside") + ", more than the " +
-                       std::to_string(kMaxShapeSlants) + " a shape may have";
-        return part;
-    }
+    // Slanted on one side, the shape keeps that side of its slants; on
+    // both, it is a floor shape bounded below by its underside's slants.
+    const Cut cut = !tops.empty() ? Cut::Floor : !bottoms.empty() ? Cut::Ceiling : Cut::None;
+    std::vector<Slant>& slants = cut == Cut::Floor ? tops : bottoms;
+    // Left to right along the boundary they make: a convex outline's edges
+    // on one side follow each other along x.
+    auto by_x = [](const Slant& a, const Slant& b) { return a.ax < b.ax; };
     CellShape s;
     s.x0 = static_cast<int32_t>(floor_of(x0)), s.y0 = static_cast<int32_t>(floor_of(y0));
     s.x1 = static_cast<int32_t>(ceil_of(x1)), s.y1 = static_cast<int32_t>(ceil_of(y1));
     if (slants.empty() && s.x0 == 0 && s.y0 == 0 && s.x1 == tw && s.y1 == th) return part;
     if (!slants.empty()) {
-        // Left to right along the boundary they make: a convex outline's
-        // edges on one side follow each other along x.
-        std::sort(slants.begin(), slants.end(), [](const Slant& a, const Slant& b) { return a.ax < b.ax; });
+        std::sort(slants.begin(), slants.end(), by_x);
         s.cut = cut;
         s.ax = slants[0].ax, s.ay = slants[0].ay, s.bx = slants[0].bx, s.by = slants[0].by;
         s.n_more = static_cast<uint8_t>(slants.size() - 1);
         std::copy(slants.begin() + 1, slants.end(), s.more.begin());
+    }
+    if (cut == Cut::Floor && !bottoms.empty()) {
+        std::sort(bottoms.begin(), bottoms.end(), by_x);
+        s.n_under = static_cast<uint8_t>(bottoms.size());
+        std::copy(bottoms.begin(), bottoms.end(), s.under.begin());
     }
     part.whole = false;
     part.shape = s;

@@ -20,8 +20,8 @@ struct TileSolidPart {
     // Why the objects collide as nothing (a rectangle or polygon with no
     // area, or no area inside the tile) or as the whole cell although they
     // tried to be a shape (a polygon that is not convex, or whose part
-    // inside has slanted edges on both its top and its underside, or more
-    // than kMaxShapeSlants): the loader warns with this text. Empty
+    // inside has more than kMaxShapeSlants slanted edges on its top or its
+    // underside): the loader warns with this text. Empty
     // otherwise.
     std::string problem;
 };
@@ -35,8 +35,9 @@ struct TileSolidPart {
 // it by at most kMaxShapeReachTiles): its part inside filling the tile is
 // the whole cell; with no slanted edge it is a part-tile box; with slanted
 // edges all on its top (or all on its underside) it is its bounding box cut
-// by each edge's line (one edge: a ramp); with slanted edges on both, or a
-// polygon that is not convex, the whole cell. A shape with no area, or none
+// by each edge's line (one edge: a ramp); with slanted edges on both, a
+// floor shape with an underside (a diamond); a polygon that is not convex
+// is the whole cell. A shape with no area, or none
 // inside the tile, is nothing.
 TileSolidPart tile_solid_part(const std::vector<MapObject>& objects, int tile_w, int tile_h, uint32_t flips);
 

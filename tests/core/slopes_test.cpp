@@ -38,11 +38,20 @@ CellShape house(bool upside_down) {
     return s;
 }
 
+// A diamond: its top peaking at (8, 0), its underside lowest at (8, 16),
+// its sides meeting at (0, 8) and (16, 8).
+CellShape diamond() {
+    CellShape s = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
+    s.n_more = 1, s.more[0] = {8, 0, 16, 8};
+    s.n_under = 2, s.under[0] = {0, 8, 8, 16}, s.under[1] = {8, 16, 16, 8};
+    return s;
+}
+
 // '/' 45° up to the right, '\' 45° up to the left; 'a' 'b' the lower and
 // upper tiles of a 1:2 ramp up to the right, 'd' 'c' the same up to the
 // left; 'v' a 45° ceiling ramp (the '/' tile flipped vertically), '^' its
 // mirror; '_' a half-height box at the bottom, '-' a 4 px ledge at the top;
-// 'o' a one-way '/'; 'p' a house, 'u' one upside down.
+// 'o' a one-way '/'; 'p' a house, 'u' one upside down; 'x' a diamond.
 CellShape shape_of(char ch) {
     switch (ch) {
         case '/': return ramp(0, 0, 16, 16, Cut::Floor, 0, 16, 16, 0);
@@ -58,6 +67,7 @@ CellShape shape_of(char ch) {
         case 'o': return ramp(0, 0, 16, 16, Cut::Floor, 0, 16, 16, 0, true);
         case 'p': return house(false);
         case 'u': return house(true);
+        case 'x': return diamond();
         default: FAIL("no shape for " << ch); return {};
     }
 }
@@ -551,6 +561,98 @@ TEST_CASE("rays hit a roof's slopes with their normals") {
     CHECK(ray(g, 33, 16, 33, 22).empty());  // above the roof, inside the cell
     CHECK(g.solid_at(40, 16));
     CHECK_FALSE(g.solid_at(35, 20));
+}
+
+// ---- a diamond, slanted on its top and its underside. 'x' at (2, 1): x
+// 32–48, y 16–32, top y = 56 − x up to (40, 16), then x − 24; underside
+// y = x − 8 down to (40, 32), then 72 − x; its sides meet at (32, 24) and
+// (48, 24).
+
+TEST_CASE("landing on a diamond: on its top vertex, and on either slope nearest it") {
+    const ds::TileGrid g = shaped_grid({"....", "..x.", "...."});
+    auto land = [&](double x) {
+        Body b = box(x, 16, 8, 8);  // fell 20 px from feet at 4
+        b.vy = I(20);
+        CHECK(ds::resolve_tile_collisions_y(b, &g, ds::CollisionMode::Swept));
+        CHECK_EXACT(b.vy, 0);
+        return b.y;
+    };
+    CHECK_EXACT(land(36), 8);   // over 36–44: the vertex, 16
+    CHECK_EXACT(land(30), 10);  // over 32–38: the left slope at 38, 18
+    CHECK_EXACT(land(42), 10);  // over 42–48: the right slope at 42, 18
+    CHECK_EXACT(land(45), 13);  // over 45–48: 21
+    Body past = box(20, 16, 8, 8);  // beside it: falls on
+    past.vy = I(20);
+    ds::resolve_tile_collisions_y(past, &g, ds::CollisionMode::Swept);
+    CHECK_EXACT(past.y, 16);
+    CHECK_EXACT(past.vy, 20);
+}
+
+TEST_CASE("a jump into a diamond's underside stops the head on its lowest point over the span") {
+    const ds::TileGrid g = shaped_grid({"....", "..x.", "...."});
+    auto bump = [&](double x) {
+        Body b = box(x, 20, 8, 8);  // rose 20 px from its head at 40
+        b.vy = I(-20);
+        CHECK(ds::resolve_tile_collisions_y(b, &g, ds::CollisionMode::Swept));
+        return b.y;
+    };
+    CHECK_EXACT(bump(36), 32);  // over 36–44: the lowest point, (40, 32)
+    CHECK_EXACT(bump(42), 30);  // over 42–48: 72 − 42
+    CHECK_EXACT(bump(28), 28);  // over 32–36: 36 − 8
+}
+
+TEST_CASE("a diamond's side vertex stops a body spanning it; a corner stops on the slope it meets") {
+    const ds::TileGrid g = shaped_grid({"....", "..x.", "...."});
+    Body wall = box(26, 16, 8, 16);  // moved right 4 to lead 34, spanning y 24
+    wall.vx = I(4);
+    CHECK(ds::resolve_tile_collisions_x(wall, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(wall.x, 24);
+    CHECK_EXACT(wall.vx, 0);
+    Body back = box(46, 16, 8, 16);  // moved left 4 onto the right vertex
+    back.vx = I(-4);
+    CHECK(ds::resolve_tile_collisions_x(back, &g, ds::CollisionMode::Swept));
+    CHECK_EXACT(back.x, 48);
+    // Pushed (§4): feet at 20 meet the top's left slope at x = 36; a head
+    // at 26 the underside's at x = 34; from the right, a head at 26 meets
+    // 72 − x at x = 46.
+    CHECK_EXACT(ds::clipped_push(box(20, 4, 8, 16), true, I(12), g), 8);
+    CHECK_EXACT(ds::clipped_push(box(20, 26, 8, 8), true, I(12), g), 6);
+    CHECK_EXACT(ds::clipped_push(box(60, 26, 8, 8), true, I(-30), g), -14);
+    CHECK_EXACT(ds::clipped_push(box(20, 8, 8, 8), true, I(30), g), 30);   // over the top vertex
+    CHECK_EXACT(ds::clipped_push(box(20, 31, 8, 8), true, I(30), g), 11);  // a head at 31: x = 39
+    CHECK_EXACT(ds::clipped_push(box(20, 22, 8, 4), true, I(12), g), 4);   // spanning the vertex: its side
+}
+
+TEST_CASE("a diamond's lower slope lifts a walker onto its top, as a roof's slope does") {
+    // 'x' standing on the floor at y 32: a walker 8 px tall, feet at 32,
+    // moved right to lead 36, overlaps its underside over 32–36 (lowest
+    // 28) and is lifted onto its top there, 56 − 36 = 20.
+    const ds::TileGrid g = shaped_grid({"....", "..x.", "####"});
+    Body b = box(28, 24, 8, 8);
+    b.vx = I(4);
+    ds::resolve_tile_collisions_x(b, &g, ds::CollisionMode::Swept);
+    CHECK_EXACT(b.vx, 4);
+    CHECK_EXACT(b.x, 28);
+    CHECK_EXACT(b.y, 12);
+}
+
+TEST_CASE("rays hit a diamond's top and underside with their normals; solid_at is its inside") {
+    const ds::TileGrid g = shaped_grid({"....", "..x.", "...."});
+    auto down = ray(g, 36, 0, 36, 64);
+    REQUIRE(down.size() == 1);
+    CHECK(down[0].y == 20);
+    CHECK(down[0].nx == -1);
+    CHECK(down[0].ny == -1);
+    auto up = ray(g, 44, 64, 44, 0);
+    REQUIRE(up.size() == 1);
+    CHECK(up[0].y == 28);
+    CHECK(up[0].nx == 1);
+    CHECK(up[0].ny == 1);
+    CHECK(g.solid_at(40, 16));
+    CHECK(g.solid_at(40, 31));
+    CHECK(g.solid_at(33, 24));
+    CHECK_FALSE(g.solid_at(33, 29));  // below the underside's left slope
+    CHECK_FALSE(g.solid_at(35, 20));  // above the top's
 }
 
 }  // TEST_SUITE

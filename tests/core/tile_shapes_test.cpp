@@ -154,10 +154,6 @@ TEST_CASE("shapes reaching past the tile that do not fit: the whole cell, with t
     CHECK(star.whole);
     CHECK(star.problem == "collision point (20, 16) lies outside the 16x16 tile and the polygon is not convex, so "
                           "its part inside is not read");
-    const ds::TileSolidPart diamond = ds::tile_solid_part({polygon({{-4, 8}, {8, -4}, {20, 8}, {8, 20}})}, 16, 16, 0);
-    CHECK(diamond.whole);
-    CHECK(diamond.problem ==
-          "the part of the collision polygon inside the 16x16 tile has slanted edges both on its top and on its underside");
     const ds::TileSolidPart far = ds::tile_solid_part({polygon({{0, 16}, {33, 16}, {33, 0}})}, 16, 16, 0);
     CHECK(far.whole);
     CHECK(far.problem == "collision point (33, 16) lies more than a tile outside the 16x16 tile");
@@ -195,10 +191,7 @@ TEST_CASE("convex polygons with several slants on one side: a roof or an undersi
     tall.n_more = 1, tall.more[0] = {8, -8, 16, 8};
     CHECK(shape_of(polygon({{0, 16}, {0, 8}, {8, -8}, {16, 8}, {16, 16}})) == tall);
     CHECK(tall.apex() == 8);
-    // Slants on both sides, or not convex: the whole cell, with the reason.
-    const ds::TileSolidPart diamond = ds::tile_solid_part({polygon({{8, 0}, {16, 8}, {8, 16}, {0, 8}})}, 16, 16, 0);
-    CHECK(diamond.whole);
-    CHECK(diamond.problem == "the collision polygon has slanted edges both on its top and on its underside");
+    // Not convex: the whole cell, with the reason.
     const ds::TileSolidPart notch =
         ds::tile_solid_part({polygon({{0, 16}, {16, 16}, {16, 0}, {8, 8}, {0, 8}})}, 16, 16, 0);
     CHECK(notch.whole);
@@ -217,7 +210,7 @@ const char* kPolygonTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
  </layer>
 </map>)";
 
-TEST_CASE("a loaded map: a house and an upside-down one collide as drawn; a diamond and a notch warn") {
+TEST_CASE("a loaded map: a house, an upside-down one and a diamond collide as drawn; a notch warns") {
     const ds::Tilemap m = ds::parse_tilemap(kPolygonTmx, "roofs.tmx");
     const ds::TileGrid g = m.solid_grid();
     CellShape house = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
@@ -228,12 +221,50 @@ TEST_CASE("a loaded map: a house and an upside-down one collide as drawn; a diam
     CHECK(*g.shape(0, 0) == house);
     REQUIRE(g.shape(1, 0) != nullptr);
     CHECK(*g.shape(1, 0) == under);  // flipped vertically
-    CHECK(g.cell(2, 0) == ds::kSolidCell);
+    CellShape diamond = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
+    diamond.n_more = 1, diamond.more[0] = {8, 0, 16, 8};
+    diamond.n_under = 2, diamond.under[0] = {0, 8, 8, 16}, diamond.under[1] = {8, 16, 16, 8};
+    REQUIRE(g.shape(2, 0) != nullptr);
+    CHECK(*g.shape(2, 0) == diamond);
     CHECK(g.cell(3, 0) == ds::kSolidCell);
     CHECK(m.warnings == std::vector<std::string>{
-        "roofs.tmx: tileset 'roofs', tile 1: the collision polygon has slanted edges both on its top and on its "
-        "underside; its cells are solid whole",
         "roofs.tmx: tileset 'roofs', tile 2: the collision polygon is not convex; its cells are solid whole"});
+}
+
+TEST_CASE("convex polygons slanted on their top and their underside: a floor shape with an underside") {
+    // A diamond: top slants to (8, 0), underside slants to (8, 16).
+    CellShape diamond = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 8, 0);
+    diamond.n_more = 1, diamond.more[0] = {8, 0, 16, 8};
+    diamond.n_under = 2, diamond.under[0] = {0, 8, 8, 16}, diamond.under[1] = {8, 16, 16, 8};
+    CHECK(shape_of(polygon({{8, 0}, {16, 8}, {8, 16}, {0, 8}})) == diamond);
+    CHECK(shape_of(polygon({{0, 8}, {8, 16}, {16, 8}, {8, 0}})) == diamond);
+    CHECK(diamond.apex() == 8);
+    CHECK(diamond.under_apex() == 8);
+    CHECK(diamond.two_sided());
+    // A hexagon lying on its side: flat top and bottom, one slant each way
+    // on both; its top is highest from x 4, its bottom lowest from x 4.
+    CellShape hexagon = ramp(0, 0, 16, 16, Cut::Floor, 0, 8, 4, 0);
+    hexagon.n_more = 1, hexagon.more[0] = {12, 0, 16, 8};
+    hexagon.n_under = 2, hexagon.under[0] = {0, 8, 4, 16}, hexagon.under[1] = {12, 16, 16, 8};
+    CHECK(shape_of(polygon({{4, 0}, {12, 0}, {16, 8}, {12, 16}, {4, 16}, {0, 8}})) == hexagon);
+    CHECK(hexagon.apex() == 4);
+    CHECK(hexagon.under_apex() == 4);
+    // A diamond reaching past every side: its part inside is an octagon
+    // whose slants keep the drawn lines.
+    CellShape octagon = ramp(0, 0, 16, 16, Cut::Floor, -4, 8, 8, -4);
+    octagon.n_more = 1, octagon.more[0] = {8, -4, 20, 8};
+    octagon.n_under = 2, octagon.under[0] = {-4, 8, 8, 20}, octagon.under[1] = {8, 20, 20, 8};
+    CHECK(shape_of(polygon({{-4, 8}, {8, -4}, {20, 8}, {8, 20}})) == octagon);
+    // A 1:2 diamond in a 32 × 16 tile, steepest 0.5 on either side.
+    CellShape wide = ramp(0, 0, 32, 16, Cut::Floor, 0, 8, 16, 0);
+    wide.n_more = 1, wide.more[0] = {16, 0, 32, 8};
+    wide.n_under = 2, wide.under[0] = {0, 8, 16, 16}, wide.under[1] = {16, 16, 32, 8};
+    const ds::TileSolidPart flat = ds::tile_solid_part({polygon({{16, 0}, {32, 8}, {16, 16}, {0, 8}})}, 32, 16, 0);
+    REQUIRE_FALSE(flat.whole);
+    CHECK(flat.shape == wide);
+    CHECK(wide.steepness() == 0.5);
+    // A one-sided shape has no underside.
+    CHECK_FALSE(shape_of(polygon({{0, 16}, {8, 8}, {16, 16}})).two_sided());
 }
 
 TEST_CASE("a polygon with more slants on one side than a shape may have is the whole cell") {

@@ -508,13 +508,42 @@
      (test-equal (string-append name ": bodies land on a roof's peak and slopes")
        '((-8 #t) (-6 #t) (-5 #t)) landed)))
  (list step-scene reference-step-scene) '("native" "reference"))
-(test-equal "make-tilemap: a polygon with slants on its top and its underside, one that is not convex"
-  '("In procedure make-tilemap: shapes: the shape of gid 1: the collision polygon has slanted edges both on its top and on its underside\n"
-    "In procedure make-tilemap: shapes: the shape of gid 1: the collision polygon is not convex\n")
-  (let ((refused (lambda (points)
-                   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() (list (cons 1 (cons 'polygon points)))))))))
-    (map refused '(((8 . 0) (16 . 8) (8 . 16) (0 . 8))
-                   ((0 . 16) (16 . 16) (16 . 0) (8 . 8) (0 . 8))))))
+;; A convex polygon slanted on its top and its underside (§12): a diamond,
+;; in cell (1, 0) its top y = 24 − x up to (24, 0), then x − 24, its
+;; underside y = x − 8 down to (24, 16), then 40 − x, its sides meeting at
+;; (16, 8) and (32, 8).
+(define diamond '(2 . (polygon (8 . 0) (16 . 8) (8 . 16) (0 . 8))))
+(define diamond-map (make-tilemap 3 2 16 16 #(0 2 0 0 0 0) '() '() (list diamond)))
+(test-equal "tilemap-cell-shape: a polygon slanted on both sides is a floor shape with its underside in a 12th slot"
+  '#(0 0 16 16 floor 0 8 8 0 #f ((8 0 16 8)) ((0 8 8 16) (8 16 16 8)))
+  (tilemap-cell-shape diamond-map 1 0))
+(test-equal "tilemap-solid-at? by a diamond: its top vertex, above its top, below its underside, its inside"
+  '(#t #f #f #t)
+  (list (tilemap-solid-at? diamond-map 24 0) (tilemap-solid-at? diamond-map 19 4)
+        (tilemap-solid-at? diamond-map 19 12) (tilemap-solid-at? diamond-map 19 8)))
+;; Natively and in the reference: 8 × 8 bodies falling onto it land where
+;; its top is highest under them (over [20, 28) the vertex, over [14, 22)
+;; 2, over [27, 35) 3); rising into it, they stop where its underside is
+;; lowest (16, then 14, then 13); an 8 × 16 body walking right at y 0 stops
+;; against its side vertex (16, 8).
+(define (run-diamond step entity frames)
+  (let loop ((s (make-scene #:entities (list entity) #:tilemap diamond-map)) (i 0))
+    (if (= i frames)
+        (let ((e (car (scene-entities s)))) (list (entity-ref e #:x) (entity-ref e #:y)))
+        (loop (step s 16) (+ i 1)))))
+(for-each
+ (lambda (step name)
+   (test-equal (string-append name ": bodies land on a diamond's top, bump its underside, stop at its side")
+     '((20 -8) (14 -6) (27 -5) (20 16) (14 14) (27 13) (8 0))
+     (append
+      (map (lambda (x) (run-diamond step (list #:x x #:y -40 #:width 8 #:height 8 #:gravity? #t) 30)) '(20 14 27))
+      (map (lambda (x) (run-diamond step (list #:x x #:y 40 #:width 8 #:height 8 #:vy -2) 30)) '(20 14 27))
+      (list (run-diamond step (list #:x 0 #:y 0 #:width 8 #:height 16 #:vx 2) 10)))))
+ (list step-scene reference-step-scene) '("native" "reference"))
+(test-equal "make-tilemap: a polygon that is not convex"
+  "In procedure make-tilemap: shapes: the shape of gid 1: the collision polygon is not convex\n"
+  (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '()
+                                       '((1 . (polygon (0 . 16) (16 . 16) (16 . 0) (8 . 8) (0 . 8))))))))
 (test-equal "make-tilemap: a polygon of 2 points"
   "In procedure make-tilemap: shapes: the shape of gid 1: a collision polygon of 2 points (3 at least make a shape)\n"
   (error-text (lambda () (make-tilemap 1 1 16 16 #(1) '() '() '((1 . (polygon (0 . 0) (1 . 1))))))))
