@@ -54,7 +54,9 @@
 ;;;   (horizontal, vertical: a ceiling ramp, diagonal), some drawn past their
 ;;;   tile (gids 13–16) and some convex polygons with several slants (gids
 ;;;   17–21: a house, a peak, a three-slant roof, ones reaching past the
-;;;   tile; each its own stream); tile edits on such maps may put ramps too.
+;;;   tile), a third of those slanted on both sides (gids 22–25: a diamond,
+;;;   a hexagon on its side, a diamond reaching past every side, a lopsided
+;;;   one; each its own stream); tile edits on such maps may put ramps too.
 ;;; - Push-apart against the map (semantics §4), in about 1 map in 3 (its own
 ;;;   stream, map-pushers): boxes spawned inside solid and shaped cells, a
 ;;;   squeezed stack landing on a floor, two boxes pushed into a wall.
@@ -222,7 +224,7 @@
     (list cols rows (car ts) (cdr ts) (make-cells r cols rows))))
 
 ;;; ---------------------------------------------------------------- ramps (§12)
-;;; The shapes of gids 3–21 in a TW × TH tile, as make-tilemap takes them.
+;;; The shapes of gids 3–25 in a TW × TH tile, as make-tilemap takes them.
 (define (shape-gids tw th)
   (let ((hw (quotient tw 2)) (hh (quotient th 2)) (qw (quotient tw 4)) (qh (quotient th 4)))
     `((3 . (polygon (0 . ,th) (,tw . ,th) (,tw . 0)))                  ; a whole-tile ramp
@@ -245,7 +247,12 @@
       (18 . (polygon (0 . ,th) (,hw . ,hh) (,tw . ,th)))                       ; a peak
       (19 . (polygon (0 . ,th) (,qw . ,hh) (,hw . ,qh) (,tw . ,th)))           ; three slants
       (20 . (polygon (0 . ,th) (0 . ,hh) (,hw . ,(- hh)) (,tw . ,hh) (,tw . ,th))) ; peaking above the tile
-      (21 . (polygon (,(- hw) . ,th) (,hw . 0) (,(+ tw hw) . ,th))))))        ; slopes past left and right
+      (21 . (polygon (,(- hw) . ,th) (,hw . 0) (,(+ tw hw) . ,th)))         ; slopes past left and right
+      ;; Convex polygons slanted on both their top and their underside (§12).
+      (22 . (polygon (,hw . 0) (,tw . ,hh) (,hw . ,th) (0 . ,hh)))            ; a diamond
+      (23 . (polygon (,qw . 0) (,(- tw qw) . 0) (,tw . ,hh) (,(- tw qw) . ,th) (,qw . ,th) (0 . ,hh))) ; a hexagon on its side
+      (24 . (polygon (,hw . ,(- hh)) (,(+ tw hw) . ,hh) (,hw . ,(+ th hh)) (,(- hw) . ,hh))) ; past every side: an octagon
+      (25 . (polygon (0 . ,hh) (,hw . 0) (,tw . ,qh) (,tw . ,(- th qh)) (,qw . ,th)))))) ; lopsided
 
 (define ramp-one-way-gids '(11))
 
@@ -265,10 +272,13 @@
      (flip-bits r)))
 
 ;;; A shape cell's gid, or in about one in six (a draw from R3, a stream of
-;;; its own) a convex polygon cut by several slants (gids 17–21), same flips.
-(define (polygonal r3 gid)
+;;; its own) a convex polygon cut by several slants (gids 17–21), a third
+;;; of those (a draw from R4, its own too, so R3's cells stay as they were)
+;;; slanted on both sides (gids 22–25), same flips.
+(define (polygonal r3 r4 gid)
   (if (chance r3 1 6)
-      (logior (logand gid #xE0000000) (pick r3 '(17 18 19 20 21)))
+      (let ((one-sided (pick r3 '(17 18 19 20 21))))
+        (logior (logand gid #xE0000000) (if (chance r4 1 3) (pick r4 '(22 23 24 25)) one-sided)))
       gid))
 
 ;;; In about 2 maps in 5, ramps: on the empty cells just above solid ones (on
@@ -276,7 +286,7 @@
 ;;; and a few anywhere. A stream of its own, salted by the seed: the other maps
 ;;; and every draw of the scene stay as they were.
 (define (add-ramps! seed cols rows cells)
-  (let ((r (make-rng seed 7919)) (r2 (make-rng seed 7927)) (r3 (make-rng seed 7933)))
+  (let ((r (make-rng seed 7919)) (r2 (make-rng seed 7927)) (r3 (make-rng seed 7933)) (r4 (make-rng seed 7937)))
     (when (chance r 2 5)
       (let ((solid? (lambda (c row) (and (< -1 c cols) (< -1 row rows)
                                          (eqv? 1 (vector-ref cells (+ c (* cols row)))))))
@@ -286,11 +296,11 @@
             (let ((i (+ c (* cols row))))
               (when (eqv? 0 (vector-ref cells i))
                 (cond ((and (solid? c (+ row 1)) (chance r density 10))
-                       (vector-set! cells i (polygonal r3 (reaching r2 (ramp-gid r)))))
+                       (vector-set! cells i (polygonal r3 r4 (reaching r2 (ramp-gid r)))))
                       ((and (solid? c (- row 1)) (chance r 1 6))
-                       (vector-set! cells i (logior #x40000000 (polygonal r3 (reaching r2 (ramp-gid r))))))
+                       (vector-set! cells i (logior #x40000000 (polygonal r3 r4 (reaching r2 (ramp-gid r))))))
                       ((chance r 1 40)
-                       (vector-set! cells i (polygonal r3 (reaching r2 (ramp-gid r))))))))))))))
+                       (vector-set! cells i (polygonal r3 r4 (reaching r2 (ramp-gid r))))))))))))))
 
 (define (ramped? spec)
   (and spec (let ((v (list-ref spec 4)))
