@@ -267,6 +267,49 @@ TEST_CASE("convex polygons slanted on their top and their underside: a floor sha
     CHECK_FALSE(shape_of(polygon({{0, 16}, {8, 8}, {16, 16}})).two_sided());
 }
 
+const char* kDiamondsTmx = R"(<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.10" orientation="orthogonal" width="4" height="1" tilewidth="32" tileheight="32">
+ <tileset firstgid="1" name="gems" tilewidth="32" tileheight="32" tilecount="3" columns="3">
+  <tile id="0"><objectgroup><object id="1" x="16" y="0"><polygon points="0,0 16,16 0,32 -16,16"/></object></objectgroup></tile>
+  <tile id="1"><objectgroup><object id="1" x="8" y="4"><polygon points="0,0 16,0 24,12 16,24 0,24 -8,12"/></object></objectgroup></tile>
+  <tile id="2"><objectgroup><object id="1" x="16" y="-8"><polygon points="0,0 24,24 0,48 -24,24"/></object></objectgroup></tile>
+ </tileset>
+ <layer id="1" name="ground" width="4" height="1">
+  <data encoding="csv">1,2,3,2147483651</data>
+ </layer>
+</map>)";
+
+TEST_CASE("a loaded map of gems: a diamond, a hexagon on its side and one reaching past the tile collide as drawn") {
+    const ds::Tilemap m = ds::parse_tilemap(kDiamondsTmx, "gems.tmx");
+    const ds::TileGrid g = m.solid_grid();
+    CHECK(m.warnings.empty());
+    CellShape diamond = ramp(0, 0, 32, 32, Cut::Floor, 0, 16, 16, 0);
+    diamond.n_more = 1, diamond.more[0] = {16, 0, 32, 16};
+    diamond.n_under = 2, diamond.under[0] = {0, 16, 16, 32}, diamond.under[1] = {16, 32, 32, 16};
+    CellShape hexagon = ramp(0, 4, 32, 28, Cut::Floor, 0, 16, 8, 4);
+    hexagon.n_more = 1, hexagon.more[0] = {24, 4, 32, 16};
+    hexagon.n_under = 2, hexagon.under[0] = {0, 16, 8, 28}, hexagon.under[1] = {24, 28, 32, 16};
+    // Reaching 8 px past every side: the octagon inside, its slants the
+    // drawn lines; flipped horizontally in the last cell, the same shape,
+    // as it is symmetric.
+    CellShape past = ramp(0, 0, 32, 32, Cut::Floor, -8, 16, 16, -8);
+    past.n_more = 1, past.more[0] = {16, -8, 40, 16};
+    past.n_under = 2, past.under[0] = {-8, 16, 16, 40}, past.under[1] = {16, 40, 40, 16};
+    REQUIRE(g.shape(0, 0) != nullptr);
+    CHECK(*g.shape(0, 0) == diamond);
+    REQUIRE(g.shape(1, 0) != nullptr);
+    CHECK(*g.shape(1, 0) == hexagon);
+    REQUIRE(g.shape(2, 0) != nullptr);
+    CHECK(*g.shape(2, 0) == past);
+    REQUIRE(g.shape(3, 0) != nullptr);
+    CHECK(*g.shape(3, 0) == past);
+    CHECK(g.solid_at(16, 1));        // the diamond's top vertex
+    CHECK_FALSE(g.solid_at(4, 4));   // above its left slant
+    CHECK_FALSE(g.solid_at(4, 28));  // below it
+    CHECK(g.solid_at(80, 0));        // the clipped one's flat top, (16, 0) of its cell
+    CHECK_FALSE(g.solid_at(65, 2));  // above its top-left slant, y = 8 − 1 there
+}
+
 TEST_CASE("a polygon with more slants on one side than a shape may have is the whole cell") {
     // A bowl-shaped hill in a 32 × 64 tile: ten slants on its top.
     const ds::TileSolidPart round = ds::tile_solid_part(
