@@ -1,4 +1,4 @@
-;;; SPDX-License-Identifier: MIT
+;; SPDX-License-Identifier: MIT
 ;;; Real maps' convex collision polygons slanted on both their top and their
 ;;; underside (issue 51, item 10; semantics §12) collide as drawn: loading the
 ;;; maps of ../shared/corpus that use the tilesets holding them gives no
