@@ -54,8 +54,8 @@ void RestingGroups::file_asleep(std::span<const size_t> members) {
 }
 
 bool RestingGroups::reached(size_t i) {
-    // The filed boxes that can reach extent e start no further left than
-    // the widest box and the reach before it, and no further right than
+    // The filed rooms that can reach extent e start no further left than
+    // the widest room and the reach before it, and no further right than
     // the reach after it.
     const Extent& e = extent_[i];
     auto it = std::lower_bound(filed_.begin(), filed_.end(), e.x0 - Extent::kReachX - widest_,

@@ -244,7 +244,7 @@ private:
     // that, not its box, is what an awake collider must not reach.
     std::vector<Extent> room_;
     std::vector<Filed> filed_;     // asleep members' rooms, by x0
-    double widest_ = 0;            // of filed_
+    double widest_ = 0;            // the widest room in filed_
     // form()'s scratch: by member (position in `members`), its extent, its
     // union–find parent, and whether it may rest; members by x0.
     std::vector<Extent> ext_;
